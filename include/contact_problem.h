@@ -1,0 +1,256 @@
+/**
+ * ContactProblem<dim>: the dynamic viscoelastic body with bilateral
+ * frictional contact and a nonmonotone (slip rate weakening) friction law
+ * of Barboteu, Bartosz, Han, Janiczko (SIAM J. Numer. Anal. 53, 2015),
+ * discretised as in their section 5: Lagrange finite elements in space and
+ * backward Euler in the velocity, (5.2)-(5.5).
+ *
+ * The class is split over several files by phase (the ASPECT habit):
+ *   contact_problem.cc  constructor, run()
+ *   setup.cc            make_grid, setup_system, constraints, Gamma_3 nodes
+ *   assembly.cc         matrices, loads, initial values, energies
+ *   contact_solver.cc   factorisation, Delassus operator, convexification
+ *   output.cc           VTU/PVD, time_series.csv, console
+ * Each file instantiates its own members for dim = 2 and 3.
+ */
+#ifndef contact_contact_problem_h
+#define contact_contact_problem_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <friction.h>
+#include <parameters.h>
+
+#include <array>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace Contact
+{
+  using namespace dealii;
+
+  using MatrixType = TrilinosWrappers::SparseMatrix;
+  using VectorType = TrilinosWrappers::MPI::Vector;
+
+  /**
+   * A node p of Gamma_3 that is not clamped: its dofs, its weight
+   * m_p = int_Gamma3 phi_p ds and its tangent (2D). The nodal friction force
+   * eta_p is the node's share of the friction traction, eta_p / m_p.
+   */
+  template <int dim>
+  struct ContactNode
+  {
+    std::array<types::global_dof_index, dim> dofs;
+    types::global_dof_index scalar_dof = numbers::invalid_dof_index;
+    Point<dim>              location;
+    Tensor<1, dim>          normal;
+    Tensor<1, dim>          tangent;
+    double                  weight = 0;
+  };
+
+  /** What one time step did, for the console and time_series.csv. */
+  struct StepStatistics
+  {
+    unsigned int convexification_iterations = 0;
+    unsigned int active_set_iterations      = 0;
+    unsigned int relaxations                = 0;
+    unsigned int cycles_cured               = 0;
+    unsigned int n_stick                    = 0;
+    unsigned int n_slip                     = 0;
+    double       max_slip_rate              = 0;
+    double       friction_force             = 0;
+    double       convexification_change     = 0;
+  };
+
+  /**
+   * The terms of the discrete energy identity of backward Euler, (5.7)
+   * summed over the steps: kinetic + elastic energy now, plus everything
+   * dissipated so far (viscous, frictional and the numerical dissipation
+   * rho/2 |w_n - w_{n-1}|^2 + k^2/2 <B w_n, w_n> of the scheme) equals the
+   * initial energy plus the work of the loads.
+   */
+  struct EnergyBalance
+  {
+    double kinetic               = 0;
+    double elastic               = 0;
+    double initial               = 0;
+    double external_work         = 0;
+    double viscous_dissipation   = 0;
+    double friction_dissipation  = 0;
+    double numerical_dissipation = 0;
+
+    double
+    residual() const
+    {
+      return kinetic + elastic + viscous_dissipation + friction_dissipation +
+             numerical_dissipation - initial - external_work;
+    }
+    double
+    scale() const
+    {
+      return std::max({kinetic + elastic,
+                       initial + std::abs(external_work),
+                       viscous_dissipation + std::abs(friction_dissipation) +
+                         numerical_dissipation});
+    }
+  };
+
+
+  template <int dim>
+  class ContactProblem
+  {
+  public:
+    explicit ContactProblem(const Parameters &parameters);
+
+    void
+    run();
+
+  private:
+    // setup.cc
+    void
+    make_grid();
+    void
+    check_boundary_ids() const;
+    void
+    setup_system();
+    void
+    make_constraints();
+    void
+    setup_contact_nodes();
+
+    // assembly.cc
+    void
+    assemble_matrices();
+    void
+    assemble_load(const double time, VectorType &load_vector) const;
+    void
+    set_initial_values();
+    double
+    quadratic_form(const MatrixType &matrix, const VectorType &x) const;
+    void
+    update_energy_balance();
+
+    // contact_solver.cc
+    void
+    factorize_system_matrix();
+    void
+    build_delassus_operator();
+    StepStatistics
+    do_time_step();
+    StepStatistics
+    solve_friction_problem(const Vector<double> &free_slip_velocity);
+    double
+    tangential_velocity(const ContactNode<dim> &node,
+                        const VectorType       &w) const;
+
+    // output.cc
+    void
+    prepare_output_directory();
+    void
+    write_vtu();
+    void
+    write_time_series_row(const StepStatistics &statistics);
+    void
+    print_progress(const StepStatistics &statistics) const;
+    void
+    report_contact_state();
+    void
+    print_summary() const;
+
+    // Parameters and the objects fixed by them.
+    const Parameters   parameters;
+    const FrictionLaw  friction_law;
+    const unsigned int n_time_steps;
+    const double       time_step;
+
+    MPI_Comm           mpi_communicator;
+    ConditionalOStream pcout;
+    mutable TimerOutput computing_timer;
+
+    // The load data, as muparser expressions of (x, y[, z], t).
+    std::unique_ptr<FunctionParser<dim>> body_force;
+    std::map<types::boundary_id, std::unique_ptr<FunctionParser<dim>>>
+      tractions;
+
+    // Mesh and finite element space. The scalar space of the same degree
+    // carries the Gamma_3 quantities (slip rate, status) for output.
+    parallel::distributed::Triangulation<dim> triangulation;
+    const FESystem<dim>                       fe;
+    const FE_Q<dim>                           scalar_fe;
+    const MappingQ<dim>                       mapping;
+    const QGauss<dim>                         quadrature;
+    const QGauss<dim - 1>                     face_quadrature;
+    DoFHandler<dim>                           dof_handler;
+    DoFHandler<dim>                           scalar_dof_handler;
+    IndexSet                                  locally_owned_dofs;
+    IndexSet                                  locally_relevant_dofs;
+
+    // Clamped Gamma_1 (u = 0, hence w = 0) and the bilateral Gamma_3
+    // (w.n = 0) as homogeneous constraints: V_h of the paper.
+    AffineConstraints<double> constraints;
+
+    // The matrices of (5.2): mass (with rho), viscosity A_h, elasticity
+    // B_h, and K = (1/k) M + A_h + k B_h, all condensed with the
+    // constraints. K is factorised once per run.
+    MatrixType                                      mass_matrix;
+    MatrixType                                      viscosity_matrix;
+    MatrixType                                      elasticity_matrix;
+    MatrixType                                      system_matrix;
+    SolverControl                                   direct_solver_control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
+
+    // The time step state: u_n, w_n, the loads F_n and the previous ones.
+    double       time;
+    unsigned int step_number;
+    VectorType   displacement;
+    VectorType   velocity;
+    VectorType   old_displacement;
+    VectorType   old_velocity;
+    VectorType   load;
+
+    // Gamma_3: its nodes, the columns Z = K^{-1} C^T and the Delassus
+    // operator D = C Z, and the nodal state of the last step.
+    std::vector<ContactNode<dim>> contact_nodes;
+    std::vector<VectorType>       delassus_columns;
+    FullMatrix<double>            delassus_operator;
+    Vector<double>                active_set_parameter;
+    Vector<double>                friction_force;
+    Vector<double>                slip_velocity;
+    std::vector<NodeState>        node_state;
+
+    EnergyBalance energy;
+
+    // Output state.
+    std::ofstream                               time_series;
+    std::vector<std::pair<double, std::string>> pvd_records;
+    std::vector<double>                         pending_report_times;
+    StepStatistics                              totals;
+    double                                      max_relative_energy_residual;
+    Timer                                       run_timer;
+  };
+} // namespace Contact
+
+#endif

@@ -1,0 +1,103 @@
+/**
+ * The friction law of the paper and the nodal Tresca problem that one
+ * convexification iteration solves on Gamma_3.
+ */
+#ifndef contact_friction_h
+#define contact_friction_h
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <parameters.h>
+
+#include <vector>
+
+namespace Contact
+{
+  using namespace dealii;
+
+  /**
+   * The friction coefficient mu(s) of the slip rate s = |w_tau| and the
+   * slip threshold mu(s) S of (3.6). For the slip rate weakening law this
+   * is the paper's (6.1), mu(s) = (a - b) exp(-alpha s) + b, whose one-sided
+   * Lipschitz constant (H(mu)(c)) is lambda = (a - b) alpha.
+   */
+  class FrictionLaw
+  {
+  public:
+    explicit FrictionLaw(const FrictionParameters &parameters);
+
+    /** Friction coefficient mu(s), s >= 0. */
+    double
+    coefficient(const double slip_rate) const;
+
+    /** Slip threshold S mu(s) [N/m^(dim-1)] of (3.6). */
+    double
+    bound(const double slip_rate) const;
+
+    /** No friction term at all (law 'none' or S = 0). */
+    bool
+    is_frictionless() const;
+
+    /** mu does not depend on s: one Tresca problem per step suffices. */
+    bool
+    is_rate_independent() const;
+
+    /** lambda in H(mu)(c): the rate at which mu may decrease. */
+    double
+    one_sided_lipschitz_constant() const;
+
+  private:
+    const FrictionParameters::Law law;
+    const double                  S;
+    const double                  a;
+    const double                  b;
+    const double                  alpha;
+  };
+
+
+  /**
+   * The Tresca problem with given nodal bounds g_p >= 0 on the n tangential
+   * unknowns of Gamma_3 in 2D, in terms of the Delassus operator
+   * D = C K^{-1} C^T (DESIGN.md section 4):
+   *
+   *   v = v_free - D eta,
+   *   |eta_p| <= g_p if v_p = 0,   eta_p = g_p sign(v_p) otherwise,
+   *
+   * i.e. the nodal form of the friction condition (5.3) with the
+   * coefficient frozen. It is solved by the primal-dual active set method
+   * (semismooth Newton on eta_p = P_[-g_p, g_p](eta_p + c_p v_p)): stick
+   * where |eta_p + c_p v_p| <= g_p (impose v_p = 0), slip elsewhere (impose
+   * eta_p = g_p sign(eta_p + c_p v_p)). Each iteration is one dense SPD
+   * solve on the stick set. The method stops when the sets and signs repeat
+   * from one iteration to the next; then (eta, v) solves the problem
+   * exactly. If a set seen before (not the last one) comes back, the method
+   * cycles; c is then halved, which is what cures the cycling at slip onset
+   * (DESIGN.md section 3).
+   */
+  struct TrescaResult
+  {
+    unsigned int iterations   = 0;
+    unsigned int cycles_cured = 0;
+    bool         converged    = false;
+  };
+
+  enum class NodeState : int
+  {
+    slip_negative = -1,
+    stick         = 0,
+    slip_positive = 1
+  };
+
+  TrescaResult
+  solve_tresca_2d(const FullMatrix<double> &D,
+                  const Vector<double>     &v_free,
+                  const Vector<double>     &g,
+                  const Vector<double>     &c,
+                  const unsigned int        max_iterations,
+                  Vector<double>           &eta,
+                  Vector<double>           &v,
+                  std::vector<NodeState>   &state);
+} // namespace Contact
+
+#endif

@@ -1,0 +1,172 @@
+/**
+ * Parameters of a run, one struct per subsection of the .prm file (the
+ * step-44 / Lethe habit). Every entry carries a Pattern with its allowed
+ * range and a documentation string with units; checks that involve more
+ * than one entry, or the mesh, live in Parameters::check() and in
+ * ContactProblem::check_boundary_ids().
+ */
+#ifndef contact_parameters_h
+#define contact_parameters_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace Contact
+{
+  using namespace dealii;
+
+  struct GeometryParameters
+  {
+    std::vector<double> lower_corner;
+    std::vector<double> upper_corner;
+    double              cell_size;
+    unsigned int        fe_degree;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm, const unsigned int dim);
+  };
+
+  struct BoundaryParameters
+  {
+    std::vector<types::boundary_id> clamped_ids;
+    std::vector<types::boundary_id> contact_ids;
+    /** Boundary id -> traction expression "f_x; f_y[; f_z]" of x,y,z,t. */
+    std::map<types::boundary_id, std::string> tractions;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct MaterialParameters
+  {
+    double density;
+    double youngs_modulus;
+    double poisson_ratio;
+    double viscosity_mu1;
+    double viscosity_mu2;
+    bool   plane_stress;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct LoadParameters
+  {
+    std::string body_force;
+    std::string initial_displacement;
+    std::string initial_velocity;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct FrictionParameters
+  {
+    enum class Law
+    {
+      none,
+      constant,
+      slip_rate_weakening
+    };
+    Law    law;
+    double bound_S;
+    double a;
+    double b;
+    double alpha;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct TimeParameters
+  {
+    double end_time;
+    double time_step;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct SolverParameters
+  {
+    double       convexification_tolerance;
+    unsigned int max_convexification_iterations;
+    unsigned int max_active_set_iterations;
+    double       active_set_parameter;
+    double       relaxation;
+    std::string  direct_solver;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct OutputParameters
+  {
+    std::string         directory;
+    unsigned int        vtu_interval;
+    bool                write_time_series;
+    std::vector<double> report_times;
+    unsigned int        progress_interval;
+    bool                print_timings;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct Parameters
+  {
+    unsigned int       dimension;
+    GeometryParameters geometry;
+    BoundaryParameters boundary;
+    MaterialParameters material;
+    LoadParameters     loads;
+    FrictionParameters friction;
+    TimeParameters     time;
+    SolverParameters   solver;
+    OutputParameters   output;
+
+    /** The .prm text of all entries as they were used, for the results. */
+    std::string used_parameters;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /**
+   * A dim-component muparser function of x, y[, z] (and t if
+   * time_dependent) from an expression 'f_x; f_y[; f_z]' of the .prm entry
+   * named `entry`. Syntax errors, unknown variables and a wrong number of
+   * components are reported with the entry and the expression.
+   */
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  parse_vector_function(const std::string &entry,
+                        const std::string &expression,
+                        const bool         time_dependent);
+} // namespace Contact
+
+#endif

@@ -1,0 +1,17 @@
+/**
+ * The command line of the program: `contact [--set Section/Entry=value]...
+ * scene.prm`. The dimension is read from the .prm first ('Dimension'),
+ * then the whole file is parsed and checked and ContactProblem<2> or <3>
+ * runs.
+ */
+#ifndef contact_run_h
+#define contact_run_h
+
+namespace Contact
+{
+  /** Runs the program; user errors are thrown as dealii::ExceptionBase. */
+  void
+  run_from_command_line(const int argc, const char *const *argv);
+} // namespace Contact
+
+#endif

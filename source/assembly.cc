@@ -1,0 +1,264 @@
+/* Matrices and loads of the scheme (5.2)-(5.5), initial values, energies. */
+
+#include <deal.II/base/exceptions.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <contact_problem.h>
+
+namespace Contact
+{
+  // @sect4{ContactProblem::assemble_matrices}
+
+  // The three bilinear forms of (5.2) on V_h: the mass (rho w, v), the
+  // viscosity (A eps(w), eps(v)) with A tau = mu_1 tr(tau) I + mu_2 tau and
+  // the elasticity (B eps(u), eps(v)) with
+  // B tau = lambda tr(tau) I + 2G tau, lambda = E kappa/((1+kappa)(1-2kappa)),
+  // 2G = E/(1+kappa) (the paper's formula, plane strain in 2D; plane
+  // stress replaces lambda by 2 lambda G/(lambda + 2G)). The constant
+  // matrix of a step follows from backward Euler, (5.2) with (5.5):
+  //   K w_n = F_n + (1/k) M w_{n-1} - B u_{n-1} - C^T eta_n,
+  //   K = (1/k) M + A + k B.
+  template <int dim>
+  void
+  ContactProblem<dim>::assemble_matrices()
+  {
+    TimerOutput::Scope t(computing_timer, "Assembly");
+
+    const auto  &material = parameters.material;
+    const double E        = material.youngs_modulus;
+    const double kappa    = material.poisson_ratio;
+    const double two_G    = E / (1. + kappa);
+    double lambda = E * kappa / ((1. + kappa) * (1. - 2. * kappa));
+    if (dim == 2 && material.plane_stress)
+      lambda = 2. * lambda * (two_G / 2.) / (lambda + two_G);
+    const double rho = material.density;
+    const double mu1 = material.viscosity_mu1;
+    const double mu2 = material.viscosity_mu2;
+
+    FEValues<dim>                    fe_values(mapping,
+                            fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_JxW_values);
+    const FEValuesExtractors::Vector displacements(0);
+    const unsigned int               n_dofs = fe.n_dofs_per_cell();
+    FullMatrix<double>               cell_mass(n_dofs, n_dofs);
+    FullMatrix<double>               cell_viscosity(n_dofs, n_dofs);
+    FullMatrix<double>               cell_elasticity(n_dofs, n_dofs);
+    std::vector<types::global_dof_index> dof_indices(n_dofs);
+    std::vector<Tensor<1, dim>>          phi(n_dofs);
+    std::vector<SymmetricTensor<2, dim>> eps(n_dofs);
+    std::vector<double>                  div(n_dofs);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell_mass       = 0;
+          cell_viscosity  = 0;
+          cell_elasticity = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  phi[i] = fe_values[displacements].value(i, q);
+                  eps[i] = fe_values[displacements].symmetric_gradient(i, q);
+                  div[i] = trace(eps[i]);
+                }
+              const double JxW = fe_values.JxW(q);
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                for (unsigned int j = 0; j < n_dofs; ++j)
+                  {
+                    const double div_div = div[i] * div[j];
+                    const double eps_eps = eps[i] * eps[j];
+                    cell_mass(i, j) += rho * phi[i] * phi[j] * JxW;
+                    cell_viscosity(i, j) +=
+                      (mu1 * div_div + mu2 * eps_eps) * JxW;
+                    cell_elasticity(i, j) +=
+                      (lambda * div_div + two_G * eps_eps) * JxW;
+                  }
+            }
+          cell->get_dof_indices(dof_indices);
+          constraints.distribute_local_to_global(cell_mass,
+                                                 dof_indices,
+                                                 mass_matrix);
+          constraints.distribute_local_to_global(cell_viscosity,
+                                                 dof_indices,
+                                                 viscosity_matrix);
+          constraints.distribute_local_to_global(cell_elasticity,
+                                                 dof_indices,
+                                                 elasticity_matrix);
+        }
+    for (MatrixType *matrix :
+         {&mass_matrix, &viscosity_matrix, &elasticity_matrix})
+      matrix->compress(VectorOperation::add);
+
+    system_matrix.copy_from(mass_matrix);
+    system_matrix *= 1. / time_step;
+    system_matrix.add(1., viscosity_matrix);
+    system_matrix.add(time_step, elasticity_matrix);
+  }
+
+
+  // @sect4{ContactProblem::assemble_load}
+
+  // F_n = f(t_n) of (5.2): the body force f_0 in Omega and the tractions
+  // f_2 on Gamma_2, condensed with the constraints like the matrices.
+  template <int dim>
+  void
+  ContactProblem<dim>::assemble_load(const double time,
+                                     VectorType  &load_vector) const
+  {
+    TimerOutput::Scope t(computing_timer, "Assembly");
+
+    body_force->set_time(time);
+    for (const auto &traction : tractions)
+      traction.second->set_time(time);
+
+    FEValues<dim>     fe_values(mapping,
+                            fe,
+                            quadrature,
+                            update_values | update_quadrature_points |
+                              update_JxW_values);
+    FEFaceValues<dim> fe_face_values(mapping,
+                                     fe,
+                                     face_quadrature,
+                                     update_values | update_quadrature_points |
+                                       update_JxW_values);
+    const FEValuesExtractors::Vector     displacements(0);
+    const unsigned int                   n_dofs = fe.n_dofs_per_cell();
+    Vector<double>                       cell_rhs(n_dofs);
+    Vector<double>                       force(dim);
+    std::vector<types::global_dof_index> dof_indices(n_dofs);
+
+    const auto add_force = [&](const FEValuesBase<dim> &values,
+                               const Function<dim>     &function) {
+      for (const unsigned int q : values.quadrature_point_indices())
+        {
+          function.vector_value(values.quadrature_point(q), force);
+          Tensor<1, dim> f;
+          for (unsigned int d = 0; d < dim; ++d)
+            f[d] = force[d];
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            cell_rhs(i) +=
+              values[displacements].value(i, q) * f * values.JxW(q);
+        }
+    };
+
+    load_vector = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell_rhs = 0;
+          fe_values.reinit(cell);
+          add_force(fe_values, *body_force);
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const auto traction =
+                  tractions.find(cell->face(f)->boundary_id());
+                if (traction == tractions.end())
+                  continue;
+                fe_face_values.reinit(cell, f);
+                add_force(fe_face_values, *traction->second);
+              }
+          cell->get_dof_indices(dof_indices);
+          constraints.distribute_local_to_global(cell_rhs,
+                                                 dof_indices,
+                                                 load_vector);
+        }
+    load_vector.compress(VectorOperation::add);
+  }
+
+
+  // @sect4{ContactProblem::set_initial_values}
+
+  // u_0 and w_0 = u_1 interpolated at the nodes, then made to satisfy the
+  // constraints of V_h (the clamp and w.n = 0 on Gamma_3).
+  template <int dim>
+  void
+  ContactProblem<dim>::set_initial_values()
+  {
+    const auto interpolate = [&](const std::string &entry,
+                                 const std::string &expression,
+                                 VectorType        &vector) {
+      const auto function = parse_vector_function<dim>(
+        "Loads and initial values/" + entry, expression, false);
+      VectorTools::interpolate(mapping, dof_handler, *function, vector);
+      constraints.distribute(vector);
+    };
+    interpolate("Initial displacement",
+                parameters.loads.initial_displacement,
+                displacement);
+    interpolate("Initial velocity", parameters.loads.initial_velocity, velocity);
+    old_displacement = displacement;
+    old_velocity     = velocity;
+
+    energy         = EnergyBalance();
+    energy.kinetic = 0.5 * quadratic_form(mass_matrix, velocity);
+    energy.elastic = 0.5 * quadratic_form(elasticity_matrix, displacement);
+    energy.initial = energy.kinetic + energy.elastic;
+  }
+
+
+  // @sect4{ContactProblem::quadratic_form}
+
+  // x^T M x for x in V_h, with M condensed: the rows of constrained dofs
+  // carry only a diagonal entry that has nothing to do with the form, so
+  // they are left out. (For the unconstrained rows, condensed M times x is
+  // P^T M x, and x_free . P^T M x = x^T M x because x = P x_free.)
+  template <int dim>
+  double
+  ContactProblem<dim>::quadratic_form(const MatrixType &matrix,
+                                      const VectorType &x) const
+  {
+    VectorType product(x);
+    matrix.vmult(product, x);
+    constraints.set_zero(product);
+    return product * x;
+  }
+
+
+  // @sect4{ContactProblem::update_energy_balance}
+
+  // The terms of the energy identity of backward Euler: (5.2) tested with
+  // w_n, with (5.5) and 2 a.(a - b) = |a|^2 - |b|^2 + |a - b|^2 as in (5.7)
+  // and (5.9).
+  template <int dim>
+  void
+  ContactProblem<dim>::update_energy_balance()
+  {
+    const double k = time_step;
+    VectorType   velocity_change(velocity);
+    velocity_change -= old_velocity;
+
+    energy.kinetic = 0.5 * quadratic_form(mass_matrix, velocity);
+    energy.elastic = 0.5 * quadratic_form(elasticity_matrix, displacement);
+    energy.viscous_dissipation += k * quadratic_form(viscosity_matrix, velocity);
+    energy.numerical_dissipation +=
+      0.5 * quadratic_form(mass_matrix, velocity_change) +
+      0.5 * k * k * quadratic_form(elasticity_matrix, velocity);
+    energy.external_work += k * (load * velocity);
+    for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+      energy.friction_dissipation +=
+        k * friction_force[p] * tangential_velocity(contact_nodes[p], velocity);
+  }
+
+
+#define INSTANTIATE(dim)                                                      \
+  template void ContactProblem<dim>::assemble_matrices();                     \
+  template void ContactProblem<dim>::assemble_load(const double,              \
+                                                   VectorType &) const;       \
+  template void   ContactProblem<dim>::set_initial_values();                  \
+  template double ContactProblem<dim>::quadratic_form(const MatrixType &,     \
+                                                      const VectorType &)     \
+    const;                                                                    \
+  template void ContactProblem<dim>::update_energy_balance();
+
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace Contact

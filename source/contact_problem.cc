@@ -1,0 +1,118 @@
+/* The constructor and the time loop of ContactProblem<dim>. */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <contact_problem.h>
+
+#include <cmath>
+
+namespace Contact
+{
+  namespace
+  {
+    // N = ceil(T/k) steps of the uniform size T/N, so that the last step
+    // ends at T (the paper's T = 1.1 is not a multiple of its k = 1/128).
+    unsigned int
+    number_of_steps(const TimeParameters &time)
+    {
+      return static_cast<unsigned int>(
+        std::ceil(time.end_time / time.time_step - 1e-9));
+    }
+  } // namespace
+
+
+  // @sect4{ContactProblem::ContactProblem}
+
+  template <int dim>
+  ContactProblem<dim>::ContactProblem(const Parameters &parameters)
+    : parameters(parameters)
+    , friction_law(parameters.friction)
+    , n_time_steps(number_of_steps(parameters.time))
+    , time_step(parameters.time.end_time / n_time_steps)
+    , mpi_communicator(MPI_COMM_WORLD)
+    , pcout(std::cout,
+            Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , computing_timer(mpi_communicator,
+                      pcout,
+                      parameters.output.print_timings ? TimerOutput::summary :
+                                                        TimerOutput::never,
+                      TimerOutput::wall_times)
+    , triangulation(mpi_communicator)
+    , fe(FE_Q<dim>(parameters.geometry.fe_degree), dim)
+    , scalar_fe(parameters.geometry.fe_degree)
+    , mapping(1)
+    , quadrature(parameters.geometry.fe_degree + 1)
+    , face_quadrature(parameters.geometry.fe_degree + 1)
+    , dof_handler(triangulation)
+    , scalar_dof_handler(triangulation)
+    , time(0)
+    , step_number(0)
+    , pending_report_times(parameters.output.report_times)
+    , max_relative_energy_residual(0)
+  {
+    AssertThrow(parameters.dimension == dim, ExcInternalError());
+    body_force =
+      parse_vector_function<dim>("Loads and initial values/Body force",
+                                 parameters.loads.body_force,
+                                 true);
+    for (const auto &[id, expression] : parameters.boundary.tractions)
+      tractions[id] = parse_vector_function<dim>(
+        "Boundary conditions/Tractions (boundary id " + std::to_string(id) +
+          ")",
+        expression,
+        true);
+  }
+
+
+  // @sect4{ContactProblem::run}
+
+  template <int dim>
+  void
+  ContactProblem<dim>::run()
+  {
+    run_timer.restart();
+    make_grid();
+    setup_system();
+    assemble_matrices();
+    set_initial_values();
+    factorize_system_matrix();
+    build_delassus_operator();
+    prepare_output_directory();
+
+    write_time_series_row(StepStatistics());
+    const unsigned int vtu_interval = parameters.output.vtu_interval;
+    if (vtu_interval > 0)
+      write_vtu();
+
+    for (step_number = 1; step_number <= n_time_steps; ++step_number)
+      {
+        time                            = step_number * time_step;
+        const StepStatistics statistics = do_time_step();
+        update_energy_balance();
+        max_relative_energy_residual =
+          std::max(max_relative_energy_residual,
+                   std::abs(energy.residual()) /
+                     std::max(energy.scale(),
+                              std::numeric_limits<double>::min()));
+
+        totals.convexification_iterations +=
+          statistics.convexification_iterations;
+        totals.active_set_iterations += statistics.active_set_iterations;
+        totals.relaxations += statistics.relaxations;
+
+        write_time_series_row(statistics);
+        if (vtu_interval > 0 &&
+            (step_number % vtu_interval == 0 || step_number == n_time_steps))
+          write_vtu();
+        print_progress(statistics);
+        report_contact_state();
+      }
+    step_number = n_time_steps;
+    print_summary();
+  }
+
+
+  template class ContactProblem<2>;
+  template class ContactProblem<3>;
+} // namespace Contact

@@ -1,0 +1,316 @@
+/* One time step: the factorised K, the Delassus operator on Gamma_3 and the
+   convexification loop around the nodal Tresca problem. */
+
+#include <deal.II/base/exceptions.h>
+
+#include <contact_problem.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace Contact
+{
+  // @sect4{ContactProblem::factorize_system_matrix}
+
+  // K = (1/k) M + A_h + k B_h does not change while k is constant, so it is
+  // factorised once per run and every later solve is a forward/back
+  // substitution.
+  template <int dim>
+  void
+  ContactProblem<dim>::factorize_system_matrix()
+  {
+    TimerOutput::Scope t(computing_timer, "Factorization");
+    direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
+      direct_solver_control,
+      TrilinosWrappers::SolverDirect::AdditionalData(
+        false, parameters.solver.direct_solver));
+    direct_solver->initialize(system_matrix);
+  }
+
+
+  // @sect4{ContactProblem::tangential_velocity}
+
+  template <int dim>
+  double
+  ContactProblem<dim>::tangential_velocity(const ContactNode<dim> &node,
+                                           const VectorType       &w) const
+  {
+    double v = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      v += node.tangent[d] * w[node.dofs[d]];
+    return v;
+  }
+
+
+  // @sect4{ContactProblem::build_delassus_operator}
+
+  // The friction forces act on the body through C^T eta, where column p of
+  // C^T is the unit tangent at node p (condensed with the constraints like
+  // every load). With Z = K^{-1} C^T the velocity of a step is
+  //   w_n = w_free - Z eta,   w_free = K^{-1} (F_n + (1/k) M w_{n-1} - B u_{n-1}),
+  // and on Gamma_3 v = C w_n = v_free - D eta with the Delassus operator
+  // D = C Z, symmetric positive definite. So the nonsmooth part of every
+  // step lives on the few unknowns of Gamma_3 (DESIGN.md section 4).
+  template <int dim>
+  void
+  ContactProblem<dim>::build_delassus_operator()
+  {
+    TimerOutput::Scope t(computing_timer, "Delassus operator");
+
+    const unsigned int n = contact_nodes.size();
+    delassus_columns.resize(n);
+    delassus_operator.reinit(n, n);
+    active_set_parameter.reinit(n);
+    friction_force.reinit(n);
+    slip_velocity.reinit(n);
+    node_state.assign(n, NodeState::stick);
+
+    std::vector<types::global_dof_index> node_dofs(dim);
+    Vector<double>                       node_tangent(dim);
+    VectorType column(locally_owned_dofs, mpi_communicator);
+    for (unsigned int q = 0; q < n; ++q)
+      {
+        const ContactNode<dim> &node = contact_nodes[q];
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            node_dofs[d]    = node.dofs[d];
+            node_tangent[d] = node.tangent[d];
+          }
+        column = 0;
+        constraints.distribute_local_to_global(node_tangent, node_dofs, column);
+        column.compress(VectorOperation::add);
+        delassus_columns[q].reinit(locally_owned_dofs, mpi_communicator);
+        direct_solver->solve(delassus_columns[q], column);
+        constraints.distribute(delassus_columns[q]);
+
+        double K_pp = 0;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            if (!constraints.is_constrained(node.dofs[i]) &&
+                !constraints.is_constrained(node.dofs[j]))
+              K_pp += node.tangent[i] *
+                      system_matrix.el(node.dofs[i], node.dofs[j]) *
+                      node.tangent[j];
+        active_set_parameter[q] = parameters.solver.active_set_parameter * K_pp;
+      }
+
+    for (unsigned int p = 0; p < n; ++p)
+      for (unsigned int q = 0; q < n; ++q)
+        delassus_operator(p, q) =
+          tangential_velocity(contact_nodes[p], delassus_columns[q]);
+
+    // D is symmetric up to the round-off of the solves; the active set
+    // method relies on it (Cholesky on the stick set), so it is made exactly
+    // symmetric after checking that nothing more than round-off is removed.
+    double asymmetry = 0, largest = 0;
+    for (unsigned int p = 0; p < n; ++p)
+      for (unsigned int q = 0; q < p; ++q)
+        {
+          const double mean =
+            0.5 * (delassus_operator(p, q) + delassus_operator(q, p));
+          asymmetry = std::max(asymmetry,
+                               std::abs(delassus_operator(p, q) - mean));
+          delassus_operator(p, q) = delassus_operator(q, p) = mean;
+        }
+    for (unsigned int p = 0; p < n; ++p)
+      largest = std::max(largest, delassus_operator(p, p));
+    AssertThrow(asymmetry <= 1e-8 * largest,
+                ExcMessage("The Delassus operator C K^{-1} C^T is not "
+                           "symmetric (relative asymmetry " +
+                           std::to_string(asymmetry / largest) +
+                           "): the factorisation of K is inaccurate."));
+
+    for (unsigned int p = 0; p < n; ++p)
+      slip_velocity[p] = tangential_velocity(contact_nodes[p], velocity);
+  }
+
+
+  // @sect4{ContactProblem::do_time_step}
+
+  // One step of (5.2)-(5.5): the free velocity from the factorised K, the
+  // friction forces from the problem on Gamma_3, then w_n = w_free - Z eta
+  // and u_n = u_{n-1} + k w_n.
+  template <int dim>
+  StepStatistics
+  ContactProblem<dim>::do_time_step()
+  {
+    old_velocity     = velocity;
+    old_displacement = displacement;
+    assemble_load(time, load);
+
+    TimerOutput::Scope t(computing_timer, "Time steps");
+    VectorType         rhs(load), product(load);
+    mass_matrix.vmult(product, old_velocity);
+    rhs.add(1. / time_step, product);
+    elasticity_matrix.vmult(product, old_displacement);
+    rhs.add(-1., product);
+    constraints.set_zero(rhs);
+
+    direct_solver->solve(velocity, rhs);
+    constraints.distribute(velocity);
+
+    StepStatistics statistics;
+    if (!contact_nodes.empty())
+      {
+        Vector<double> free_slip_velocity(contact_nodes.size());
+        for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+          free_slip_velocity[p] =
+            tangential_velocity(contact_nodes[p], velocity);
+        statistics = solve_friction_problem(free_slip_velocity);
+        for (unsigned int q = 0; q < contact_nodes.size(); ++q)
+          if (friction_force[q] != 0.)
+            velocity.add(-friction_force[q], delassus_columns[q]);
+      }
+
+    displacement = old_displacement;
+    displacement.add(time_step, velocity);
+    return statistics;
+  }
+
+
+  // @sect4{ContactProblem::solve_friction_problem}
+
+  // The convexification of the paper's section 6 (refs [3, 4] there):
+  // freeze the coefficient at the slip rates s of the previous iterate,
+  // g_p = m_p S mu(s_p), solve the convex Tresca problem with these bounds,
+  // and repeat with the new slip rates until they and the slip set stop
+  // changing. The first iterate is the previous step's slip rate: the
+  // discrete problem may have several solutions when (3.22) fails, and
+  // starting from the past selects the one that continues the motion.
+  //
+  // The plain fixed point can cycle at a stick/slip front; when the change
+  // of the slip rates does not decrease for two iterations in a row, the
+  // update s <- s + theta (|v| - s) is damped by halving theta. With a rate
+  // independent coefficient one Tresca problem is the whole step.
+  template <int dim>
+  StepStatistics
+  ContactProblem<dim>::solve_friction_problem(
+    const Vector<double> &free_slip_velocity)
+  {
+    const auto        &solver = parameters.solver;
+    const unsigned int n      = contact_nodes.size();
+    StepStatistics     statistics;
+
+    Vector<double> rate(n), bound(n);
+    for (unsigned int p = 0; p < n; ++p)
+      rate[p] = std::abs(slip_velocity[p]);
+    std::vector<bool> slip_set, previous_slip_set;
+    double            theta           = solver.relaxation;
+    double            previous_change = std::numeric_limits<double>::max();
+    unsigned int      n_not_decreasing = 0;
+    bool              converged        = false;
+
+    while (!converged &&
+           statistics.convexification_iterations <
+             solver.max_convexification_iterations)
+      {
+        ++statistics.convexification_iterations;
+        for (unsigned int p = 0; p < n; ++p)
+          bound[p] = friction_law.is_frictionless() ?
+                       0. :
+                       contact_nodes[p].weight * friction_law.bound(rate[p]);
+
+        const TrescaResult tresca =
+          solve_tresca_2d(delassus_operator,
+                          free_slip_velocity,
+                          bound,
+                          active_set_parameter,
+                          solver.max_active_set_iterations,
+                          friction_force,
+                          slip_velocity,
+                          node_state);
+        statistics.active_set_iterations += tresca.iterations;
+        statistics.cycles_cured += tresca.cycles_cured;
+        AssertThrow(
+          tresca.converged,
+          ExcMessage(
+            "The active set method for the Tresca problem did not converge "
+            "in step " +
+            std::to_string(step_number) + " (t = " + std::to_string(time) +
+            ") within " + std::to_string(solver.max_active_set_iterations) +
+            " iterations ('Solver/Max active set iterations'); a smaller "
+            "'Solver/Active set parameter' damps it."));
+
+        double change = 0, scale = std::numeric_limits<double>::min();
+        slip_set.resize(n);
+        for (unsigned int p = 0; p < n; ++p)
+          {
+            change = std::max(change,
+                              std::abs(std::abs(slip_velocity[p]) - rate[p]));
+            scale =
+              std::max({scale,
+                        std::abs(slip_velocity[p]),
+                        std::abs(free_slip_velocity[p])});
+            slip_set[p] = (node_state[p] != NodeState::stick);
+          }
+        statistics.convexification_change = change / scale;
+        converged = friction_law.is_rate_independent() ||
+                    (change <= solver.convexification_tolerance * scale &&
+                     slip_set == previous_slip_set);
+        previous_slip_set = slip_set;
+
+        n_not_decreasing = (change >= previous_change ? n_not_decreasing + 1 : 0);
+        previous_change  = change;
+        if (n_not_decreasing == 2)
+          {
+            theta /= 2;
+            ++statistics.relaxations;
+            n_not_decreasing = 0;
+          }
+        for (unsigned int p = 0; p < n; ++p)
+          rate[p] += theta * (std::abs(slip_velocity[p]) - rate[p]);
+      }
+
+    if (!converged)
+      {
+        const auto &friction = parameters.friction;
+        std::ostringstream message;
+        message
+          << "The convexification did not converge in step " << step_number
+          << " (t = " << time << ") within "
+          << solver.max_convexification_iterations
+          << " iterations ('Solver/Max convexification iterations'): the "
+          << "slip rates still change by " << statistics.convexification_change
+          << " relative to the velocity (tolerance "
+          << solver.convexification_tolerance << "), relaxation reached "
+          << theta << ". The fixed point contracts when S (a - b) alpha is "
+          << "small against the stiffness of K on Gamma_3; here S = "
+          << friction.bound_S << ", (a - b) alpha = "
+          << friction_law.one_sided_lipschitz_constant()
+          << ", k = " << time_step
+          << ". A smaller 'Time/Time step', 'Friction/Friction bound S' or "
+          << "'Solver/Relaxation' helps.";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+
+    Tensor<1, dim> resultant;
+    for (unsigned int p = 0; p < n; ++p)
+      {
+        if (node_state[p] == NodeState::stick)
+          ++statistics.n_stick;
+        else
+          ++statistics.n_slip;
+        statistics.max_slip_rate =
+          std::max(statistics.max_slip_rate, std::abs(slip_velocity[p]));
+        resultant += friction_force[p] * contact_nodes[p].tangent;
+      }
+    statistics.friction_force = resultant.norm();
+    return statistics;
+  }
+
+
+#define INSTANTIATE(dim)                                                   \
+  template void   ContactProblem<dim>::factorize_system_matrix();          \
+  template double ContactProblem<dim>::tangential_velocity(                \
+    const ContactNode<dim> &, const VectorType &) const;                   \
+  template void           ContactProblem<dim>::build_delassus_operator();  \
+  template StepStatistics ContactProblem<dim>::do_time_step();             \
+  template StepStatistics ContactProblem<dim>::solve_friction_problem(     \
+    const Vector<double> &);
+
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace Contact

@@ -1,0 +1,316 @@
+/* What a run gives the user: VTU/PVD, time_series.csv, the used parameters
+   and the console lines (DESIGN.md section 5). */
+
+#include <deal.II/base/exceptions.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <contact_problem.h>
+
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace Contact
+{
+  // @sect4{ContactProblem::prepare_output_directory}
+
+  template <int dim>
+  void
+  ContactProblem<dim>::prepare_output_directory()
+  {
+    const std::string &directory = parameters.output.directory;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    AssertThrow(!error,
+                ExcMessage("Cannot create the directory '" + directory +
+                           "' of the entry 'Output/Output directory': " +
+                           error.message()));
+    std::ofstream used(directory + "/parameters.prm");
+    used << parameters.used_parameters;
+    AssertThrow(used, ExcMessage("Cannot write into '" + directory + "'."));
+
+    if (parameters.output.write_time_series)
+      {
+        time_series.open(directory + "/time_series.csv");
+        time_series
+          << "step,time,convexification_iterations,active_set_iterations,"
+             "relaxations,n_stick,n_slip,max_slip_rate,friction_force,"
+             "kinetic_energy,elastic_energy,external_work,viscous_dissipation,"
+             "friction_dissipation,numerical_dissipation,energy_residual\n";
+      }
+  }
+
+
+  // @sect4{ContactProblem::write_time_series_row}
+
+  // One row per step, flushed at once: if a later step fails, the file
+  // describes exactly the steps that were computed.
+  template <int dim>
+  void
+  ContactProblem<dim>::write_time_series_row(const StepStatistics &statistics)
+  {
+    if (!time_series.is_open())
+      return;
+    time_series << step_number << ',' << std::setprecision(12) << time << ','
+                << statistics.convexification_iterations << ','
+                << statistics.active_set_iterations << ','
+                << statistics.relaxations << ',' << statistics.n_stick << ','
+                << statistics.n_slip << ',' << statistics.max_slip_rate << ','
+                << statistics.friction_force << ',' << energy.kinetic << ','
+                << energy.elastic << ',' << energy.external_work << ','
+                << energy.viscous_dissipation << ','
+                << energy.friction_dissipation << ','
+                << energy.numerical_dissipation << ',' << energy.residual()
+                << std::endl;
+  }
+
+
+  // @sect4{ContactProblem::write_vtu}
+
+  // Displacement and velocity as vectors; the stress
+  // sigma = A eps(w) + B eps(u) of (3.1) and its von Mises value per cell
+  // (in 2D plane strain sigma_zz = lambda tr eps(u) + mu_1 tr eps(w) enters
+  // von Mises); on Gamma_3 the status (0: off Gamma_3, 1: stick, 2: slip),
+  // the slip rate |w_tau|, the friction traction -eta_p/m_p t_p and the
+  // bound mu(|w_tau|) S, as nodal fields.
+  template <int dim>
+  void
+  ContactProblem<dim>::write_vtu()
+  {
+    TimerOutput::Scope t(computing_timer, "Output");
+
+    const unsigned int n_scalar_dofs = scalar_dof_handler.n_dofs();
+    Vector<double>     status(n_scalar_dofs), slip_rate(n_scalar_dofs),
+      friction_bound(n_scalar_dofs);
+    VectorType traction(locally_owned_dofs, mpi_communicator);
+    for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+      {
+        const ContactNode<dim> &node = contact_nodes[p];
+        const double            rate = std::abs(slip_velocity[p]);
+        status[node.scalar_dof] = (node_state[p] == NodeState::stick ? 1 : 2);
+        slip_rate[node.scalar_dof]      = rate;
+        friction_bound[node.scalar_dof] = friction_law.bound(rate);
+        if (node.weight > 0)
+          for (unsigned int d = 0; d < dim; ++d)
+            traction[node.dofs[d]] =
+              -friction_force[p] / node.weight * node.tangent[d];
+      }
+    traction.compress(VectorOperation::insert);
+
+    const auto  &material = parameters.material;
+    const double E = material.youngs_modulus, kappa = material.poisson_ratio;
+    const double two_G  = E / (1. + kappa);
+    double       lambda = E * kappa / ((1. + kappa) * (1. - 2. * kappa));
+    if (dim == 2 && material.plane_stress)
+      lambda = 2. * lambda * (two_G / 2.) / (lambda + two_G);
+    const bool plane_strain = (dim == 2 && !material.plane_stress);
+
+    const unsigned int n_cells = triangulation.n_active_cells();
+    std::vector<Vector<double>> stress(dim * (dim + 1) / 2,
+                                       Vector<double>(n_cells));
+    Vector<double>              von_mises(n_cells);
+    FEValues<dim>               fe_values(mapping,
+                            fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector     displacements(0);
+    std::vector<SymmetricTensor<2, dim>> eps_u(quadrature.size()),
+      eps_w(quadrature.size());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacements].get_function_symmetric_gradients(
+            displacement, eps_u);
+          fe_values[displacements].get_function_symmetric_gradients(velocity,
+                                                                    eps_w);
+          SymmetricTensor<2, dim> sigma;
+          double                  sigma_zz = 0, volume = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              const double JxW = fe_values.JxW(q);
+              sigma += (material.viscosity_mu1 * trace(eps_w[q]) *
+                          unit_symmetric_tensor<dim>() +
+                        material.viscosity_mu2 * eps_w[q] +
+                        lambda * trace(eps_u[q]) *
+                          unit_symmetric_tensor<dim>() +
+                        two_G * eps_u[q]) *
+                       JxW;
+              if (plane_strain)
+                sigma_zz += (lambda * trace(eps_u[q]) +
+                             material.viscosity_mu1 * trace(eps_w[q])) *
+                            JxW;
+              volume += JxW;
+            }
+          sigma /= volume;
+          sigma_zz /= volume;
+          const unsigned int c = cell->active_cell_index();
+          unsigned int       component = 0;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = i; j < dim; ++j)
+              stress[component++][c] = sigma[i][j];
+          const double mean = (trace(sigma) + sigma_zz) / 3.;
+          const SymmetricTensor<2, dim> deviator =
+            sigma - mean * unit_symmetric_tensor<dim>();
+          const double out_of_plane = (dim == 2 ? sigma_zz - mean : 0.);
+          von_mises[c] = std::sqrt(
+            1.5 * (deviator * deviator + out_of_plane * out_of_plane));
+        }
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_field(dim,
+                   DataComponentInterpretation::component_is_part_of_vector);
+    const std::vector<std::pair<const VectorType *, std::string>> fields = {
+      {&displacement, "displacement"},
+      {&velocity, "velocity"},
+      {&traction, "friction_traction"}};
+    for (const auto &[vector, name] : fields)
+      data_out.add_data_vector(*vector,
+                               std::vector<std::string>(dim, name),
+                               DataOut<dim>::type_dof_data,
+                               vector_field);
+    data_out.add_data_vector(scalar_dof_handler, status, "contact_status");
+    data_out.add_data_vector(scalar_dof_handler, slip_rate, "slip_rate");
+    data_out.add_data_vector(scalar_dof_handler,
+                             friction_bound,
+                             "friction_bound");
+    const char *axes = "xyz";
+    unsigned int component = 0;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        data_out.add_data_vector(stress[component++],
+                                 std::string("stress_") + axes[i] + axes[j],
+                                 DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(von_mises,
+                             "von_mises",
+                             DataOut<dim>::type_cell_data);
+    data_out.build_patches(mapping, fe.degree);
+
+    DataOutBase::VtkFlags flags;
+    flags.time  = time;
+    flags.cycle             = step_number;
+    flags.compression_level = DataOutBase::CompressionLevel::best_speed;
+    data_out.set_flags(flags);
+    const std::string record = data_out.write_vtu_with_pvtu_record(
+      parameters.output.directory + "/", "solution", step_number,
+      mpi_communicator, 5);
+
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        pvd_records.emplace_back(time, record);
+        std::ofstream pvd(parameters.output.directory + "/solution.pvd");
+        DataOutBase::write_pvd_record(pvd, pvd_records);
+      }
+  }
+
+
+  // @sect4{ContactProblem::print_progress}
+
+  template <int dim>
+  void
+  ContactProblem<dim>::print_progress(const StepStatistics &statistics) const
+  {
+    const unsigned int interval = parameters.output.progress_interval;
+    if (interval == 0 || (step_number % interval != 0 &&
+                          step_number != n_time_steps))
+      return;
+    const double elapsed = run_timer.wall_time();
+    const double left    = elapsed / step_number * (n_time_steps - step_number);
+    pcout << "Step " << std::setw(5) << step_number << '/' << n_time_steps
+          << "  t = " << std::setw(9) << std::setprecision(5) << time
+          << "  iterations " << statistics.convexification_iterations << '/'
+          << statistics.active_set_iterations << "  stick "
+          << statistics.n_stick << "  slip " << statistics.n_slip
+          << "  max slip rate " << std::setprecision(3)
+          << statistics.max_slip_rate << "  [" << std::setprecision(3)
+          << elapsed << " s, " << left << " s left]" << std::endl;
+  }
+
+
+  // @sect4{ContactProblem::report_contact_state}
+
+  // At the step nearest to each of the 'Output/Report times': how many
+  // nodes of Gamma_3 stick and slip, and where the slip zone is.
+  template <int dim>
+  void
+  ContactProblem<dim>::report_contact_state()
+  {
+    for (auto t = pending_report_times.begin();
+         t != pending_report_times.end();)
+      if (std::abs(time - *t) <= 0.5 * time_step * (1 + 1e-12) ||
+          (step_number == n_time_steps && *t > time))
+        {
+          unsigned int n_stick = 0, n_slip = 0;
+          double       slip_from = 0, slip_to = 0;
+          for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+            if (node_state[p] == NodeState::stick)
+              ++n_stick;
+            else
+              {
+                const double x = contact_nodes[p].location[0];
+                slip_from      = (n_slip == 0 ? x : std::min(slip_from, x));
+                slip_to        = (n_slip == 0 ? x : std::max(slip_to, x));
+                ++n_slip;
+              }
+          pcout << "Report t = " << std::setprecision(6) << *t << " (step "
+                << step_number << ", t_n = " << time << "): " << n_stick
+                << " stick, " << n_slip << " slip";
+          if (n_slip > 0)
+            pcout << ", slip zone x in [" << slip_from << ", " << slip_to
+                  << "]";
+          pcout << std::endl;
+          t = pending_report_times.erase(t);
+        }
+      else
+        ++t;
+  }
+
+
+  // @sect4{ContactProblem::print_summary}
+
+  template <int dim>
+  void
+  ContactProblem<dim>::print_summary() const
+  {
+    pcout << "Done: " << n_time_steps << " steps of k = "
+          << std::setprecision(8) << time_step << ", "
+          << totals.convexification_iterations
+          << " convexification iterations, " << totals.active_set_iterations
+          << " active set iterations, " << totals.relaxations
+          << " relaxations." << std::endl;
+    pcout << "Energy at t = " << time << ": kinetic " << std::setprecision(6)
+          << energy.kinetic << ", elastic " << energy.elastic
+          << ", external work " << energy.external_work << ", viscous "
+          << energy.viscous_dissipation << ", friction "
+          << energy.friction_dissipation << ", numerical "
+          << energy.numerical_dissipation << std::endl;
+    pcout << "Energy identity: largest residual relative to the energies "
+          << std::setprecision(2) << max_relative_energy_residual
+          << std::endl;
+    if (parameters.output.print_timings)
+      pcout << "Wall time: " << std::setprecision(4) << run_timer.wall_time()
+            << " s" << std::endl;
+  }
+
+
+#define INSTANTIATE(dim)                                                     \
+  template void ContactProblem<dim>::prepare_output_directory();             \
+  template void ContactProblem<dim>::write_time_series_row(                  \
+    const StepStatistics &);                                                 \
+  template void ContactProblem<dim>::write_vtu();                            \
+  template void ContactProblem<dim>::print_progress(const StepStatistics &)  \
+    const;                                                                   \
+  template void ContactProblem<dim>::report_contact_state();                 \
+  template void ContactProblem<dim>::print_summary() const;
+
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace Contact

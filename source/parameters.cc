@@ -1,0 +1,594 @@
+/* Declaration, parsing and checks of the .prm entries. */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <parameters.h>
+
+#include <sstream>
+
+namespace Contact
+{
+  namespace
+  {
+    // The one place where a user error about a single entry is raised: it
+    // names the entry (with its subsection), the value read and what is
+    // allowed.
+    void
+    check_entry(const bool         condition,
+                const std::string &entry,
+                const double       value,
+                const std::string &allowed)
+    {
+      std::ostringstream value_text;
+      value_text << value;
+      AssertThrow(condition,
+                  ExcMessage("Invalid value " + value_text.str() +
+                             " for the entry '" + entry + "': allowed is " +
+                             allowed + "."));
+    }
+
+    std::vector<types::boundary_id>
+    parse_boundary_ids(const std::string &text)
+    {
+      std::vector<types::boundary_id> ids;
+      for (const int id :
+           Utilities::string_to_int(Utilities::split_string_list(text)))
+        ids.push_back(static_cast<types::boundary_id>(id));
+      return ids;
+    }
+  } // namespace
+
+
+  // @sect3{Geometry}
+
+  void
+  GeometryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry("Lower corner",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Lower corner of the box Omega [m], dim numbers.");
+      prm.declare_entry("Upper corner",
+                        "1, 0.5",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Upper corner of the box Omega [m], dim numbers.");
+      prm.declare_entry(
+        "Cell size",
+        "0.0078125",
+        Patterns::Double(0),
+        "Edge length h of the cells [m]; every edge of the box is divided "
+        "into round(length/h) equal parts (the paper's h).");
+      prm.declare_entry("Finite element degree",
+                        "1",
+                        Patterns::Integer(1, 4),
+                        "Polynomial degree of the Lagrange elements Q_p.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  GeometryParameters::parse_parameters(ParameterHandler  &prm,
+                                       const unsigned int dim)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      lower_corner = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Lower corner")));
+      upper_corner = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Upper corner")));
+      cell_size = prm.get_double("Cell size");
+      fe_degree = prm.get_integer("Finite element degree");
+    }
+    prm.leave_subsection();
+
+    check_entry(lower_corner.size() == dim,
+                "Geometry/Lower corner",
+                lower_corner.size(),
+                "exactly Dimension numbers");
+    check_entry(upper_corner.size() == dim,
+                "Geometry/Upper corner",
+                upper_corner.size(),
+                "exactly Dimension numbers");
+    for (unsigned int d = 0; d < dim; ++d)
+      check_entry(upper_corner[d] > lower_corner[d],
+                  "Geometry/Upper corner",
+                  upper_corner[d],
+                  "a value above the matching Geometry/Lower corner in "
+                  "every coordinate");
+    check_entry(cell_size > 0, "Geometry/Cell size", cell_size, "h > 0");
+  }
+
+
+  // @sect3{Boundary conditions}
+
+  void
+  BoundaryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    {
+      prm.declare_entry(
+        "Clamped boundary ids",
+        "0",
+        Patterns::List(Patterns::Integer(0, 254)),
+        "Boundary ids of Gamma_1, where u = 0. The box numbers its faces "
+        "0: x = x0, 1: x = x1, 2: y = y0, 3: y = y1 (4, 5: z in 3D).");
+      prm.declare_entry(
+        "Contact boundary ids",
+        "2",
+        Patterns::List(Patterns::Integer(0, 254)),
+        "Boundary ids of Gamma_3: bilateral contact (u.n = 0) with friction.");
+      prm.declare_entry(
+        "Tractions",
+        "3: 0; -600*t",
+        Patterns::Anything(),
+        "Tractions f_2 on Gamma_2 [N/m^(dim-1)]: 'id: f_x; f_y[; f_z]', several "
+        "separated by '|'. Expressions of x, y, z, t (muparser). Boundary "
+        "parts not named anywhere are traction free.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  BoundaryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    {
+      clamped_ids = parse_boundary_ids(prm.get("Clamped boundary ids"));
+      contact_ids = parse_boundary_ids(prm.get("Contact boundary ids"));
+      tractions.clear();
+      for (const std::string &piece :
+           Utilities::split_string_list(prm.get("Tractions"), '|'))
+        {
+          const auto colon = piece.find(':');
+          AssertThrow(colon != std::string::npos && colon > 0,
+                      ExcMessage("Entry 'Boundary conditions/Tractions': "
+                                 "cannot read '" +
+                                 piece +
+                                 "'; expected 'boundary id: f_x; f_y[; f_z]'"
+                                 " with pieces separated by '|'."));
+          const std::string id_text =
+            Utilities::trim(piece.substr(0, colon));
+          AssertThrow(id_text.find_first_not_of("0123456789") ==
+                          std::string::npos &&
+                        Utilities::string_to_int(id_text) < 255,
+                      ExcMessage("Entry 'Boundary conditions/Tractions': '" +
+                                 id_text +
+                                 "' is not a boundary id (an integer from 0 "
+                                 "to 254)."));
+          tractions[Utilities::string_to_int(id_text)] =
+            Utilities::trim(piece.substr(colon + 1));
+        }
+    }
+    prm.leave_subsection();
+  }
+
+
+  // @sect3{Material}
+
+  void
+  MaterialParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry("Density",
+                        "1000",
+                        Patterns::Double(0),
+                        "Mass density rho [kg/m^3]; 0 gives a quasi-static "
+                        "problem (no inertia).");
+      prm.declare_entry("Young's modulus",
+                        "2000",
+                        Patterns::Double(),
+                        "Young's modulus E [N/m^2] of the elasticity tensor "
+                        "B, E > 0.");
+      prm.declare_entry("Poisson ratio",
+                        "0.3",
+                        Patterns::Double(),
+                        "Poisson ratio kappa of B, 0 <= kappa < 0.5.");
+      prm.declare_entry("Viscosity mu1",
+                        "50",
+                        Patterns::Double(0),
+                        "mu_1 [N s/m^2] in A tau = mu_1 tr(tau) I + mu_2 tau.");
+      prm.declare_entry("Viscosity mu2",
+                        "100",
+                        Patterns::Double(0),
+                        "mu_2 [N s/m^2] in A tau = mu_1 tr(tau) I + mu_2 tau.");
+      prm.declare_entry(
+        "Plane model",
+        "plane strain",
+        Patterns::Selection("plane strain|plane stress"),
+        "2D only: the paper's formula for B (plane strain) or plane stress, "
+        "lambda* = 2 lambda G / (lambda + 2 G).");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  MaterialParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    {
+      density        = prm.get_double("Density");
+      youngs_modulus = prm.get_double("Young's modulus");
+      poisson_ratio  = prm.get_double("Poisson ratio");
+      viscosity_mu1  = prm.get_double("Viscosity mu1");
+      viscosity_mu2  = prm.get_double("Viscosity mu2");
+      plane_stress   = (prm.get("Plane model") == "plane stress");
+    }
+    prm.leave_subsection();
+
+    check_entry(youngs_modulus > 0,
+                "Material/Young's modulus",
+                youngs_modulus,
+                "E > 0");
+    check_entry(poisson_ratio >= 0 && poisson_ratio < 0.5,
+                "Material/Poisson ratio",
+                poisson_ratio,
+                "0 <= kappa < 0.5");
+  }
+
+
+  // @sect3{Loads and initial values}
+
+  void
+  LoadParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loads and initial values");
+    {
+      prm.declare_entry("Body force",
+                        "0; -1e-5",
+                        Patterns::Anything(),
+                        "Body force f_0 [N/m^dim], 'f_x; f_y[; f_z]' of x, y, "
+                        "z, t.");
+      prm.declare_entry("Initial displacement",
+                        "0; 0",
+                        Patterns::Anything(),
+                        "u_0 [m], 'u_x; u_y[; u_z]' of x, y, z.");
+      prm.declare_entry("Initial velocity",
+                        "0; 0",
+                        Patterns::Anything(),
+                        "u_1 [m/s], 'w_x; w_y[; w_z]' of x, y, z.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  LoadParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loads and initial values");
+    {
+      body_force           = prm.get("Body force");
+      initial_displacement = prm.get("Initial displacement");
+      initial_velocity     = prm.get("Initial velocity");
+    }
+    prm.leave_subsection();
+  }
+
+
+  // @sect3{Friction}
+
+  void
+  FrictionParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Friction");
+    {
+      prm.declare_entry(
+        "Friction law",
+        "slip rate weakening",
+        Patterns::Selection("none|constant|slip rate weakening"),
+        "none: frictionless Gamma_3; constant: mu = a; slip rate weakening: "
+        "mu(s) = (a - b) exp(-alpha s) + b, the paper's (6.1).");
+      prm.declare_entry("Friction bound S",
+                        "3",
+                        Patterns::Double(0),
+                        "S >= 0 [N/m^(dim-1)]: the slip threshold is mu S "
+                        "(3.6).");
+      prm.declare_entry("a", "1", Patterns::Double(0), "mu(0) = a >= 0.");
+      prm.declare_entry("b", "0.1", Patterns::Double(0), "mu(inf) = b, b <= a.");
+      prm.declare_entry("alpha",
+                        "200",
+                        Patterns::Double(0),
+                        "Decay rate alpha >= 0 [s/m] of (6.1).");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  FrictionParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Friction");
+    {
+      const std::string name = prm.get("Friction law");
+      law     = (name == "none"     ? Law::none :
+                 name == "constant" ? Law::constant :
+                                      Law::slip_rate_weakening);
+      bound_S = prm.get_double("Friction bound S");
+      a       = prm.get_double("a");
+      b       = prm.get_double("b");
+      alpha   = prm.get_double("alpha");
+    }
+    prm.leave_subsection();
+
+    if (law == Law::slip_rate_weakening)
+      {
+        check_entry(b <= a, "Friction/b", b, "0 <= b <= a");
+        check_entry(alpha > 0 || a == b,
+                    "Friction/alpha",
+                    alpha,
+                    "alpha > 0, or alpha = 0 together with a = b");
+      }
+  }
+
+
+  // @sect3{Time}
+
+  void
+  TimeParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time");
+    {
+      prm.declare_entry("End time", "1.1", Patterns::Double(), "T > 0 [s].");
+      prm.declare_entry(
+        "Time step",
+        "0.0078125",
+        Patterns::Double(),
+        "Time step k [s], 0 < k <= T. The run takes N = ceil(T/k) steps of the "
+        "uniform size T/N, so that the last step ends at T.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  TimeParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time");
+    {
+      end_time  = prm.get_double("End time");
+      time_step = prm.get_double("Time step");
+    }
+    prm.leave_subsection();
+
+    check_entry(end_time > 0, "Time/End time", end_time, "T > 0");
+    check_entry(time_step > 0 && time_step <= end_time,
+                "Time/Time step",
+                time_step,
+                "0 < k <= Time/End time");
+  }
+
+
+  // @sect3{Solver}
+
+  void
+  SolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    {
+      prm.declare_entry(
+        "Convexification tolerance",
+        "1e-10",
+        Patterns::Double(0),
+        "The convexification stops when the slip rates on Gamma_3 change by "
+        "less than this, relative to the largest tangential velocity, and the "
+        "slip set does not change.");
+      prm.declare_entry("Max convexification iterations",
+                        "200",
+                        Patterns::Integer(1),
+                        "Iteration limit of the convexification per step.");
+      prm.declare_entry("Max active set iterations",
+                        "100",
+                        Patterns::Integer(1),
+                        "Iteration limit of the primal-dual active set "
+                        "method per Tresca problem.");
+      prm.declare_entry(
+        "Active set parameter",
+        "0.05",
+        Patterns::Double(0),
+        "c_p / K_pp in z_p = eta_p + c_p w_tau,p; 0.01 to 0.1 avoids the "
+        "cycling at slip onset seen with c_p = K_pp.");
+      prm.declare_entry(
+        "Relaxation",
+        "1",
+        Patterns::Double(0, 1),
+        "Initial relaxation theta in (0, 1] of the convexification fixed "
+        "point; it is halved automatically when the iteration stagnates "
+        "or cycles.");
+      prm.declare_entry("Direct solver",
+                        "Amesos_Klu",
+                        Patterns::Selection(
+                          "Amesos_Klu|Amesos_Mumps|Amesos_Lapack"),
+                        "Trilinos Amesos direct solver that factorises K "
+                        "= (rho/k) M + A + k B once per run.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  SolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    {
+      convexification_tolerance = prm.get_double("Convexification tolerance");
+      max_convexification_iterations =
+        prm.get_integer("Max convexification iterations");
+      max_active_set_iterations = prm.get_integer("Max active set iterations");
+      active_set_parameter      = prm.get_double("Active set parameter");
+      relaxation                = prm.get_double("Relaxation");
+      direct_solver             = prm.get("Direct solver");
+    }
+    prm.leave_subsection();
+
+    check_entry(convexification_tolerance > 0,
+                "Solver/Convexification tolerance",
+                convexification_tolerance,
+                "a tolerance > 0");
+    check_entry(active_set_parameter > 0,
+                "Solver/Active set parameter",
+                active_set_parameter,
+                "a value > 0");
+    check_entry(relaxation > 0,
+                "Solver/Relaxation",
+                relaxation,
+                "0 < theta <= 1");
+  }
+
+
+  // @sect3{Output}
+
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Output directory",
+                        "results-barboteu2015",
+                        Patterns::Anything(),
+                        "Directory for VTU/PVD, time_series.csv and "
+                        "parameters.prm, relative to where the program runs.");
+      prm.declare_entry("VTU interval",
+                        "8",
+                        Patterns::Integer(0),
+                        "Write a VTU file every this many steps (and at the "
+                        "initial and final time); 0 writes none.");
+      prm.declare_entry("Time series",
+                        "true",
+                        Patterns::Bool(),
+                        "Write time_series.csv, one row per time step.");
+      prm.declare_entry("Report times",
+                        "0.3, 1.1",
+                        Patterns::List(Patterns::Double(0)),
+                        "Times [s] at which the stick/slip state of Gamma_3 "
+                        "is printed (at the nearest step).");
+      prm.declare_entry("Progress interval",
+                        "1",
+                        Patterns::Integer(0),
+                        "Print a progress line every this many steps; 0: "
+                        "none.");
+      prm.declare_entry("Print timings",
+                        "true",
+                        Patterns::Bool(),
+                        "Print the wall time summary at the end (switch off "
+                        "for tests).");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    {
+      directory         = Utilities::trim(prm.get("Output directory"));
+      vtu_interval      = prm.get_integer("VTU interval");
+      write_time_series = prm.get_bool("Time series");
+      report_times      = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Report times")));
+      progress_interval = prm.get_integer("Progress interval");
+      print_timings     = prm.get_bool("Print timings");
+    }
+    prm.leave_subsection();
+
+    AssertThrow(!directory.empty(),
+                ExcMessage("The entry 'Output/Output directory' is empty: "
+                           "allowed is a directory name."));
+  }
+
+
+  // @sect3{All parameters}
+
+  void
+  Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the problem, 2 or 3.");
+    GeometryParameters::declare_parameters(prm);
+    BoundaryParameters::declare_parameters(prm);
+    MaterialParameters::declare_parameters(prm);
+    LoadParameters::declare_parameters(prm);
+    FrictionParameters::declare_parameters(prm);
+    TimeParameters::declare_parameters(prm);
+    SolverParameters::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+  }
+
+  void
+  Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    dimension = prm.get_integer("Dimension");
+    geometry.parse_parameters(prm, dimension);
+    boundary.parse_parameters(prm);
+    material.parse_parameters(prm);
+    loads.parse_parameters(prm);
+    friction.parse_parameters(prm);
+    time.parse_parameters(prm);
+    solver.parse_parameters(prm);
+    output.parse_parameters(prm);
+
+    std::ostringstream text;
+    prm.print_parameters(text,
+                         ParameterHandler::ShortPRM |
+                           ParameterHandler::KeepDeclarationOrder);
+    used_parameters = text.str();
+  }
+
+
+  // @sect3{Expressions}
+
+  // deal.II's FunctionParser reports a muparser error as an exception whose
+  // text says nothing about where the expression came from; evaluating the
+  // function once here turns every such error into one that names the
+  // entry. Components are counted first, since a missing ';' would
+  // otherwise surface as a dimension mismatch deep inside deal.II.
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  parse_vector_function(const std::string &entry,
+                        const std::string &expression,
+                        const bool         time_dependent)
+  {
+    const std::string variables =
+      std::string(dim == 2 ? "x,y" : "x,y,z") + (time_dependent ? ",t" : "");
+    const std::string allowed = "'" + std::to_string(dim) +
+                                " expressions separated by ';' in the "
+                                "variables " +
+                                variables + "'";
+    const unsigned int n_components =
+      Utilities::split_string_list(expression, ';').size();
+    AssertThrow(n_components == dim,
+                ExcMessage("The entry '" + entry + "' = '" + expression +
+                           "' has " + std::to_string(n_components) +
+                           " components; allowed is " + allowed + "."));
+
+    auto function = std::make_unique<FunctionParser<dim>>(dim);
+    try
+      {
+        function->initialize(variables, expression, {}, time_dependent);
+        Vector<double> value(dim);
+        function->vector_value(Point<dim>(), value);
+      }
+    catch (ExceptionBase &exc)
+      {
+        std::ostringstream reason;
+        exc.print_info(reason);
+        AssertThrow(false,
+                    ExcMessage("The entry '" + entry + "' = '" + expression +
+                               "' cannot be evaluated; allowed is " + allowed +
+                               ". muparser says: " +
+                               Utilities::trim(reason.str())));
+      }
+    return function;
+  }
+
+  template std::unique_ptr<FunctionParser<2>>
+  parse_vector_function<2>(const std::string &,
+                           const std::string &,
+                           const bool);
+  template std::unique_ptr<FunctionParser<3>>
+  parse_vector_function<3>(const std::string &,
+                           const std::string &,
+                           const bool);
+} // namespace Contact

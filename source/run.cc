@@ -1,0 +1,119 @@
+/* Reading the command line and the .prm file, and choosing the dimension. */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <contact_problem.h>
+#include <run.h>
+
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace Contact
+{
+  namespace
+  {
+    const char *usage =
+      "Usage: contact [--set 'Section/Entry=value']... scene.prm\n"
+      "  --set overrides an entry of the .prm file, e.g.\n"
+      "  --set 'Friction/Friction bound S=2.5'";
+
+    struct CommandLine
+    {
+      std::string                                      parameter_file;
+      std::vector<std::pair<std::string, std::string>> overrides;
+    };
+
+    CommandLine
+    read_command_line(const int argc, const char *const *argv)
+    {
+      CommandLine command_line;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string argument = argv[i];
+          if (argument == "--set" && i + 1 < argc)
+            {
+              const std::string assignment = argv[++i];
+              const auto        equal      = assignment.find('=');
+              AssertThrow(equal != std::string::npos,
+                          ExcMessage("'--set " + assignment +
+                                     "' is not of the form "
+                                     "'Section/Entry=value'.\n" + usage));
+              command_line.overrides.emplace_back(
+                Utilities::trim(assignment.substr(0, equal)),
+                Utilities::trim(assignment.substr(equal + 1)));
+            }
+          else
+            {
+              AssertThrow(command_line.parameter_file.empty() &&
+                            argument.rfind("-", 0) != 0,
+                          ExcMessage("Unexpected argument '" + argument +
+                                     "'.\n" + usage));
+              command_line.parameter_file = argument;
+            }
+        }
+      AssertThrow(!command_line.parameter_file.empty(),
+                  ExcMessage(std::string("No parameter file given.\n") +
+                             usage));
+      AssertThrow(std::ifstream(command_line.parameter_file).good(),
+                  ExcMessage("Cannot open the parameter file '" +
+                             command_line.parameter_file + "'."));
+      return command_line;
+    }
+
+    // Sets "Section/Subsection/Entry" = value; ParameterHandler itself
+    // rejects entries that are not declared and values that do not match
+    // the entry's pattern.
+    void
+    apply_override(ParameterHandler  &prm,
+                   const std::string &path,
+                   const std::string &value)
+    {
+      const std::vector<std::string> names =
+        Utilities::split_string_list(path, '/');
+      for (unsigned int i = 0; i + 1 < names.size(); ++i)
+        prm.enter_subsection(names[i]);
+      prm.set(names.back(), value);
+      for (unsigned int i = 0; i + 1 < names.size(); ++i)
+        prm.leave_subsection();
+    }
+
+    unsigned int
+    read_dimension(const CommandLine &command_line)
+    {
+      ParameterHandler prm;
+      prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3));
+      prm.parse_input(command_line.parameter_file, "", true);
+      for (const auto &[path, value] : command_line.overrides)
+        if (path == "Dimension")
+          prm.set(path, value);
+      return prm.get_integer("Dimension");
+    }
+  } // namespace
+
+
+  void
+  run_from_command_line(const int argc, const char *const *argv)
+  {
+    const CommandLine command_line = read_command_line(argc, argv);
+    const unsigned int dimension = read_dimension(command_line);
+
+    ParameterHandler prm;
+    Parameters::declare_parameters(prm);
+    prm.parse_input(command_line.parameter_file);
+    for (const auto &[path, value] : command_line.overrides)
+      apply_override(prm, path, value);
+
+    Parameters parameters;
+    parameters.parse_parameters(prm);
+    AssertThrow(parameters.dimension == dimension, ExcInternalError());
+
+    if (dimension == 2)
+      ContactProblem<2>(parameters).run();
+    else
+      ContactProblem<3>(parameters).run();
+  }
+} // namespace Contact

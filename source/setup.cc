@@ -1,0 +1,277 @@
+/* Mesh, finite element space, constraints of V_h and the nodes of Gamma_3. */
+
+#include <deal.II/base/exceptions.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/grid/grid_generator.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <contact_problem.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace Contact
+{
+  // @sect4{ContactProblem::make_grid}
+
+  // The box of the .prm, colorized so that its faces carry the boundary
+  // ids 0 (x = x0), 1 (x = x1), 2 (y = y0), 3 (y = y1), 4, 5 (z). Every edge
+  // is divided into round(length / h) parts, as the paper divides its
+  // boundary "into 1/h equal parts".
+  template <int dim>
+  void
+  ContactProblem<dim>::make_grid()
+  {
+    const auto &geometry = parameters.geometry;
+    Point<dim>  lower, upper;
+    std::vector<unsigned int> subdivisions(dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] = geometry.lower_corner[d];
+        upper[d] = geometry.upper_corner[d];
+        subdivisions[d] =
+          std::max(1.,
+                   std::round((upper[d] - lower[d]) / geometry.cell_size));
+      }
+    GridGenerator::subdivided_hyper_rectangle(
+      triangulation, subdivisions, lower, upper, /*colorize=*/true);
+    check_boundary_ids();
+  }
+
+
+  // @sect4{ContactProblem::check_boundary_ids}
+
+  // A boundary id in the .prm that the mesh does not have would silently
+  // leave a part of the boundary free; a boundary part in two roles is a
+  // contradiction. Both are user errors that name the entry.
+  template <int dim>
+  void
+  ContactProblem<dim>::check_boundary_ids() const
+  {
+    const std::vector<types::boundary_id> mesh_ids =
+      triangulation.get_boundary_ids();
+    std::string available;
+    for (const auto id : mesh_ids)
+      available += (available.empty() ? "" : ", ") + std::to_string(id);
+
+    std::map<types::boundary_id, std::string> role;
+    const auto                                claim =
+      [&](const types::boundary_id id, const std::string &entry) {
+        AssertThrow(std::find(mesh_ids.begin(), mesh_ids.end(), id) !=
+                      mesh_ids.end(),
+                    ExcMessage("The entry 'Boundary conditions/" + entry +
+                               "' names the boundary id " +
+                               std::to_string(id) +
+                               ", which the mesh does not have; allowed are " +
+                               available + "."));
+        AssertThrow(role.count(id) == 0 || role[id] == entry,
+                    ExcMessage("The boundary id " + std::to_string(id) +
+                               " appears in both 'Boundary conditions/" +
+                               role[id] + "' and 'Boundary conditions/" +
+                               entry + "'; a boundary part has one role."));
+        role[id] = entry;
+      };
+    for (const auto id : parameters.boundary.clamped_ids)
+      claim(id, "Clamped boundary ids");
+    for (const auto id : parameters.boundary.contact_ids)
+      claim(id, "Contact boundary ids");
+    for (const auto &traction : parameters.boundary.tractions)
+      claim(traction.first, "Tractions");
+  }
+
+
+  // @sect4{ContactProblem::setup_system}
+
+  template <int dim>
+  void
+  ContactProblem<dim>::setup_system()
+  {
+    TimerOutput::Scope t(computing_timer, "Setup");
+
+    dof_handler.distribute_dofs(fe);
+    scalar_dof_handler.distribute_dofs(scalar_fe);
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+
+    make_constraints();
+
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned_dofs,
+                                               mpi_communicator,
+                                               locally_relevant_dofs);
+    for (MatrixType *matrix : {&mass_matrix,
+                               &viscosity_matrix,
+                               &elasticity_matrix,
+                               &system_matrix})
+      matrix->reinit(locally_owned_dofs,
+                     locally_owned_dofs,
+                     dsp,
+                     mpi_communicator);
+    for (VectorType *vector : {&displacement,
+                               &velocity,
+                               &old_displacement,
+                               &old_velocity,
+                               &load})
+      vector->reinit(locally_owned_dofs, mpi_communicator);
+
+    setup_contact_nodes();
+
+    pcout << "Mesh: " << triangulation.n_global_active_cells()
+          << " cells, Q" << fe.degree << ", " << dof_handler.n_dofs()
+          << " unknowns, " << contact_nodes.size() << " free nodes on Gamma_3"
+          << std::endl;
+  }
+
+
+  // @sect4{ContactProblem::make_constraints}
+
+  // V_h of the paper: w = 0 on Gamma_1 and w.n = 0 on Gamma_3. The normal
+  // constraints come from compute_no_normal_flux_constraints, so that a
+  // Gamma_3 that is not axis-aligned works too. Where Gamma_3 meets the
+  // clamp the clamp wins (left_object_wins).
+  template <int dim>
+  void
+  ContactProblem<dim>::make_constraints()
+  {
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    for (const auto id : parameters.boundary.clamped_ids)
+      VectorTools::interpolate_boundary_values(mapping,
+                                               dof_handler,
+                                               id,
+                                               Functions::ZeroFunction<dim>(
+                                                 dim),
+                                               constraints);
+
+    AffineConstraints<double> normal_constraints(locally_relevant_dofs);
+    const std::set<types::boundary_id> contact_ids(
+      parameters.boundary.contact_ids.begin(),
+      parameters.boundary.contact_ids.end());
+    VectorTools::compute_no_normal_flux_constraints(
+      dof_handler, 0, contact_ids, normal_constraints, mapping);
+    normal_constraints.close();
+
+    constraints.merge(normal_constraints,
+                      AffineConstraints<double>::left_object_wins);
+    constraints.close();
+  }
+
+
+  // @sect4{ContactProblem::setup_contact_nodes}
+
+  // Collects the nodes of Gamma_3 with their dofs, the weight
+  // m_p = int_Gamma3 phi_p ds of the nodal ("node-to-rigid") friction and
+  // the outward normal averaged over the faces around the node. A node all
+  // of whose dofs are constrained (where Gamma_3 meets the clamp) has no
+  // friction unknown and is left out.
+  template <int dim>
+  void
+  ContactProblem<dim>::setup_contact_nodes()
+  {
+    const std::set<types::boundary_id> contact_ids(
+      parameters.boundary.contact_ids.begin(),
+      parameters.boundary.contact_ids.end());
+    FEFaceValues<dim> fe_face_values(mapping,
+                                     fe,
+                                     face_quadrature,
+                                     update_values | update_normal_vectors |
+                                       update_JxW_values);
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> scalar_dofs(
+      scalar_fe.n_dofs_per_cell());
+    std::map<types::global_dof_index, ContactNode<dim>> nodes;
+
+    auto scalar_cell = scalar_dof_handler.begin_active();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const auto this_scalar_cell = scalar_cell++;
+        if (!cell->is_locally_owned())
+          continue;
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              contact_ids.count(cell->face(f)->boundary_id()) != 0)
+            {
+              fe_face_values.reinit(cell, f);
+              cell->get_dof_indices(cell_dofs);
+              this_scalar_cell->get_dof_indices(scalar_dofs);
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                {
+                  const auto [component, base_index] =
+                    fe.system_to_component_index(i);
+                  if (component != 0 || !fe.has_support_on_face(i, f))
+                    continue;
+                  ContactNode<dim> &node = nodes[cell_dofs[i]];
+                  for (unsigned int d = 0; d < dim; ++d)
+                    node.dofs[d] =
+                      cell_dofs[fe.component_to_system_index(d, base_index)];
+                  node.scalar_dof = scalar_dofs[base_index];
+                  node.location   = mapping.transform_unit_to_real_cell(
+                    cell, fe.base_element(0).unit_support_point(base_index));
+                  for (const unsigned int q :
+                       fe_face_values.quadrature_point_indices())
+                    {
+                      const double phi_JxW =
+                        fe_face_values.shape_value_component(i, q, 0) *
+                        fe_face_values.JxW(q);
+                      node.weight += phi_JxW;
+                      node.normal += fe_face_values.normal_vector(q) *
+                                     std::abs(phi_JxW);
+                    }
+                }
+            }
+      }
+
+    contact_nodes.clear();
+    for (auto &[key, node] : nodes)
+      {
+        unsigned int n_constrained = 0;
+        for (const auto dof : node.dofs)
+          n_constrained += constraints.is_constrained(dof) ? 1 : 0;
+        if (n_constrained == dim)
+          continue;
+        node.normal /= node.normal.norm();
+        node.tangent[0] = -node.normal[1];
+        node.tangent[1] = node.normal[0];
+        contact_nodes.push_back(node);
+      }
+    // Order along Gamma_3, so that output and reports read left to right.
+    std::sort(contact_nodes.begin(),
+              contact_nodes.end(),
+              [](const ContactNode<dim> &a, const ContactNode<dim> &b) {
+                for (unsigned int d = 0; d < dim; ++d)
+                  if (a.location[d] != b.location[d])
+                    return a.location[d] < b.location[d];
+                return false;
+              });
+    AssertThrow(dim == 2 || friction_law.is_frictionless() ||
+                  contact_nodes.empty(),
+                ExcMessage("Friction on Gamma_3 in 3D (two tangential "
+                           "directions) is not implemented yet; set "
+                           "'Friction/Friction law = none' or Dimension = 2."));
+  }
+
+
+#define INSTANTIATE(dim)                                    \
+  template void ContactProblem<dim>::make_grid();           \
+  template void ContactProblem<dim>::check_boundary_ids()   \
+    const;                                                  \
+  template void ContactProblem<dim>::setup_system();        \
+  template void ContactProblem<dim>::make_constraints();    \
+  template void ContactProblem<dim>::setup_contact_nodes();
+
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace Contact
