@@ -76,7 +76,7 @@ namespace Contact
   {
     unsigned int convexification_iterations = 0;
     unsigned int active_set_iterations      = 0;
-    unsigned int relaxations                = 0;
+    unsigned int rejected_accelerations     = 0;
     unsigned int cycles_cured               = 0;
     unsigned int n_stick                    = 0;
     unsigned int n_slip                     = 0;

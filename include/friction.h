@@ -35,6 +35,10 @@ namespace Contact
     double
     bound(const double slip_rate) const;
 
+    /** j(v) = S int_0^|v| mu(r) dr of (3.8), for the step's energy. */
+    double
+    potential(const double slip_velocity) const;
+
     /** No friction term at all (law 'none' or S = 0). */
     bool
     is_frictionless() const;
@@ -53,6 +57,38 @@ namespace Contact
     const double                  a;
     const double                  b;
     const double                  alpha;
+  };
+
+
+  /**
+   * Anderson acceleration (type II, Walker and Ni 2011) of a fixed point
+   * iteration x <- G(x): the next iterate combines the last `depth` images
+   * G(x_i) with the weights that minimise the combined residual
+   * |sum gamma_i (G(x_i) - x_i)|. Depth 0 is the plain iteration.
+   */
+  class AndersonAcceleration
+  {
+  public:
+    explicit AndersonAcceleration(const unsigned int depth);
+
+    /** Given x and G(x), overwrite x with the next iterate. */
+    void
+    next_iterate(Vector<double> &x, const Vector<double> &image);
+
+    /** Forget the history; the next step is a plain one. */
+    void
+    restart();
+
+    bool
+    last_step_was_accelerated() const;
+
+  private:
+    const unsigned int          depth;
+    std::vector<Vector<double>> residual_differences;
+    std::vector<Vector<double>> image_differences;
+    Vector<double>              previous_residual;
+    Vector<double>              previous_image;
+    bool                        accelerated;
   };
 
 

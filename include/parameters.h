@@ -111,7 +111,7 @@ namespace Contact
     unsigned int max_convexification_iterations;
     unsigned int max_active_set_iterations;
     double       active_set_parameter;
-    double       relaxation;
+    unsigned int anderson_depth;
     std::string  direct_solver;
 
     static void

@@ -99,7 +99,7 @@ namespace Contact
         totals.convexification_iterations +=
           statistics.convexification_iterations;
         totals.active_set_iterations += statistics.active_set_iterations;
-        totals.relaxations += statistics.relaxations;
+        totals.rejected_accelerations += statistics.rejected_accelerations;
 
         write_time_series_row(statistics);
         if (vtu_interval > 0 &&

@@ -173,17 +173,23 @@ namespace Contact
   // @sect4{ContactProblem::solve_friction_problem}
 
   // The convexification of the paper's section 6 (refs [3, 4] there):
-  // freeze the coefficient at the slip rates s of the previous iterate,
-  // g_p = m_p S mu(s_p), solve the convex Tresca problem with these bounds,
-  // and repeat with the new slip rates until they and the slip set stop
-  // changing. The first iterate is the previous step's slip rate: the
-  // discrete problem may have several solutions when (3.22) fails, and
-  // starting from the past selects the one that continues the motion.
+  // freeze the coefficient at slip rates s, g_p = m_p S mu(s_p), solve the
+  // convex Tresca problem with these bounds, and repeat with s = |v| until
+  // the slip rates and the slip set stop changing. The first s is the
+  // previous step's slip rate: when (3.22) fails the discrete problem may
+  // have several solutions, and starting from the past selects the one that
+  // continues the motion.
   //
-  // The plain fixed point can cycle at a stick/slip front; when the change
-  // of the slip rates does not decrease for two iterations in a row, the
-  // update s <- s + theta (|v| - s) is damped by halving theta. With a rate
-  // independent coefficient one Tresca problem is the whole step.
+  // Why it converges, and what to watch: on Gamma_3 the step minimises
+  //   E(v) = 1/2 (v - v_free)^T D^{-1} (v - v_free) + sum_p m_p j(v_p),
+  // j of (3.8), and j(v) = S int_0^|v| mu is concave in |v| because mu
+  // decreases. So the Tresca energy with g_p = m_p S mu(s_p) majorises E and
+  // touches it where |v| = s: the plain iteration decreases E at every step
+  // (a majorisation-minimisation, or DC, algorithm) and cannot cycle, but
+  // it may crawl where (3.22) fails. Anderson acceleration of the map
+  // s -> |v(s)| ('Solver/Anderson depth') speeds it up; an accelerated
+  // iterate that does not decrease E is rejected and the plain step taken
+  // instead, so the safeguard keeps the descent.
   template <int dim>
   StepStatistics
   ContactProblem<dim>::solve_friction_problem(
@@ -193,14 +199,23 @@ namespace Contact
     const unsigned int n      = contact_nodes.size();
     StepStatistics     statistics;
 
-    Vector<double> rate(n), bound(n);
+    Vector<double> rate(n), bound(n), eta(friction_force), v(n);
     for (unsigned int p = 0; p < n; ++p)
       rate[p] = std::abs(slip_velocity[p]);
-    std::vector<bool> slip_set, previous_slip_set;
-    double            theta           = solver.relaxation;
-    double            previous_change = std::numeric_limits<double>::max();
-    unsigned int      n_not_decreasing = 0;
-    bool              converged        = false;
+    std::vector<NodeState> state;
+    std::vector<bool>      slip_set, previous_slip_set;
+    AndersonAcceleration   anderson(solver.anderson_depth);
+    double accepted_energy = std::numeric_limits<double>::max();
+    double residual        = 0;
+    bool   converged       = false;
+
+    const auto energy_on_gamma3 = [&]() {
+      // E(v) with v = v_free - D eta: the quadratic term is eta^T D eta / 2.
+      double value = 0.5 * delassus_operator.matrix_norm_square(eta);
+      for (unsigned int p = 0; p < n; ++p)
+        value += contact_nodes[p].weight * friction_law.potential(v[p]);
+      return value;
+    };
 
     while (!converged &&
            statistics.convexification_iterations <
@@ -218,9 +233,9 @@ namespace Contact
                           bound,
                           active_set_parameter,
                           solver.max_active_set_iterations,
-                          friction_force,
-                          slip_velocity,
-                          node_state);
+                          eta,
+                          v,
+                          state);
         statistics.active_set_iterations += tresca.iterations;
         statistics.cycles_cured += tresca.cycles_cured;
         AssertThrow(
@@ -233,55 +248,66 @@ namespace Contact
             " iterations ('Solver/Max active set iterations'); a smaller "
             "'Solver/Active set parameter' damps it."));
 
-        double change = 0, scale = std::numeric_limits<double>::min();
+        const double energy_now = energy_on_gamma3();
+        if (anderson.last_step_was_accelerated() &&
+            energy_now > accepted_energy + 1e-13 * std::abs(accepted_energy))
+          {
+            // Safeguard: back to the plain step from the accepted iterate.
+            ++statistics.rejected_accelerations;
+            anderson.restart();
+            for (unsigned int p = 0; p < n; ++p)
+              rate[p] = std::abs(slip_velocity[p]);
+            eta = friction_force;
+            continue;
+          }
+        accepted_energy = energy_now;
+        friction_force  = eta;
+        slip_velocity   = v;
+        node_state      = state;
+
+        double scale = std::numeric_limits<double>::min();
+        residual     = 0;
         slip_set.resize(n);
+        Vector<double> new_rate(n);
         for (unsigned int p = 0; p < n; ++p)
           {
-            change = std::max(change,
-                              std::abs(std::abs(slip_velocity[p]) - rate[p]));
-            scale =
-              std::max({scale,
-                        std::abs(slip_velocity[p]),
-                        std::abs(free_slip_velocity[p])});
-            slip_set[p] = (node_state[p] != NodeState::stick);
+            new_rate[p] = std::abs(v[p]);
+            residual = std::max(residual, std::abs(new_rate[p] - rate[p]));
+            scale    = std::max({scale,
+                              std::abs(v[p]),
+                              std::abs(free_slip_velocity[p])});
+            slip_set[p] = (state[p] != NodeState::stick);
           }
-        statistics.convexification_change = change / scale;
+        residual /= scale;
         converged = friction_law.is_rate_independent() ||
-                    (change <= solver.convexification_tolerance * scale &&
+                    (residual <= solver.convexification_tolerance &&
                      slip_set == previous_slip_set);
         previous_slip_set = slip_set;
-
-        n_not_decreasing = (change >= previous_change ? n_not_decreasing + 1 : 0);
-        previous_change  = change;
-        if (n_not_decreasing == 2)
-          {
-            theta /= 2;
-            ++statistics.relaxations;
-            n_not_decreasing = 0;
-          }
-        for (unsigned int p = 0; p < n; ++p)
-          rate[p] += theta * (std::abs(slip_velocity[p]) - rate[p]);
+        anderson.next_iterate(rate, new_rate);
+        for (double &r : rate)
+          r = std::max(r, 0.);
       }
+    statistics.convexification_change = residual;
 
     if (!converged)
       {
-        const auto &friction = parameters.friction;
+        const auto        &friction = parameters.friction;
         std::ostringstream message;
         message
           << "The convexification did not converge in step " << step_number
           << " (t = " << time << ") within "
           << solver.max_convexification_iterations
           << " iterations ('Solver/Max convexification iterations'): the "
-          << "slip rates still change by " << statistics.convexification_change
+          << "slip rates still change by " << residual
           << " relative to the velocity (tolerance "
-          << solver.convexification_tolerance << "), relaxation reached "
-          << theta << ". The fixed point contracts when S (a - b) alpha is "
-          << "small against the stiffness of K on Gamma_3; here S = "
-          << friction.bound_S << ", (a - b) alpha = "
-          << friction_law.one_sided_lipschitz_constant()
+          << solver.convexification_tolerance
+          << ", 'Solver/Convexification tolerance'). It contracts fast when "
+          << "S (a - b) alpha is small against the stiffness of K on "
+          << "Gamma_3; here S = " << friction.bound_S
+          << ", (a - b) alpha = " << friction_law.one_sided_lipschitz_constant()
           << ", k = " << time_step
-          << ". A smaller 'Time/Time step', 'Friction/Friction bound S' or "
-          << "'Solver/Relaxation' helps.";
+          << ". More iterations, a larger 'Solver/Anderson depth', a smaller "
+          << "'Time/Time step' or a smaller 'Friction/Friction bound S' help.";
         AssertThrow(false, ExcMessage(message.str()));
       }
 

@@ -39,7 +39,7 @@ namespace Contact
         time_series.open(directory + "/time_series.csv");
         time_series
           << "step,time,convexification_iterations,active_set_iterations,"
-             "relaxations,n_stick,n_slip,max_slip_rate,friction_force,"
+             "rejected_accelerations,n_stick,n_slip,max_slip_rate,friction_force,"
              "kinetic_energy,elastic_energy,external_work,viscous_dissipation,"
              "friction_dissipation,numerical_dissipation,energy_residual\n";
       }
@@ -59,7 +59,7 @@ namespace Contact
     time_series << step_number << ',' << std::setprecision(12) << time << ','
                 << statistics.convexification_iterations << ','
                 << statistics.active_set_iterations << ','
-                << statistics.relaxations << ',' << statistics.n_stick << ','
+                << statistics.rejected_accelerations << ',' << statistics.n_stick << ','
                 << statistics.n_slip << ',' << statistics.max_slip_rate << ','
                 << statistics.friction_force << ',' << energy.kinetic << ','
                 << energy.elastic << ',' << energy.external_work << ','
@@ -196,7 +196,7 @@ namespace Contact
     DataOutBase::VtkFlags flags;
     flags.time  = time;
     flags.cycle             = step_number;
-    flags.compression_level = DataOutBase::CompressionLevel::best_speed;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
     const std::string record = data_out.write_vtu_with_pvtu_record(
       parameters.output.directory + "/", "solution", step_number,
@@ -283,8 +283,8 @@ namespace Contact
           << std::setprecision(8) << time_step << ", "
           << totals.convexification_iterations
           << " convexification iterations, " << totals.active_set_iterations
-          << " active set iterations, " << totals.relaxations
-          << " relaxations." << std::endl;
+          << " active set iterations, " << totals.rejected_accelerations
+          << " rejected accelerations." << std::endl;
     pcout << "Energy at t = " << time << ": kinetic " << std::setprecision(6)
           << energy.kinetic << ", elastic " << energy.elastic
           << ", external work " << energy.external_work << ", viscous "

@@ -390,12 +390,13 @@ namespace Contact
         "c_p / K_pp in z_p = eta_p + c_p w_tau,p; 0.01 to 0.1 avoids the "
         "cycling at slip onset seen with c_p = K_pp.");
       prm.declare_entry(
-        "Relaxation",
-        "1",
-        Patterns::Double(0, 1),
-        "Initial relaxation theta in (0, 1] of the convexification fixed "
-        "point; it is halved automatically when the iteration stagnates "
-        "or cycles.");
+        "Anderson depth",
+        "5",
+        Patterns::Integer(0, 20),
+        "Number of previous iterates that Anderson acceleration of the "
+        "convexification combines; 0 gives the paper's plain iteration. An "
+        "accelerated iterate that does not lower the step's energy is "
+        "rejected.");
       prm.declare_entry("Direct solver",
                         "Amesos_Klu",
                         Patterns::Selection(
@@ -416,7 +417,7 @@ namespace Contact
         prm.get_integer("Max convexification iterations");
       max_active_set_iterations = prm.get_integer("Max active set iterations");
       active_set_parameter      = prm.get_double("Active set parameter");
-      relaxation                = prm.get_double("Relaxation");
+      anderson_depth            = prm.get_integer("Anderson depth");
       direct_solver             = prm.get("Direct solver");
     }
     prm.leave_subsection();
@@ -429,10 +430,6 @@ namespace Contact
                 "Solver/Active set parameter",
                 active_set_parameter,
                 "a value > 0");
-    check_entry(relaxation > 0,
-                "Solver/Relaxation",
-                relaxation,
-                "0 < theta <= 1");
   }
 
 
