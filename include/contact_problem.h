@@ -102,14 +102,12 @@ namespace Contact
     double friction_dissipation  = 0;
     double numerical_dissipation = 0;
 
-    double
-    residual() const
+    double residual() const
     {
       return kinetic + elastic + viscous_dissipation + friction_dissipation +
              numerical_dissipation - initial - external_work;
     }
-    double
-    scale() const
+    double scale() const
     {
       return std::max({kinetic + elastic,
                        initial + std::abs(external_work),
@@ -125,60 +123,40 @@ namespace Contact
   public:
     explicit ContactProblem(const Parameters &parameters);
 
-    void
-    run();
+    void run();
 
   private:
     // setup.cc
-    void
-    make_grid();
-    void
-    check_boundary_ids() const;
-    void
-    setup_system();
-    void
-    make_constraints();
-    void
-    setup_contact_nodes();
+    void make_grid();
+    void check_boundary_ids() const;
+    void setup_system();
+    void make_constraints();
+    void setup_contact_nodes();
 
     // assembly.cc
-    void
-    assemble_matrices();
-    void
-    assemble_load(const double time, VectorType &load_vector) const;
-    void
-    set_initial_values();
-    double
-    quadratic_form(const MatrixType &matrix, const VectorType &x) const;
-    void
-    update_energy_balance();
+    void   assemble_matrices();
+    void   assemble_load(const double time, VectorType &load_vector) const;
+    void   set_initial_values();
+    double quadratic_form(const MatrixType &matrix, const VectorType &x) const;
+    Tensor<1, dim> momentum() const;
+    void           update_energy_balance();
 
     // contact_solver.cc
-    void
-    factorize_system_matrix();
-    void
-    build_delassus_operator();
+    void           factorize_system_matrix();
+    void           build_delassus_operator();
+    StepStatistics do_time_step();
     StepStatistics
-    do_time_step();
-    StepStatistics
-    solve_friction_problem(const Vector<double> &free_slip_velocity);
-    double
-    tangential_velocity(const ContactNode<dim> &node,
-                        const VectorType       &w) const;
+           solve_friction_problem(const Vector<double> &free_slip_velocity);
+    double tangential_velocity(const ContactNode<dim> &node,
+                               const VectorType       &w) const;
 
     // output.cc
-    void
-    prepare_output_directory();
-    void
-    write_vtu();
-    void
-    write_time_series_row(const StepStatistics &statistics);
-    void
-    print_progress(const StepStatistics &statistics) const;
-    void
-    report_contact_state();
-    void
-    print_summary() const;
+    void prepare_output_directory();
+    void write_vtu();
+    void write_time_series_row(const StepStatistics &statistics);
+    void print_progress(const StepStatistics &statistics) const;
+    void report_contact_state();
+    void print_summary() const;
 
     // Parameters and the objects fixed by them.
     const Parameters   parameters;
@@ -186,12 +164,14 @@ namespace Contact
     const unsigned int n_time_steps;
     const double       time_step;
 
-    MPI_Comm           mpi_communicator;
-    ConditionalOStream pcout;
+    MPI_Comm            mpi_communicator;
+    ConditionalOStream  pcout;
     mutable TimerOutput computing_timer;
 
     // The load data, as muparser expressions of (x, y[, z], t).
     std::unique_ptr<FunctionParser<dim>> body_force;
+    std::unique_ptr<FunctionParser<dim>> initial_displacement;
+    std::unique_ptr<FunctionParser<dim>> initial_velocity;
     std::map<types::boundary_id, std::unique_ptr<FunctionParser<dim>>>
       tractions;
 
@@ -214,11 +194,13 @@ namespace Contact
 
     // The matrices of (5.2): mass (with rho), viscosity A_h, elasticity
     // B_h, and K = (1/k) M + A_h + k B_h, all condensed with the
-    // constraints. K is factorised once per run.
+    // constraints. K is factorised once per run. momentum_density[d]_i =
+    // int rho phi_i . e_d gives the momentum of a velocity as a dot product.
     MatrixType                                      mass_matrix;
     MatrixType                                      viscosity_matrix;
     MatrixType                                      elasticity_matrix;
     MatrixType                                      system_matrix;
+    std::array<VectorType, dim>                     momentum_density;
     SolverControl                                   direct_solver_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
 

@@ -28,28 +28,22 @@ namespace Contact
     explicit FrictionLaw(const FrictionParameters &parameters);
 
     /** Friction coefficient mu(s), s >= 0. */
-    double
-    coefficient(const double slip_rate) const;
+    double coefficient(const double slip_rate) const;
 
     /** Slip threshold S mu(s) [N/m^(dim-1)] of (3.6). */
-    double
-    bound(const double slip_rate) const;
+    double bound(const double slip_rate) const;
 
     /** j(v) = S int_0^|v| mu(r) dr of (3.8), for the step's energy. */
-    double
-    potential(const double slip_velocity) const;
+    double potential(const double slip_velocity) const;
 
     /** No friction term at all (law 'none' or S = 0). */
-    bool
-    is_frictionless() const;
+    bool is_frictionless() const;
 
     /** mu does not depend on s: one Tresca problem per step suffices. */
-    bool
-    is_rate_independent() const;
+    bool is_rate_independent() const;
 
     /** lambda in H(mu)(c): the rate at which mu may decrease. */
-    double
-    one_sided_lipschitz_constant() const;
+    double one_sided_lipschitz_constant() const;
 
   private:
     const FrictionParameters::Law law;
@@ -72,15 +66,12 @@ namespace Contact
     explicit AndersonAcceleration(const unsigned int depth);
 
     /** Given x and G(x), overwrite x with the next iterate. */
-    void
-    next_iterate(Vector<double> &x, const Vector<double> &image);
+    void next_iterate(Vector<double> &x, const Vector<double> &image);
 
     /** Forget the history; the next step is a plain one. */
-    void
-    restart();
+    void restart();
 
-    bool
-    last_step_was_accelerated() const;
+    bool last_step_was_accelerated() const;
 
   private:
     const unsigned int          depth;
@@ -125,15 +116,14 @@ namespace Contact
     slip_positive = 1
   };
 
-  TrescaResult
-  solve_tresca_2d(const FullMatrix<double> &D,
-                  const Vector<double>     &v_free,
-                  const Vector<double>     &g,
-                  const Vector<double>     &c,
-                  const unsigned int        max_iterations,
-                  Vector<double>           &eta,
-                  Vector<double>           &v,
-                  std::vector<NodeState>   &state);
+  TrescaResult solve_tresca_2d(const FullMatrix<double> &D,
+                               const Vector<double>     &v_free,
+                               const Vector<double>     &g,
+                               const Vector<double>     &c,
+                               const unsigned int        max_iterations,
+                               Vector<double>           &eta,
+                               Vector<double>           &v,
+                               std::vector<NodeState>   &state);
 } // namespace Contact
 
 #endif

@@ -28,10 +28,8 @@ namespace Contact
     double              cell_size;
     unsigned int        fe_degree;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm, const unsigned int dim);
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm, const unsigned int dim);
   };
 
   struct BoundaryParameters
@@ -41,10 +39,8 @@ namespace Contact
     /** Boundary id -> traction expression "f_x; f_y[; f_z]" of x,y,z,t. */
     std::map<types::boundary_id, std::string> tractions;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
   };
 
   struct MaterialParameters
@@ -56,10 +52,8 @@ namespace Contact
     double viscosity_mu2;
     bool   plane_stress;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
   };
 
   struct LoadParameters
@@ -68,10 +62,8 @@ namespace Contact
     std::string initial_displacement;
     std::string initial_velocity;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
   };
 
   struct FrictionParameters
@@ -88,10 +80,8 @@ namespace Contact
     double b;
     double alpha;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
   };
 
   struct TimeParameters
@@ -99,10 +89,8 @@ namespace Contact
     double end_time;
     double time_step;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
   };
 
   struct SolverParameters
@@ -114,10 +102,8 @@ namespace Contact
     unsigned int anderson_depth;
     std::string  direct_solver;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
   };
 
   struct OutputParameters
@@ -129,10 +115,8 @@ namespace Contact
     unsigned int        progress_interval;
     bool                print_timings;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
   };
 
   struct Parameters
@@ -150,10 +134,8 @@ namespace Contact
     /** The .prm text of all entries as they were used, for the results. */
     std::string used_parameters;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
   };
 
   /**

@@ -10,8 +10,7 @@
 namespace Contact
 {
   /** Runs the program; user errors are thrown as dealii::ExceptionBase. */
-  void
-  run_from_command_line(const int argc, const char *const *argv);
+  void run_from_command_line(const int argc, const char *const *argv);
 } // namespace Contact
 
 #endif

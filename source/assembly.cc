@@ -22,8 +22,7 @@ namespace Contact
   //   K w_n = F_n + (1/k) M w_{n-1} - B u_{n-1} - C^T eta_n,
   //   K = (1/k) M + A + k B.
   template <int dim>
-  void
-  ContactProblem<dim>::assemble_matrices()
+  void ContactProblem<dim>::assemble_matrices()
   {
     TimerOutput::Scope t(computing_timer, "Assembly");
 
@@ -31,27 +30,28 @@ namespace Contact
     const double E        = material.youngs_modulus;
     const double kappa    = material.poisson_ratio;
     const double two_G    = E / (1. + kappa);
-    double lambda = E * kappa / ((1. + kappa) * (1. - 2. * kappa));
+    double       lambda   = E * kappa / ((1. + kappa) * (1. - 2. * kappa));
     if (dim == 2 && material.plane_stress)
       lambda = 2. * lambda * (two_G / 2.) / (lambda + two_G);
     const double rho = material.density;
     const double mu1 = material.viscosity_mu1;
     const double mu2 = material.viscosity_mu2;
 
-    FEValues<dim>                    fe_values(mapping,
+    FEValues<dim>                        fe_values(mapping,
                             fe,
                             quadrature,
                             update_values | update_gradients |
                               update_JxW_values);
-    const FEValuesExtractors::Vector displacements(0);
-    const unsigned int               n_dofs = fe.n_dofs_per_cell();
-    FullMatrix<double>               cell_mass(n_dofs, n_dofs);
-    FullMatrix<double>               cell_viscosity(n_dofs, n_dofs);
-    FullMatrix<double>               cell_elasticity(n_dofs, n_dofs);
+    const FEValuesExtractors::Vector     displacements(0);
+    const unsigned int                   n_dofs = fe.n_dofs_per_cell();
+    FullMatrix<double>                   cell_mass(n_dofs, n_dofs);
+    FullMatrix<double>                   cell_viscosity(n_dofs, n_dofs);
+    FullMatrix<double>                   cell_elasticity(n_dofs, n_dofs);
     std::vector<types::global_dof_index> dof_indices(n_dofs);
     std::vector<Tensor<1, dim>>          phi(n_dofs);
     std::vector<SymmetricTensor<2, dim>> eps(n_dofs);
     std::vector<double>                  div(n_dofs);
+    std::vector<Vector<double>> cell_momentum(dim, Vector<double>(n_dofs));
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -60,6 +60,8 @@ namespace Contact
           cell_mass       = 0;
           cell_viscosity  = 0;
           cell_elasticity = 0;
+          for (auto &vector : cell_momentum)
+            vector = 0;
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               for (unsigned int i = 0; i < n_dofs; ++i)
@@ -69,6 +71,9 @@ namespace Contact
                   div[i] = trace(eps[i]);
                 }
               const double JxW = fe_values.JxW(q);
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                for (unsigned int d = 0; d < dim; ++d)
+                  cell_momentum[d](i) += rho * phi[i][d] * JxW;
               for (unsigned int i = 0; i < n_dofs; ++i)
                 for (unsigned int j = 0; j < n_dofs; ++j)
                   {
@@ -91,7 +96,11 @@ namespace Contact
           constraints.distribute_local_to_global(cell_elasticity,
                                                  dof_indices,
                                                  elasticity_matrix);
+          for (unsigned int d = 0; d < dim; ++d)
+            momentum_density[d].add(dof_indices, cell_momentum[d]);
         }
+    for (VectorType &vector : momentum_density)
+      vector.compress(VectorOperation::add);
     for (MatrixType *matrix :
          {&mass_matrix, &viscosity_matrix, &elasticity_matrix})
       matrix->compress(VectorOperation::add);
@@ -108,9 +117,8 @@ namespace Contact
   // F_n = f(t_n) of (5.2): the body force f_0 in Omega and the tractions
   // f_2 on Gamma_2, condensed with the constraints like the matrices.
   template <int dim>
-  void
-  ContactProblem<dim>::assemble_load(const double time,
-                                     VectorType  &load_vector) const
+  void ContactProblem<dim>::assemble_load(const double time,
+                                          VectorType  &load_vector) const
   {
     TimerOutput::Scope t(computing_timer, "Assembly");
 
@@ -118,12 +126,12 @@ namespace Contact
     for (const auto &traction : tractions)
       traction.second->set_time(time);
 
-    FEValues<dim>     fe_values(mapping,
+    FEValues<dim>                        fe_values(mapping,
                             fe,
                             quadrature,
                             update_values | update_quadrature_points |
                               update_JxW_values);
-    FEFaceValues<dim> fe_face_values(mapping,
+    FEFaceValues<dim>                    fe_face_values(mapping,
                                      fe,
                                      face_quadrature,
                                      update_values | update_quadrature_points |
@@ -179,21 +187,15 @@ namespace Contact
   // u_0 and w_0 = u_1 interpolated at the nodes, then made to satisfy the
   // constraints of V_h (the clamp and w.n = 0 on Gamma_3).
   template <int dim>
-  void
-  ContactProblem<dim>::set_initial_values()
+  void ContactProblem<dim>::set_initial_values()
   {
-    const auto interpolate = [&](const std::string &entry,
-                                 const std::string &expression,
-                                 VectorType        &vector) {
-      const auto function = parse_vector_function<dim>(
-        "Loads and initial values/" + entry, expression, false);
-      VectorTools::interpolate(mapping, dof_handler, *function, vector);
-      constraints.distribute(vector);
-    };
-    interpolate("Initial displacement",
-                parameters.loads.initial_displacement,
-                displacement);
-    interpolate("Initial velocity", parameters.loads.initial_velocity, velocity);
+    VectorTools::interpolate(mapping,
+                             dof_handler,
+                             *initial_displacement,
+                             displacement);
+    constraints.distribute(displacement);
+    VectorTools::interpolate(mapping, dof_handler, *initial_velocity, velocity);
+    constraints.distribute(velocity);
     old_displacement = displacement;
     old_velocity     = velocity;
 
@@ -211,14 +213,27 @@ namespace Contact
   // they are left out. (For the unconstrained rows, condensed M times x is
   // P^T M x, and x_free . P^T M x = x^T M x because x = P x_free.)
   template <int dim>
-  double
-  ContactProblem<dim>::quadratic_form(const MatrixType &matrix,
-                                      const VectorType &x) const
+  double ContactProblem<dim>::quadratic_form(const MatrixType &matrix,
+                                             const VectorType &x) const
   {
     VectorType product(x);
     matrix.vmult(product, x);
     constraints.set_zero(product);
     return product * x;
+  }
+
+
+  // @sect4{ContactProblem::momentum}
+
+  // int rho w dx: not condensed, since the translations it is tested with
+  // need not lie in V_h.
+  template <int dim>
+  Tensor<1, dim> ContactProblem<dim>::momentum() const
+  {
+    Tensor<1, dim> result;
+    for (unsigned int d = 0; d < dim; ++d)
+      result[d] = momentum_density[d] * velocity;
+    return result;
   }
 
 
@@ -228,8 +243,7 @@ namespace Contact
   // w_n, with (5.5) and 2 a.(a - b) = |a|^2 - |b|^2 + |a - b|^2 as in (5.7)
   // and (5.9).
   template <int dim>
-  void
-  ContactProblem<dim>::update_energy_balance()
+  void ContactProblem<dim>::update_energy_balance()
   {
     const double k = time_step;
     VectorType   velocity_change(velocity);
@@ -237,7 +251,8 @@ namespace Contact
 
     energy.kinetic = 0.5 * quadratic_form(mass_matrix, velocity);
     energy.elastic = 0.5 * quadratic_form(elasticity_matrix, displacement);
-    energy.viscous_dissipation += k * quadratic_form(viscosity_matrix, velocity);
+    energy.viscous_dissipation +=
+      k * quadratic_form(viscosity_matrix, velocity);
     energy.numerical_dissipation +=
       0.5 * quadratic_form(mass_matrix, velocity_change) +
       0.5 * k * k * quadratic_form(elasticity_matrix, velocity);
@@ -248,15 +263,16 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                                      \
-  template void ContactProblem<dim>::assemble_matrices();                     \
-  template void ContactProblem<dim>::assemble_load(const double,              \
-                                                   VectorType &) const;       \
-  template void   ContactProblem<dim>::set_initial_values();                  \
-  template double ContactProblem<dim>::quadratic_form(const MatrixType &,     \
-                                                      const VectorType &)     \
-    const;                                                                    \
-  template void ContactProblem<dim>::update_energy_balance();
+#define INSTANTIATE(dim)                                                       \
+  template void ContactProblem<dim>::assemble_matrices();                      \
+  template void ContactProblem<dim>::assemble_load(const double, VectorType &) \
+    const;                                                                     \
+  template void   ContactProblem<dim>::set_initial_values();                   \
+  template double ContactProblem<dim>::quadratic_form(const MatrixType &,      \
+                                                      const VectorType &)      \
+    const;                                                                     \
+  template void           ContactProblem<dim>::update_energy_balance();        \
+  template Tensor<1, dim> ContactProblem<dim>::momentum() const;
 
   INSTANTIATE(2)
   INSTANTIATE(3)

@@ -13,8 +13,7 @@ namespace Contact
   {
     // N = ceil(T/k) steps of the uniform size T/N, so that the last step
     // ends at T (the paper's T = 1.1 is not a multiple of its k = 1/128).
-    unsigned int
-    number_of_steps(const TimeParameters &time)
+    unsigned int number_of_steps(const TimeParameters &time)
     {
       return static_cast<unsigned int>(
         std::ceil(time.end_time / time.time_step - 1e-9));
@@ -31,13 +30,8 @@ namespace Contact
     , n_time_steps(number_of_steps(parameters.time))
     , time_step(parameters.time.end_time / n_time_steps)
     , mpi_communicator(MPI_COMM_WORLD)
-    , pcout(std::cout,
-            Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-    , computing_timer(mpi_communicator,
-                      pcout,
-                      parameters.output.print_timings ? TimerOutput::summary :
-                                                        TimerOutput::never,
-                      TimerOutput::wall_times)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , triangulation(mpi_communicator)
     , fe(FE_Q<dim>(parameters.geometry.fe_degree), dim)
     , scalar_fe(parameters.geometry.fe_degree)
@@ -56,6 +50,14 @@ namespace Contact
       parse_vector_function<dim>("Loads and initial values/Body force",
                                  parameters.loads.body_force,
                                  true);
+    initial_displacement = parse_vector_function<dim>(
+      "Loads and initial values/Initial displacement",
+      parameters.loads.initial_displacement,
+      false);
+    initial_velocity =
+      parse_vector_function<dim>("Loads and initial values/Initial velocity",
+                                 parameters.loads.initial_velocity,
+                                 false);
     for (const auto &[id, expression] : parameters.boundary.tractions)
       tractions[id] = parse_vector_function<dim>(
         "Boundary conditions/Tractions (boundary id " + std::to_string(id) +
@@ -68,8 +70,7 @@ namespace Contact
   // @sect4{ContactProblem::run}
 
   template <int dim>
-  void
-  ContactProblem<dim>::run()
+  void ContactProblem<dim>::run()
   {
     run_timer.restart();
     make_grid();

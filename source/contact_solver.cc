@@ -18,8 +18,7 @@ namespace Contact
   // factorised once per run and every later solve is a forward/back
   // substitution.
   template <int dim>
-  void
-  ContactProblem<dim>::factorize_system_matrix()
+  void ContactProblem<dim>::factorize_system_matrix()
   {
     TimerOutput::Scope t(computing_timer, "Factorization");
     direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
@@ -33,9 +32,8 @@ namespace Contact
   // @sect4{ContactProblem::tangential_velocity}
 
   template <int dim>
-  double
-  ContactProblem<dim>::tangential_velocity(const ContactNode<dim> &node,
-                                           const VectorType       &w) const
+  double ContactProblem<dim>::tangential_velocity(const ContactNode<dim> &node,
+                                                  const VectorType &w) const
   {
     double v = 0;
     for (unsigned int d = 0; d < dim; ++d)
@@ -49,13 +47,13 @@ namespace Contact
   // The friction forces act on the body through C^T eta, where column p of
   // C^T is the unit tangent at node p (condensed with the constraints like
   // every load). With Z = K^{-1} C^T the velocity of a step is
-  //   w_n = w_free - Z eta,   w_free = K^{-1} (F_n + (1/k) M w_{n-1} - B u_{n-1}),
+  //   w_n = w_free - Z eta,   w_free = K^{-1} (F_n + (1/k) M w_{n-1} - B
+  //   u_{n-1}),
   // and on Gamma_3 v = C w_n = v_free - D eta with the Delassus operator
   // D = C Z, symmetric positive definite. So the nonsmooth part of every
   // step lives on the few unknowns of Gamma_3 (DESIGN.md section 4).
   template <int dim>
-  void
-  ContactProblem<dim>::build_delassus_operator()
+  void ContactProblem<dim>::build_delassus_operator()
   {
     TimerOutput::Scope t(computing_timer, "Delassus operator");
 
@@ -110,8 +108,8 @@ namespace Contact
         {
           const double mean =
             0.5 * (delassus_operator(p, q) + delassus_operator(q, p));
-          asymmetry = std::max(asymmetry,
-                               std::abs(delassus_operator(p, q) - mean));
+          asymmetry =
+            std::max(asymmetry, std::abs(delassus_operator(p, q) - mean));
           delassus_operator(p, q) = delassus_operator(q, p) = mean;
         }
     for (unsigned int p = 0; p < n; ++p)
@@ -133,8 +131,7 @@ namespace Contact
   // friction forces from the problem on Gamma_3, then w_n = w_free - Z eta
   // and u_n = u_{n-1} + k w_n.
   template <int dim>
-  StepStatistics
-  ContactProblem<dim>::do_time_step()
+  StepStatistics ContactProblem<dim>::do_time_step()
   {
     old_velocity     = velocity;
     old_displacement = displacement;
@@ -191,8 +188,7 @@ namespace Contact
   // iterate that does not decrease E is rejected and the plain step taken
   // instead, so the safeguard keeps the descent.
   template <int dim>
-  StepStatistics
-  ContactProblem<dim>::solve_friction_problem(
+  StepStatistics ContactProblem<dim>::solve_friction_problem(
     const Vector<double> &free_slip_velocity)
   {
     const auto        &solver = parameters.solver;
@@ -205,9 +201,9 @@ namespace Contact
     std::vector<NodeState> state;
     std::vector<bool>      slip_set, previous_slip_set;
     AndersonAcceleration   anderson(solver.anderson_depth);
-    double accepted_energy = std::numeric_limits<double>::max();
-    double residual        = 0;
-    bool   converged       = false;
+    double                 accepted_energy = std::numeric_limits<double>::max();
+    double                 residual        = 0;
+    bool                   converged       = false;
 
     const auto energy_on_gamma3 = [&]() {
       // E(v) with v = v_free - D eta: the quadratic term is eta^T D eta / 2.
@@ -217,9 +213,8 @@ namespace Contact
       return value;
     };
 
-    while (!converged &&
-           statistics.convexification_iterations <
-             solver.max_convexification_iterations)
+    while (!converged && statistics.convexification_iterations <
+                           solver.max_convexification_iterations)
       {
         ++statistics.convexification_iterations;
         for (unsigned int p = 0; p < n; ++p)
@@ -272,10 +267,9 @@ namespace Contact
         for (unsigned int p = 0; p < n; ++p)
           {
             new_rate[p] = std::abs(v[p]);
-            residual = std::max(residual, std::abs(new_rate[p] - rate[p]));
-            scale    = std::max({scale,
-                              std::abs(v[p]),
-                              std::abs(free_slip_velocity[p])});
+            residual    = std::max(residual, std::abs(new_rate[p] - rate[p]));
+            scale       = std::max(
+              {scale, std::abs(v[p]), std::abs(free_slip_velocity[p])});
             slip_set[p] = (state[p] != NodeState::stick);
           }
         residual /= scale;
@@ -327,13 +321,13 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                                   \
-  template void   ContactProblem<dim>::factorize_system_matrix();          \
-  template double ContactProblem<dim>::tangential_velocity(                \
-    const ContactNode<dim> &, const VectorType &) const;                   \
-  template void           ContactProblem<dim>::build_delassus_operator();  \
-  template StepStatistics ContactProblem<dim>::do_time_step();             \
-  template StepStatistics ContactProblem<dim>::solve_friction_problem(     \
+#define INSTANTIATE(dim)                                                  \
+  template void   ContactProblem<dim>::factorize_system_matrix();         \
+  template double ContactProblem<dim>::tangential_velocity(               \
+    const ContactNode<dim> &, const VectorType &) const;                  \
+  template void           ContactProblem<dim>::build_delassus_operator(); \
+  template StepStatistics ContactProblem<dim>::do_time_step();            \
+  template StepStatistics ContactProblem<dim>::solve_friction_problem(    \
     const Vector<double> &);
 
   INSTANTIATE(2)

@@ -19,8 +19,7 @@ namespace Contact
     , alpha(parameters.alpha)
   {}
 
-  double
-  FrictionLaw::coefficient(const double slip_rate) const
+  double FrictionLaw::coefficient(const double slip_rate) const
   {
     switch (law)
       {
@@ -35,14 +34,12 @@ namespace Contact
     return 0.;
   }
 
-  double
-  FrictionLaw::bound(const double slip_rate) const
+  double FrictionLaw::bound(const double slip_rate) const
   {
     return S * coefficient(slip_rate);
   }
 
-  double
-  FrictionLaw::potential(const double slip_velocity) const
+  double FrictionLaw::potential(const double slip_velocity) const
   {
     const double s = std::abs(slip_velocity);
     if (is_frictionless())
@@ -52,22 +49,19 @@ namespace Contact
     return S * (b * s + (a - b) * (1. - std::exp(-alpha * s)) / alpha);
   }
 
-  bool
-  FrictionLaw::is_frictionless() const
+  bool FrictionLaw::is_frictionless() const
   {
     return law == FrictionParameters::Law::none || S == 0. ||
            (a == 0. && b == 0.);
   }
 
-  bool
-  FrictionLaw::is_rate_independent() const
+  bool FrictionLaw::is_rate_independent() const
   {
     return law != FrictionParameters::Law::slip_rate_weakening || a == b ||
            alpha == 0.;
   }
 
-  double
-  FrictionLaw::one_sided_lipschitz_constant() const
+  double FrictionLaw::one_sided_lipschitz_constant() const
   {
     return is_rate_independent() ? 0. : (a - b) * alpha;
   }
@@ -80,8 +74,7 @@ namespace Contact
     , accelerated(false)
   {}
 
-  void
-  AndersonAcceleration::restart()
+  void AndersonAcceleration::restart()
   {
     residual_differences.clear();
     image_differences.clear();
@@ -90,15 +83,13 @@ namespace Contact
     accelerated = false;
   }
 
-  bool
-  AndersonAcceleration::last_step_was_accelerated() const
+  bool AndersonAcceleration::last_step_was_accelerated() const
   {
     return accelerated;
   }
 
-  void
-  AndersonAcceleration::next_iterate(Vector<double>       &x,
-                                     const Vector<double> &image)
+  void AndersonAcceleration::next_iterate(Vector<double>       &x,
+                                          const Vector<double> &image)
   {
     Vector<double> residual(image);
     residual -= x;
@@ -158,11 +149,10 @@ namespace Contact
     // eta_p = P_[-g_p, g_p](eta_p + c_p v_p) predicts. A node with g_p = 0
     // slips with eta_p = 0 whatever its sign, so it is reported as
     // slip_positive to keep the state deterministic.
-    std::vector<NodeState>
-    predict_state(const Vector<double> &eta,
-                  const Vector<double> &v,
-                  const Vector<double> &g,
-                  const Vector<double> &c)
+    std::vector<NodeState> predict_state(const Vector<double> &eta,
+                                         const Vector<double> &v,
+                                         const Vector<double> &g,
+                                         const Vector<double> &c)
     {
       std::vector<NodeState> state(eta.size());
       for (unsigned int p = 0; p < eta.size(); ++p)
@@ -173,21 +163,20 @@ namespace Contact
           else if (std::abs(z) <= g[p])
             state[p] = NodeState::stick;
           else
-            state[p] = (z > 0 ? NodeState::slip_positive :
-                                NodeState::slip_negative);
+            state[p] =
+              (z > 0 ? NodeState::slip_positive : NodeState::slip_negative);
         }
       return state;
     }
 
     // Given the state, eta is known on the slip set and v = 0 on the stick
     // set, so eta_S solves D_SS eta_S = v_free_S - D_SL eta_L.
-    void
-    solve_for_state(const FullMatrix<double>     &D,
-                    const Vector<double>         &v_free,
-                    const Vector<double>         &g,
-                    const std::vector<NodeState> &state,
-                    Vector<double>               &eta,
-                    Vector<double>               &v)
+    void solve_for_state(const FullMatrix<double>     &D,
+                         const Vector<double>         &v_free,
+                         const Vector<double>         &g,
+                         const std::vector<NodeState> &state,
+                         Vector<double>               &eta,
+                         Vector<double>               &v)
     {
       const unsigned int        n = v_free.size();
       std::vector<unsigned int> stick;
@@ -199,7 +188,7 @@ namespace Contact
 
       if (!stick.empty())
         {
-          const unsigned int m = stick.size();
+          const unsigned int       m = stick.size();
           LAPACKFullMatrix<double> D_SS(m, m);
           Vector<double>           rhs(m);
           for (unsigned int i = 0; i < m; ++i)
@@ -226,15 +215,14 @@ namespace Contact
   } // namespace
 
 
-  TrescaResult
-  solve_tresca_2d(const FullMatrix<double> &D,
-                  const Vector<double>     &v_free,
-                  const Vector<double>     &g,
-                  const Vector<double>     &c_initial,
-                  const unsigned int        max_iterations,
-                  Vector<double>           &eta,
-                  Vector<double>           &v,
-                  std::vector<NodeState>   &state)
+  TrescaResult solve_tresca_2d(const FullMatrix<double> &D,
+                               const Vector<double>     &v_free,
+                               const Vector<double>     &g,
+                               const Vector<double>     &c_initial,
+                               const unsigned int        max_iterations,
+                               Vector<double>           &eta,
+                               Vector<double>           &v,
+                               std::vector<NodeState>   &state)
   {
     AssertDimension(D.m(), v_free.size());
     AssertDimension(eta.size(), v_free.size());
@@ -258,8 +246,7 @@ namespace Contact
             result.converged = true;
             break;
           }
-        if (std::find(history.begin(), history.end(), state) !=
-            history.end())
+        if (std::find(history.begin(), history.end(), state) != history.end())
           {
             c *= 0.5;
             ++result.cycles_cured;

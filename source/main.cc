@@ -9,8 +9,7 @@
 #include <exception>
 #include <iostream>
 
-int
-main(int argc, char *argv[])
+int main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try

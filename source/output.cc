@@ -18,8 +18,7 @@ namespace Contact
   // @sect4{ContactProblem::prepare_output_directory}
 
   template <int dim>
-  void
-  ContactProblem<dim>::prepare_output_directory()
+  void ContactProblem<dim>::prepare_output_directory()
   {
     const std::string &directory = parameters.output.directory;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
@@ -41,7 +40,9 @@ namespace Contact
           << "step,time,convexification_iterations,active_set_iterations,"
              "rejected_accelerations,n_stick,n_slip,max_slip_rate,friction_force,"
              "kinetic_energy,elastic_energy,external_work,viscous_dissipation,"
-             "friction_dissipation,numerical_dissipation,energy_residual\n";
+             "friction_dissipation,numerical_dissipation,energy_residual,momentum_x,"
+             "momentum_y"
+          << (dim == 3 ? ",momentum_z\n" : "\n");
       }
   }
 
@@ -59,14 +60,17 @@ namespace Contact
     time_series << step_number << ',' << std::setprecision(12) << time << ','
                 << statistics.convexification_iterations << ','
                 << statistics.active_set_iterations << ','
-                << statistics.rejected_accelerations << ',' << statistics.n_stick << ','
-                << statistics.n_slip << ',' << statistics.max_slip_rate << ','
-                << statistics.friction_force << ',' << energy.kinetic << ','
-                << energy.elastic << ',' << energy.external_work << ','
-                << energy.viscous_dissipation << ','
-                << energy.friction_dissipation << ','
-                << energy.numerical_dissipation << ',' << energy.residual()
-                << std::endl;
+                << statistics.rejected_accelerations << ','
+                << statistics.n_stick << ',' << statistics.n_slip << ','
+                << statistics.max_slip_rate << ',' << statistics.friction_force
+                << ',' << energy.kinetic << ',' << energy.elastic << ','
+                << energy.external_work << ',' << energy.viscous_dissipation
+                << ',' << energy.friction_dissipation << ','
+                << energy.numerical_dissipation << ',' << energy.residual();
+    const Tensor<1, dim> p = momentum();
+    for (unsigned int d = 0; d < dim; ++d)
+      time_series << ',' << p[d];
+    time_series << std::endl;
   }
 
 
@@ -79,8 +83,7 @@ namespace Contact
   // the slip rate |w_tau|, the friction traction -eta_p/m_p t_p and the
   // bound mu(|w_tau|) S, as nodal fields.
   template <int dim>
-  void
-  ContactProblem<dim>::write_vtu()
+  void ContactProblem<dim>::write_vtu()
   {
     TimerOutput::Scope t(computing_timer, "Output");
 
@@ -110,15 +113,15 @@ namespace Contact
       lambda = 2. * lambda * (two_G / 2.) / (lambda + two_G);
     const bool plane_strain = (dim == 2 && !material.plane_stress);
 
-    const unsigned int n_cells = triangulation.n_active_cells();
-    std::vector<Vector<double>> stress(dim * (dim + 1) / 2,
+    const unsigned int               n_cells = triangulation.n_active_cells();
+    std::vector<Vector<double>>      stress(dim * (dim + 1) / 2,
                                        Vector<double>(n_cells));
-    Vector<double>              von_mises(n_cells);
-    FEValues<dim>               fe_values(mapping,
+    Vector<double>                   von_mises(n_cells);
+    FEValues<dim>                    fe_values(mapping,
                             fe,
                             quadrature,
                             update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector     displacements(0);
+    const FEValuesExtractors::Vector displacements(0);
     std::vector<SymmetricTensor<2, dim>> eps_u(quadrature.size()),
       eps_w(quadrature.size());
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -134,13 +137,13 @@ namespace Contact
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               const double JxW = fe_values.JxW(q);
-              sigma += (material.viscosity_mu1 * trace(eps_w[q]) *
-                          unit_symmetric_tensor<dim>() +
-                        material.viscosity_mu2 * eps_w[q] +
-                        lambda * trace(eps_u[q]) *
-                          unit_symmetric_tensor<dim>() +
-                        two_G * eps_u[q]) *
-                       JxW;
+              sigma +=
+                (material.viscosity_mu1 * trace(eps_w[q]) *
+                   unit_symmetric_tensor<dim>() +
+                 material.viscosity_mu2 * eps_w[q] +
+                 lambda * trace(eps_u[q]) * unit_symmetric_tensor<dim>() +
+                 two_G * eps_u[q]) *
+                JxW;
               if (plane_strain)
                 sigma_zz += (lambda * trace(eps_u[q]) +
                              material.viscosity_mu1 * trace(eps_w[q])) *
@@ -149,16 +152,16 @@ namespace Contact
             }
           sigma /= volume;
           sigma_zz /= volume;
-          const unsigned int c = cell->active_cell_index();
+          const unsigned int c         = cell->active_cell_index();
           unsigned int       component = 0;
           for (unsigned int i = 0; i < dim; ++i)
             for (unsigned int j = i; j < dim; ++j)
               stress[component++][c] = sigma[i][j];
-          const double mean = (trace(sigma) + sigma_zz) / 3.;
+          const double                  mean = (trace(sigma) + sigma_zz) / 3.;
           const SymmetricTensor<2, dim> deviator =
             sigma - mean * unit_symmetric_tensor<dim>();
           const double out_of_plane = (dim == 2 ? sigma_zz - mean : 0.);
-          von_mises[c] = std::sqrt(
+          von_mises[c]              = std::sqrt(
             1.5 * (deviator * deviator + out_of_plane * out_of_plane));
         }
 
@@ -181,7 +184,7 @@ namespace Contact
     data_out.add_data_vector(scalar_dof_handler,
                              friction_bound,
                              "friction_bound");
-    const char *axes = "xyz";
+    const char  *axes      = "xyz";
     unsigned int component = 0;
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = i; j < dim; ++j)
@@ -194,13 +197,16 @@ namespace Contact
     data_out.build_patches(mapping, fe.degree);
 
     DataOutBase::VtkFlags flags;
-    flags.time  = time;
+    flags.time              = time;
     flags.cycle             = step_number;
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
-    const std::string record = data_out.write_vtu_with_pvtu_record(
-      parameters.output.directory + "/", "solution", step_number,
-      mpi_communicator, 5);
+    const std::string record =
+      data_out.write_vtu_with_pvtu_record(parameters.output.directory + "/",
+                                          "solution",
+                                          step_number,
+                                          mpi_communicator,
+                                          5);
 
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
@@ -218,8 +224,8 @@ namespace Contact
   ContactProblem<dim>::print_progress(const StepStatistics &statistics) const
   {
     const unsigned int interval = parameters.output.progress_interval;
-    if (interval == 0 || (step_number % interval != 0 &&
-                          step_number != n_time_steps))
+    if (interval == 0 ||
+        (step_number % interval != 0 && step_number != n_time_steps))
       return;
     const double elapsed = run_timer.wall_time();
     const double left    = elapsed / step_number * (n_time_steps - step_number);
@@ -239,8 +245,7 @@ namespace Contact
   // At the step nearest to each of the 'Output/Report times': how many
   // nodes of Gamma_3 stick and slip, and where the slip zone is.
   template <int dim>
-  void
-  ContactProblem<dim>::report_contact_state()
+  void ContactProblem<dim>::report_contact_state()
   {
     for (auto t = pending_report_times.begin();
          t != pending_report_times.end();)
@@ -265,7 +270,11 @@ namespace Contact
           if (n_slip > 0)
             pcout << ", slip zone x in [" << slip_from << ", " << slip_to
                   << "]";
-          pcout << std::endl;
+          double friction = 0;
+          for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+            friction += friction_force[p];
+          pcout << "; friction force " << friction << ", momentum "
+                << momentum() << std::endl;
           t = pending_report_times.erase(t);
         }
       else
@@ -276,11 +285,10 @@ namespace Contact
   // @sect4{ContactProblem::print_summary}
 
   template <int dim>
-  void
-  ContactProblem<dim>::print_summary() const
+  void ContactProblem<dim>::print_summary() const
   {
-    pcout << "Done: " << n_time_steps << " steps of k = "
-          << std::setprecision(8) << time_step << ", "
+    pcout << "Done: " << n_time_steps
+          << " steps of k = " << std::setprecision(8) << time_step << ", "
           << totals.convexification_iterations
           << " convexification iterations, " << totals.active_set_iterations
           << " active set iterations, " << totals.rejected_accelerations
@@ -293,21 +301,26 @@ namespace Contact
           << energy.numerical_dissipation << std::endl;
     pcout << "Energy identity: largest residual relative to the energies "
           << std::setprecision(2) << max_relative_energy_residual
+          << (max_relative_energy_residual < 1e-8 ? " (below 1e-8)" :
+                                                    " (ABOVE 1e-8)")
           << std::endl;
     if (parameters.output.print_timings)
-      pcout << "Wall time: " << std::setprecision(4) << run_timer.wall_time()
-            << " s" << std::endl;
+      {
+        pcout << "Wall time: " << std::setprecision(4) << run_timer.wall_time()
+              << " s" << std::endl;
+        computing_timer.print_summary();
+      }
   }
 
 
-#define INSTANTIATE(dim)                                                     \
-  template void ContactProblem<dim>::prepare_output_directory();             \
-  template void ContactProblem<dim>::write_time_series_row(                  \
-    const StepStatistics &);                                                 \
-  template void ContactProblem<dim>::write_vtu();                            \
-  template void ContactProblem<dim>::print_progress(const StepStatistics &)  \
-    const;                                                                   \
-  template void ContactProblem<dim>::report_contact_state();                 \
+#define INSTANTIATE(dim)                                                    \
+  template void ContactProblem<dim>::prepare_output_directory();            \
+  template void ContactProblem<dim>::write_time_series_row(                 \
+    const StepStatistics &);                                                \
+  template void ContactProblem<dim>::write_vtu();                           \
+  template void ContactProblem<dim>::print_progress(const StepStatistics &) \
+    const;                                                                  \
+  template void ContactProblem<dim>::report_contact_state();                \
   template void ContactProblem<dim>::print_summary() const;
 
   INSTANTIATE(2)

@@ -7,6 +7,7 @@
 
 #include <parameters.h>
 
+#include <iostream>
 #include <sstream>
 
 namespace Contact
@@ -16,11 +17,10 @@ namespace Contact
     // The one place where a user error about a single entry is raised: it
     // names the entry (with its subsection), the value read and what is
     // allowed.
-    void
-    check_entry(const bool         condition,
-                const std::string &entry,
-                const double       value,
-                const std::string &allowed)
+    void check_entry(const bool         condition,
+                     const std::string &entry,
+                     const double       value,
+                     const std::string &allowed)
     {
       std::ostringstream value_text;
       value_text << value;
@@ -30,8 +30,7 @@ namespace Contact
                              allowed + "."));
     }
 
-    std::vector<types::boundary_id>
-    parse_boundary_ids(const std::string &text)
+    std::vector<types::boundary_id> parse_boundary_ids(const std::string &text)
     {
       std::vector<types::boundary_id> ids;
       for (const int id :
@@ -44,8 +43,7 @@ namespace Contact
 
   // @sect3{Geometry}
 
-  void
-  GeometryParameters::declare_parameters(ParameterHandler &prm)
+  void GeometryParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
     {
@@ -71,9 +69,8 @@ namespace Contact
     prm.leave_subsection();
   }
 
-  void
-  GeometryParameters::parse_parameters(ParameterHandler  &prm,
-                                       const unsigned int dim)
+  void GeometryParameters::parse_parameters(ParameterHandler  &prm,
+                                            const unsigned int dim)
   {
     prm.enter_subsection("Geometry");
     {
@@ -106,8 +103,7 @@ namespace Contact
 
   // @sect3{Boundary conditions}
 
-  void
-  BoundaryParameters::declare_parameters(ParameterHandler &prm)
+  void BoundaryParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Boundary conditions");
     {
@@ -133,8 +129,7 @@ namespace Contact
     prm.leave_subsection();
   }
 
-  void
-  BoundaryParameters::parse_parameters(ParameterHandler &prm)
+  void BoundaryParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Boundary conditions");
     {
@@ -151,8 +146,7 @@ namespace Contact
                                  piece +
                                  "'; expected 'boundary id: f_x; f_y[; f_z]'"
                                  " with pieces separated by '|'."));
-          const std::string id_text =
-            Utilities::trim(piece.substr(0, colon));
+          const std::string id_text = Utilities::trim(piece.substr(0, colon));
           AssertThrow(id_text.find_first_not_of("0123456789") ==
                           std::string::npos &&
                         Utilities::string_to_int(id_text) < 255,
@@ -170,8 +164,7 @@ namespace Contact
 
   // @sect3{Material}
 
-  void
-  MaterialParameters::declare_parameters(ParameterHandler &prm)
+  void MaterialParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
     {
@@ -207,8 +200,7 @@ namespace Contact
     prm.leave_subsection();
   }
 
-  void
-  MaterialParameters::parse_parameters(ParameterHandler &prm)
+  void MaterialParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
     {
@@ -234,8 +226,7 @@ namespace Contact
 
   // @sect3{Loads and initial values}
 
-  void
-  LoadParameters::declare_parameters(ParameterHandler &prm)
+  void LoadParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Loads and initial values");
     {
@@ -256,8 +247,7 @@ namespace Contact
     prm.leave_subsection();
   }
 
-  void
-  LoadParameters::parse_parameters(ParameterHandler &prm)
+  void LoadParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Loads and initial values");
     {
@@ -271,8 +261,7 @@ namespace Contact
 
   // @sect3{Friction}
 
-  void
-  FrictionParameters::declare_parameters(ParameterHandler &prm)
+  void FrictionParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Friction");
     {
@@ -283,12 +272,15 @@ namespace Contact
         "none: frictionless Gamma_3; constant: mu = a; slip rate weakening: "
         "mu(s) = (a - b) exp(-alpha s) + b, the paper's (6.1).");
       prm.declare_entry("Friction bound S",
-                        "3",
+                        "100",
                         Patterns::Double(0),
                         "S >= 0 [N/m^(dim-1)]: the slip threshold is mu S "
                         "(3.6).");
       prm.declare_entry("a", "1", Patterns::Double(0), "mu(0) = a >= 0.");
-      prm.declare_entry("b", "0.1", Patterns::Double(0), "mu(inf) = b, b <= a.");
+      prm.declare_entry("b",
+                        "0.1",
+                        Patterns::Double(0),
+                        "mu(inf) = b, b <= a.");
       prm.declare_entry("alpha",
                         "200",
                         Patterns::Double(0),
@@ -297,19 +289,18 @@ namespace Contact
     prm.leave_subsection();
   }
 
-  void
-  FrictionParameters::parse_parameters(ParameterHandler &prm)
+  void FrictionParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Friction");
     {
       const std::string name = prm.get("Friction law");
-      law     = (name == "none"     ? Law::none :
-                 name == "constant" ? Law::constant :
-                                      Law::slip_rate_weakening);
-      bound_S = prm.get_double("Friction bound S");
-      a       = prm.get_double("a");
-      b       = prm.get_double("b");
-      alpha   = prm.get_double("alpha");
+      law                    = (name == "none"     ? Law::none :
+                                name == "constant" ? Law::constant :
+                                                     Law::slip_rate_weakening);
+      bound_S                = prm.get_double("Friction bound S");
+      a                      = prm.get_double("a");
+      b                      = prm.get_double("b");
+      alpha                  = prm.get_double("alpha");
     }
     prm.leave_subsection();
 
@@ -326,8 +317,7 @@ namespace Contact
 
   // @sect3{Time}
 
-  void
-  TimeParameters::declare_parameters(ParameterHandler &prm)
+  void TimeParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time");
     {
@@ -342,8 +332,7 @@ namespace Contact
     prm.leave_subsection();
   }
 
-  void
-  TimeParameters::parse_parameters(ParameterHandler &prm)
+  void TimeParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time");
     {
@@ -362,8 +351,7 @@ namespace Contact
 
   // @sect3{Solver}
 
-  void
-  SolverParameters::declare_parameters(ParameterHandler &prm)
+  void SolverParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
     {
@@ -407,8 +395,7 @@ namespace Contact
     prm.leave_subsection();
   }
 
-  void
-  SolverParameters::parse_parameters(ParameterHandler &prm)
+  void SolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
     {
@@ -435,8 +422,7 @@ namespace Contact
 
   // @sect3{Output}
 
-  void
-  OutputParameters::declare_parameters(ParameterHandler &prm)
+  void OutputParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
     {
@@ -473,8 +459,7 @@ namespace Contact
     prm.leave_subsection();
   }
 
-  void
-  OutputParameters::parse_parameters(ParameterHandler &prm)
+  void OutputParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
     {
@@ -496,8 +481,7 @@ namespace Contact
 
   // @sect3{All parameters}
 
-  void
-  Parameters::declare_parameters(ParameterHandler &prm)
+  void Parameters::declare_parameters(ParameterHandler &prm)
   {
     prm.declare_entry("Dimension",
                       "2",
@@ -513,8 +497,7 @@ namespace Contact
     OutputParameters::declare_parameters(prm);
   }
 
-  void
-  Parameters::parse_parameters(ParameterHandler &prm)
+  void Parameters::parse_parameters(ParameterHandler &prm)
   {
     dimension = prm.get_integer("Dimension");
     geometry.parse_parameters(prm, dimension);
@@ -560,22 +543,29 @@ namespace Contact
                            "' has " + std::to_string(n_components) +
                            " components; allowed is " + allowed + "."));
 
-    auto function = std::make_unique<FunctionParser<dim>>(dim);
+    // deal.II also writes muparser's diagnosis to std::cerr; it is
+    // swallowed here, since the exception below says the same with the
+    // entry's name.
+    auto               function = std::make_unique<FunctionParser<dim>>(dim);
+    std::ostringstream muparser_diagnosis;
+    std::streambuf *cerr_buffer = std::cerr.rdbuf(muparser_diagnosis.rdbuf());
     try
       {
         function->initialize(variables, expression, {}, time_dependent);
         Vector<double> value(dim);
         function->vector_value(Point<dim>(), value);
+        std::cerr.rdbuf(cerr_buffer);
       }
     catch (ExceptionBase &exc)
       {
+        std::cerr.rdbuf(cerr_buffer);
         std::ostringstream reason;
         exc.print_info(reason);
         AssertThrow(false,
-                    ExcMessage("The entry '" + entry + "' = '" + expression +
-                               "' cannot be evaluated; allowed is " + allowed +
-                               ". muparser says: " +
-                               Utilities::trim(reason.str())));
+                    ExcMessage(
+                      "The entry '" + entry + "' = '" + expression +
+                      "' cannot be evaluated; allowed is " + allowed +
+                      ". muparser says: " + Utilities::trim(reason.str())));
       }
     return function;
   }

@@ -29,19 +29,17 @@ namespace Contact
   // is divided into round(length / h) parts, as the paper divides its
   // boundary "into 1/h equal parts".
   template <int dim>
-  void
-  ContactProblem<dim>::make_grid()
+  void ContactProblem<dim>::make_grid()
   {
-    const auto &geometry = parameters.geometry;
-    Point<dim>  lower, upper;
+    const auto               &geometry = parameters.geometry;
+    Point<dim>                lower, upper;
     std::vector<unsigned int> subdivisions(dim);
     for (unsigned int d = 0; d < dim; ++d)
       {
         lower[d] = geometry.lower_corner[d];
         upper[d] = geometry.upper_corner[d];
         subdivisions[d] =
-          std::max(1.,
-                   std::round((upper[d] - lower[d]) / geometry.cell_size));
+          std::max(1., std::round((upper[d] - lower[d]) / geometry.cell_size));
       }
     GridGenerator::subdivided_hyper_rectangle(
       triangulation, subdivisions, lower, upper, /*colorize=*/true);
@@ -55,8 +53,7 @@ namespace Contact
   // leave a part of the boundary free; a boundary part in two roles is a
   // contradiction. Both are user errors that name the entry.
   template <int dim>
-  void
-  ContactProblem<dim>::check_boundary_ids() const
+  void ContactProblem<dim>::check_boundary_ids() const
   {
     const std::vector<types::boundary_id> mesh_ids =
       triangulation.get_boundary_ids();
@@ -65,22 +62,21 @@ namespace Contact
       available += (available.empty() ? "" : ", ") + std::to_string(id);
 
     std::map<types::boundary_id, std::string> role;
-    const auto                                claim =
-      [&](const types::boundary_id id, const std::string &entry) {
-        AssertThrow(std::find(mesh_ids.begin(), mesh_ids.end(), id) !=
-                      mesh_ids.end(),
-                    ExcMessage("The entry 'Boundary conditions/" + entry +
-                               "' names the boundary id " +
-                               std::to_string(id) +
-                               ", which the mesh does not have; allowed are " +
-                               available + "."));
-        AssertThrow(role.count(id) == 0 || role[id] == entry,
-                    ExcMessage("The boundary id " + std::to_string(id) +
-                               " appears in both 'Boundary conditions/" +
-                               role[id] + "' and 'Boundary conditions/" +
-                               entry + "'; a boundary part has one role."));
-        role[id] = entry;
-      };
+    const auto claim = [&](const types::boundary_id id,
+                           const std::string       &entry) {
+      AssertThrow(std::find(mesh_ids.begin(), mesh_ids.end(), id) !=
+                    mesh_ids.end(),
+                  ExcMessage("The entry 'Boundary conditions/" + entry +
+                             "' names the boundary id " + std::to_string(id) +
+                             ", which the mesh does not have; allowed are " +
+                             available + "."));
+      AssertThrow(role.count(id) == 0 || role[id] == entry,
+                  ExcMessage("The boundary id " + std::to_string(id) +
+                             " appears in both 'Boundary conditions/" +
+                             role[id] + "' and 'Boundary conditions/" + entry +
+                             "'; a boundary part has one role."));
+      role[id] = entry;
+    };
     for (const auto id : parameters.boundary.clamped_ids)
       claim(id, "Clamped boundary ids");
     for (const auto id : parameters.boundary.contact_ids)
@@ -93,8 +89,7 @@ namespace Contact
   // @sect4{ContactProblem::setup_system}
 
   template <int dim>
-  void
-  ContactProblem<dim>::setup_system()
+  void ContactProblem<dim>::setup_system()
   {
     TimerOutput::Scope t(computing_timer, "Setup");
 
@@ -111,27 +106,23 @@ namespace Contact
                                                locally_owned_dofs,
                                                mpi_communicator,
                                                locally_relevant_dofs);
-    for (MatrixType *matrix : {&mass_matrix,
-                               &viscosity_matrix,
-                               &elasticity_matrix,
-                               &system_matrix})
+    for (MatrixType *matrix :
+         {&mass_matrix, &viscosity_matrix, &elasticity_matrix, &system_matrix})
       matrix->reinit(locally_owned_dofs,
                      locally_owned_dofs,
                      dsp,
                      mpi_communicator);
-    for (VectorType *vector : {&displacement,
-                               &velocity,
-                               &old_displacement,
-                               &old_velocity,
-                               &load})
+    for (VectorType &vector : momentum_density)
+      vector.reinit(locally_owned_dofs, mpi_communicator);
+    for (VectorType *vector :
+         {&displacement, &velocity, &old_displacement, &old_velocity, &load})
       vector->reinit(locally_owned_dofs, mpi_communicator);
 
     setup_contact_nodes();
 
-    pcout << "Mesh: " << triangulation.n_global_active_cells()
-          << " cells, Q" << fe.degree << ", " << dof_handler.n_dofs()
-          << " unknowns, " << contact_nodes.size() << " free nodes on Gamma_3"
-          << std::endl;
+    pcout << "Mesh: " << triangulation.n_global_active_cells() << " cells, Q"
+          << fe.degree << ", " << dof_handler.n_dofs() << " unknowns, "
+          << contact_nodes.size() << " free nodes on Gamma_3" << std::endl;
   }
 
 
@@ -142,8 +133,7 @@ namespace Contact
   // Gamma_3 that is not axis-aligned works too. Where Gamma_3 meets the
   // clamp the clamp wins (left_object_wins).
   template <int dim>
-  void
-  ContactProblem<dim>::make_constraints()
+  void ContactProblem<dim>::make_constraints()
   {
     constraints.clear();
     constraints.reinit(locally_relevant_dofs);
@@ -177,13 +167,12 @@ namespace Contact
   // of whose dofs are constrained (where Gamma_3 meets the clamp) has no
   // friction unknown and is left out.
   template <int dim>
-  void
-  ContactProblem<dim>::setup_contact_nodes()
+  void ContactProblem<dim>::setup_contact_nodes()
   {
     const std::set<types::boundary_id> contact_ids(
       parameters.boundary.contact_ids.begin(),
       parameters.boundary.contact_ids.end());
-    FEFaceValues<dim> fe_face_values(mapping,
+    FEFaceValues<dim>                    fe_face_values(mapping,
                                      fe,
                                      face_quadrature,
                                      update_values | update_normal_vectors |
@@ -226,8 +215,8 @@ namespace Contact
                         fe_face_values.shape_value_component(i, q, 0) *
                         fe_face_values.JxW(q);
                       node.weight += phi_JxW;
-                      node.normal += fe_face_values.normal_vector(q) *
-                                     std::abs(phi_JxW);
+                      node.normal +=
+                        fe_face_values.normal_vector(q) * std::abs(phi_JxW);
                     }
                 }
             }
@@ -263,12 +252,11 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                    \
-  template void ContactProblem<dim>::make_grid();           \
-  template void ContactProblem<dim>::check_boundary_ids()   \
-    const;                                                  \
-  template void ContactProblem<dim>::setup_system();        \
-  template void ContactProblem<dim>::make_constraints();    \
+#define INSTANTIATE(dim)                                         \
+  template void ContactProblem<dim>::make_grid();                \
+  template void ContactProblem<dim>::check_boundary_ids() const; \
+  template void ContactProblem<dim>::setup_system();             \
+  template void ContactProblem<dim>::make_constraints();         \
   template void ContactProblem<dim>::setup_contact_nodes();
 
   INSTANTIATE(2)

@@ -9,8 +9,7 @@
 #include <string>
 #include <sys/wait.h>
 
-int
-main(int argc, char *argv[])
+int main(int argc, char *argv[])
 {
   if (argc != 2)
     {
@@ -25,14 +24,14 @@ main(int argc, char *argv[])
   FILE *pipe = popen(command.c_str(), "r");
   if (pipe == nullptr)
     return 2;
-  std::string             text;
+  std::string            text;
   std::array<char, 4096> buffer;
   while (fgets(buffer.data(), buffer.size(), pipe) != nullptr)
     text += buffer.data();
   const int status = pclose(pipe);
 
   for (std::size_t at = text.find(directory); at != std::string::npos;
-       at         = text.find(directory))
+       at             = text.find(directory))
     text.erase(at, directory.size());
   std::cout << text;
   const bool failed = !WIFEXITED(status) || WEXITSTATUS(status) != 0;
