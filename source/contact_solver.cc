@@ -58,12 +58,22 @@ namespace Contact
     TimerOutput::Scope t(computing_timer, "Delassus operator");
 
     const unsigned int n = contact_nodes.size();
+    friction_force.reinit(n);
+    slip_velocity.reinit(n);
+    for (unsigned int p = 0; p < n; ++p)
+      slip_velocity[p] = tangential_velocity(contact_nodes[p], velocity);
+    // Without friction Gamma_3 only carries the normal constraint: every
+    // node slips freely and nothing is needed beyond the free velocity.
+    node_state.assign(n,
+                      friction_law.is_frictionless() ?
+                        NodeState::slip_positive :
+                        NodeState::stick);
+    if (friction_law.is_frictionless())
+      return;
+
     delassus_columns.resize(n);
     delassus_operator.reinit(n, n);
     active_set_parameter.reinit(n);
-    friction_force.reinit(n);
-    slip_velocity.reinit(n);
-    node_state.assign(n, NodeState::stick);
 
     std::vector<types::global_dof_index> node_dofs(dim);
     Vector<double>                       node_tangent(dim);
@@ -119,9 +129,6 @@ namespace Contact
                            "symmetric (relative asymmetry " +
                            std::to_string(asymmetry / largest) +
                            "): the factorisation of K is inaccurate."));
-
-    for (unsigned int p = 0; p < n; ++p)
-      slip_velocity[p] = tangential_velocity(contact_nodes[p], velocity);
   }
 
 
@@ -149,7 +156,14 @@ namespace Contact
     constraints.distribute(velocity);
 
     StepStatistics statistics;
-    if (!contact_nodes.empty())
+    if (friction_law.is_frictionless())
+      {
+        for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+          slip_velocity[p] = tangential_velocity(contact_nodes[p], velocity);
+        statistics.n_slip        = contact_nodes.size();
+        statistics.max_slip_rate = slip_velocity.linfty_norm();
+      }
+    else if (!contact_nodes.empty())
       {
         Vector<double> free_slip_velocity(contact_nodes.size());
         for (unsigned int p = 0; p < contact_nodes.size(); ++p)

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -20,11 +21,15 @@ namespace Contact
   {
     const char *usage =
       "Usage: contact [--set 'Section/Entry=value']... scene.prm\n"
+      "       contact --print-parameters\n"
       "  --set overrides an entry of the .prm file, e.g.\n"
-      "  --set 'Friction/Friction bound S=2.5'";
+      "  --set 'Friction/Friction bound S=2.5'\n"
+      "  --print-parameters prints every entry with its default, range and "
+      "documentation";
 
     struct CommandLine
     {
+      bool                                             print_parameters = false;
       std::string                                      parameter_file;
       std::vector<std::pair<std::string, std::string>> overrides;
     };
@@ -35,7 +40,9 @@ namespace Contact
       for (int i = 1; i < argc; ++i)
         {
           const std::string argument = argv[i];
-          if (argument == "--set" && i + 1 < argc)
+          if (argument == "--print-parameters")
+            command_line.print_parameters = true;
+          else if (argument == "--set" && i + 1 < argc)
             {
               const std::string assignment = argv[++i];
               const auto        equal      = assignment.find('=');
@@ -57,9 +64,9 @@ namespace Contact
               command_line.parameter_file = argument;
             }
         }
-      AssertThrow(!command_line.parameter_file.empty(),
-                  ExcMessage(std::string("No parameter file given.\n") +
-                             usage));
+      AssertThrow(
+        command_line.print_parameters || !command_line.parameter_file.empty(),
+        ExcMessage(std::string("No parameter file given.\n") + usage));
       return command_line;
     }
 
@@ -150,11 +157,18 @@ namespace Contact
 
   void run_from_command_line(const int argc, const char *const *argv)
   {
-    const CommandLine  command_line = read_command_line(argc, argv);
-    const unsigned int dimension    = read_dimension(command_line);
-
-    ParameterHandler prm;
+    const CommandLine command_line = read_command_line(argc, argv);
+    ParameterHandler  prm;
     Parameters::declare_parameters(prm);
+    if (command_line.print_parameters)
+      {
+        prm.print_parameters(std::cout,
+                             ParameterHandler::PRM |
+                               ParameterHandler::KeepDeclarationOrder);
+        return;
+      }
+
+    const unsigned int dimension = read_dimension(command_line);
     parse_parameter_file(prm, command_line.parameter_file, false);
     for (const auto &[path, value] : command_line.overrides)
       apply_override(prm, path, value);
