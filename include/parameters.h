@@ -52,6 +52,14 @@ namespace Contact
     double viscosity_mu2;
     bool   plane_stress;
 
+    /** 2G = E/(1 + kappa) of the elasticity tensor B. */
+    double two_G() const;
+    /**
+     * lambda = E kappa/((1 + kappa)(1 - 2 kappa)) of B (the paper's formula,
+     * plane strain in 2D), or 2 lambda G/(lambda + 2G) for plane stress.
+     */
+    double lambda(const unsigned int dim) const;
+
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);
   };

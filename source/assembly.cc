@@ -27,15 +27,11 @@ namespace Contact
     TimerOutput::Scope t(computing_timer, "Assembly");
 
     const auto  &material = parameters.material;
-    const double E        = material.youngs_modulus;
-    const double kappa    = material.poisson_ratio;
-    const double two_G    = E / (1. + kappa);
-    double       lambda   = E * kappa / ((1. + kappa) * (1. - 2. * kappa));
-    if (dim == 2 && material.plane_stress)
-      lambda = 2. * lambda * (two_G / 2.) / (lambda + two_G);
-    const double rho = material.density;
-    const double mu1 = material.viscosity_mu1;
-    const double mu2 = material.viscosity_mu2;
+    const double two_G    = material.two_G();
+    const double lambda   = material.lambda(dim);
+    const double rho      = material.density;
+    const double mu1      = material.viscosity_mu1;
+    const double mu2      = material.viscosity_mu2;
 
     FEValues<dim>                        fe_values(mapping,
                             fe,

@@ -38,7 +38,7 @@ namespace Contact
         time_series.open(directory + "/time_series.csv");
         time_series
           << "step,time,convexification_iterations,active_set_iterations,"
-             "rejected_accelerations,n_stick,n_slip,max_slip_rate,friction_force,"
+             "rejected_accelerations,active_set_cycles,n_stick,n_slip,max_slip_rate,friction_force,"
              "kinetic_energy,elastic_energy,external_work,viscous_dissipation,"
              "friction_dissipation,numerical_dissipation,energy_residual,momentum_x,"
              "momentum_y"
@@ -61,11 +61,12 @@ namespace Contact
                 << statistics.convexification_iterations << ','
                 << statistics.active_set_iterations << ','
                 << statistics.rejected_accelerations << ','
-                << statistics.n_stick << ',' << statistics.n_slip << ','
-                << statistics.max_slip_rate << ',' << statistics.friction_force
-                << ',' << energy.kinetic << ',' << energy.elastic << ','
-                << energy.external_work << ',' << energy.viscous_dissipation
-                << ',' << energy.friction_dissipation << ','
+                << statistics.cycles_cured << ',' << statistics.n_stick << ','
+                << statistics.n_slip << ',' << statistics.max_slip_rate << ','
+                << statistics.friction_force << ',' << energy.kinetic << ','
+                << energy.elastic << ',' << energy.external_work << ','
+                << energy.viscous_dissipation << ','
+                << energy.friction_dissipation << ','
                 << energy.numerical_dissipation << ',' << energy.residual();
     const Tensor<1, dim> p = momentum();
     for (unsigned int d = 0; d < dim; ++d)
@@ -105,13 +106,10 @@ namespace Contact
       }
     traction.compress(VectorOperation::insert);
 
-    const auto  &material = parameters.material;
-    const double E = material.youngs_modulus, kappa = material.poisson_ratio;
-    const double two_G  = E / (1. + kappa);
-    double       lambda = E * kappa / ((1. + kappa) * (1. - 2. * kappa));
-    if (dim == 2 && material.plane_stress)
-      lambda = 2. * lambda * (two_G / 2.) / (lambda + two_G);
-    const bool plane_strain = (dim == 2 && !material.plane_stress);
+    const auto  &material     = parameters.material;
+    const double two_G        = material.two_G();
+    const double lambda       = material.lambda(dim);
+    const bool   plane_strain = (dim == 2 && !material.plane_stress);
 
     const unsigned int               n_cells = triangulation.n_active_cells();
     std::vector<Vector<double>>      stress(dim * (dim + 1) / 2,

@@ -224,6 +224,22 @@ namespace Contact
   }
 
 
+  double MaterialParameters::two_G() const
+  {
+    return youngs_modulus / (1. + poisson_ratio);
+  }
+
+  double MaterialParameters::lambda(const unsigned int dim) const
+  {
+    const double kappa = poisson_ratio;
+    const double lambda_3d =
+      youngs_modulus * kappa / ((1. + kappa) * (1. - 2. * kappa));
+    if (dim == 2 && plane_stress)
+      return 2. * lambda_3d * (two_G() / 2.) / (lambda_3d + two_G());
+    return lambda_3d;
+  }
+
+
   // @sect3{Loads and initial values}
 
   void LoadParameters::declare_parameters(ParameterHandler &prm)
