@@ -79,11 +79,24 @@ namespace Contact
     {
       const std::vector<std::string> names =
         Utilities::split_string_list(path, '/');
-      for (unsigned int i = 0; i + 1 < names.size(); ++i)
-        prm.enter_subsection(names[i]);
-      prm.set(names.back(), value);
-      for (unsigned int i = 0; i + 1 < names.size(); ++i)
-        prm.leave_subsection();
+      try
+        {
+          for (unsigned int i = 0; i + 1 < names.size(); ++i)
+            prm.enter_subsection(names[i]);
+          prm.set(names.back(), value);
+          for (unsigned int i = 0; i + 1 < names.size(); ++i)
+            prm.leave_subsection();
+        }
+      catch (const ExceptionBase &exc)
+        {
+          std::ostringstream reason;
+          exc.print_info(reason);
+          AssertThrow(false,
+                      ExcMessage("--set '" + path + "=" + value +
+                                 "': " + Utilities::trim(reason.str()) +
+                                 " (contact --print-parameters lists every "
+                                 "entry with its allowed values)"));
+        }
     }
 
     // Parses a .prm file in which 'include other.prm' (at the top level,
