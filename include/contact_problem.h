@@ -11,6 +11,7 @@
  *   assembly.cc         matrices, loads, initial values, energies
  *   contact_solver.cc   factorisation, Delassus operator, convexification
  *   output.cc           VTU/PVD, time_series.csv, console
+ *   verification.cc     errors against a manufactured solution
  * Each file instantiates its own members for dim = 2 and 3.
  */
 #ifndef contact_contact_problem_h
@@ -39,6 +40,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <friction.h>
+#include <manufactured_solution.h>
 #include <parameters.h>
 
 #include <array>
@@ -117,13 +119,35 @@ namespace Contact
   };
 
 
+  /** The errors of (5.26): ||eps(u - u_h)|| (the V-norm), ||w - w_h||
+   *  and ||u - u_h|| in L2. */
+  struct ErrorNorms
+  {
+    double displacement_V  = 0;
+    double velocity_L2     = 0;
+    double displacement_L2 = 0;
+  };
+
+  /** What a whole run gives a convergence study. */
+  struct RunSummary
+  {
+    double                  cell_size = 0;
+    double                  time_step = 0;
+    unsigned int            n_steps   = 0;
+    types::global_dof_index n_dofs    = 0;
+    double                  wall_time = 0;
+    /** Largest error over the steps 1..N, with a manufactured solution. */
+    ErrorNorms max_errors;
+  };
+
+
   template <int dim>
   class ContactProblem
   {
   public:
     explicit ContactProblem(const Parameters &parameters);
 
-    void run();
+    RunSummary run();
 
   private:
     // setup.cc
@@ -150,6 +174,10 @@ namespace Contact
     double tangential_velocity(const ContactNode<dim> &node,
                                const VectorType       &w) const;
 
+    // verification.cc
+    void       check_manufactured_setup() const;
+    ErrorNorms compute_errors() const;
+
     // output.cc
     void prepare_output_directory();
     void write_vtu();
@@ -174,6 +202,9 @@ namespace Contact
     std::unique_ptr<FunctionParser<dim>> initial_velocity;
     std::map<types::boundary_id, std::unique_ptr<FunctionParser<dim>>>
       tractions;
+    // With 'Verification/Manufactured solution', the exact solution that
+    // replaces the load data above.
+    std::unique_ptr<const ManufacturedSolution<dim>> exact_solution;
 
     // Mesh and finite element space. The scalar space of the same degree
     // carries the Gamma_3 quantities (slip rate, status) for output.
@@ -231,6 +262,8 @@ namespace Contact
     std::vector<double>                         pending_report_times;
     StepStatistics                              totals;
     double                                      max_relative_energy_residual;
+    ErrorNorms                                  current_errors;
+    ErrorNorms                                  max_errors;
     Timer                                       run_timer;
   };
 } // namespace Contact

@@ -114,6 +114,32 @@ namespace Contact
     void        parse_parameters(ParameterHandler &prm);
   };
 
+  struct VerificationParameters
+  {
+    /** Replace loads and initial values by those of ManufacturedSolution. */
+    bool   manufactured_solution;
+    double amplitude;
+
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
+  };
+
+  struct ConvergenceStudyParameters
+  {
+    enum class Refine
+    {
+      space_and_time,
+      space,
+      time
+    };
+    /** 0: one run; n: n + 1 runs, each halving h and/or k. */
+    unsigned int levels;
+    Refine       refine;
+
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
+  };
+
   struct OutputParameters
   {
     std::string         directory;
@@ -129,15 +155,17 @@ namespace Contact
 
   struct Parameters
   {
-    unsigned int       dimension;
-    GeometryParameters geometry;
-    BoundaryParameters boundary;
-    MaterialParameters material;
-    LoadParameters     loads;
-    FrictionParameters friction;
-    TimeParameters     time;
-    SolverParameters   solver;
-    OutputParameters   output;
+    unsigned int               dimension;
+    GeometryParameters         geometry;
+    BoundaryParameters         boundary;
+    MaterialParameters         material;
+    LoadParameters             loads;
+    FrictionParameters         friction;
+    TimeParameters             time;
+    SolverParameters           solver;
+    VerificationParameters     verification;
+    ConvergenceStudyParameters convergence_study;
+    OutputParameters           output;
 
     /** The .prm text of all entries as they were used, for the results. */
     std::string used_parameters;

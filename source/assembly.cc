@@ -8,6 +8,8 @@
 
 #include <contact_problem.h>
 
+#include <algorithm>
+
 namespace Contact
 {
   // @sect4{ContactProblem::assemble_matrices}
@@ -111,7 +113,10 @@ namespace Contact
   // @sect4{ContactProblem::assemble_load}
 
   // F_n = f(t_n) of (5.2): the body force f_0 in Omega and the tractions
-  // f_2 on Gamma_2, condensed with the constraints like the matrices.
+  // f_2 on Gamma_2, condensed with the constraints like the matrices. With
+  // a manufactured solution they come from it (f_2 = sigma n on every side
+  // that is neither clamped nor in contact), and its tangential load f_3 on
+  // Gamma_3 is added with the nodal weights m_p of the friction term.
   template <int dim>
   void ContactProblem<dim>::assemble_load(const double time,
                                           VectorType  &load_vector) const
@@ -131,25 +136,50 @@ namespace Contact
                                      fe,
                                      face_quadrature,
                                      update_values | update_quadrature_points |
+                                       update_normal_vectors |
                                        update_JxW_values);
     const FEValuesExtractors::Vector     displacements(0);
     const unsigned int                   n_dofs = fe.n_dofs_per_cell();
     Vector<double>                       cell_rhs(n_dofs);
-    Vector<double>                       force(dim);
+    Vector<double>                       value(dim);
     std::vector<types::global_dof_index> dof_indices(n_dofs);
 
     const auto add_force = [&](const FEValuesBase<dim> &values,
-                               const Function<dim>     &function) {
+                               const auto              &force_at) {
       for (const unsigned int q : values.quadrature_point_indices())
         {
-          function.vector_value(values.quadrature_point(q), force);
-          Tensor<1, dim> f;
-          for (unsigned int d = 0; d < dim; ++d)
-            f[d] = force[d];
+          const Tensor<1, dim> f = force_at(q);
           for (unsigned int i = 0; i < n_dofs; ++i)
             cell_rhs(i) +=
               values[displacements].value(i, q) * f * values.JxW(q);
         }
+    };
+    const auto parsed = [&](const FEValuesBase<dim> &values,
+                            const Function<dim>     &function) {
+      return [&](const unsigned int q) {
+        function.vector_value(values.quadrature_point(q), value);
+        Tensor<1, dim> f;
+        for (unsigned int d = 0; d < dim; ++d)
+          f[d] = value[d];
+        return f;
+      };
+    };
+    const auto exact_body_force = [&](const unsigned int q) {
+      return exact_solution->body_force(fe_values.quadrature_point(q), time);
+    };
+    const auto exact_traction = [&](const unsigned int q) {
+      return exact_solution->stress(fe_face_values.quadrature_point(q), time) *
+             fe_face_values.normal_vector(q);
+    };
+    const auto is_free_side = [&](const types::boundary_id id) {
+      const auto &boundary = parameters.boundary;
+      return std::count(boundary.clamped_ids.begin(),
+                        boundary.clamped_ids.end(),
+                        id) +
+               std::count(boundary.contact_ids.begin(),
+                          boundary.contact_ids.end(),
+                          id) ==
+             0;
     };
 
     load_vector = 0;
@@ -158,39 +188,79 @@ namespace Contact
         {
           cell_rhs = 0;
           fe_values.reinit(cell);
-          add_force(fe_values, *body_force);
+          if (exact_solution)
+            add_force(fe_values, exact_body_force);
+          else
+            add_force(fe_values, parsed(fe_values, *body_force));
           for (const unsigned int f : cell->face_indices())
             if (cell->face(f)->at_boundary())
               {
-                const auto traction =
-                  tractions.find(cell->face(f)->boundary_id());
-                if (traction == tractions.end())
-                  continue;
-                fe_face_values.reinit(cell, f);
-                add_force(fe_face_values, *traction->second);
+                const types::boundary_id id = cell->face(f)->boundary_id();
+                if (exact_solution && is_free_side(id))
+                  {
+                    fe_face_values.reinit(cell, f);
+                    add_force(fe_face_values, exact_traction);
+                  }
+                else if (!exact_solution && tractions.count(id) != 0)
+                  {
+                    fe_face_values.reinit(cell, f);
+                    add_force(fe_face_values,
+                              parsed(fe_face_values, *tractions.at(id)));
+                  }
               }
           cell->get_dof_indices(dof_indices);
           constraints.distribute_local_to_global(cell_rhs,
                                                  dof_indices,
                                                  load_vector);
         }
+
+    if (exact_solution)
+      {
+        std::vector<types::global_dof_index> node_dofs(dim);
+        Vector<double>                       node_load(dim);
+        for (const ContactNode<dim> &node : contact_nodes)
+          {
+            const double f3 = exact_solution->contact_load(node.location,
+                                                           node.normal,
+                                                           node.tangent,
+                                                           time);
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                node_dofs[d] = node.dofs[d];
+                node_load[d] = node.weight * f3 * node.tangent[d];
+              }
+            constraints.distribute_local_to_global(node_load,
+                                                   node_dofs,
+                                                   load_vector);
+          }
+      }
     load_vector.compress(VectorOperation::add);
   }
 
 
   // @sect4{ContactProblem::set_initial_values}
 
-  // u_0 and w_0 = u_1 interpolated at the nodes, then made to satisfy the
-  // constraints of V_h (the clamp and w.n = 0 on Gamma_3).
+  // u_0 and w_0 = u_1 (of the .prm or of the manufactured solution)
+  // interpolated at the nodes, then made to satisfy the constraints of V_h
+  // (the clamp and w.n = 0 on Gamma_3).
   template <int dim>
   void ContactProblem<dim>::set_initial_values()
   {
-    VectorTools::interpolate(mapping,
-                             dof_handler,
-                             *initial_displacement,
-                             displacement);
+    const Function<dim>           *u0 = initial_displacement.get();
+    const Function<dim>           *u1 = initial_velocity.get();
+    std::unique_ptr<Function<dim>> exact_u0, exact_u1;
+    if (exact_solution)
+      {
+        exact_u0 = std::make_unique<typename ManufacturedSolution<dim>::Field>(
+          *exact_solution, false);
+        exact_u1 = std::make_unique<typename ManufacturedSolution<dim>::Field>(
+          *exact_solution, true);
+        u0 = exact_u0.get();
+        u1 = exact_u1.get();
+      }
+    VectorTools::interpolate(mapping, dof_handler, *u0, displacement);
     constraints.distribute(displacement);
-    VectorTools::interpolate(mapping, dof_handler, *initial_velocity, velocity);
+    VectorTools::interpolate(mapping, dof_handler, *u1, velocity);
     constraints.distribute(velocity);
     old_displacement = displacement;
     old_velocity     = velocity;

@@ -64,16 +64,20 @@ namespace Contact
           ")",
         expression,
         true);
+    if (parameters.verification.manufactured_solution)
+      exact_solution = std::make_unique<ManufacturedSolution<dim>>(parameters);
   }
 
 
   // @sect4{ContactProblem::run}
 
   template <int dim>
-  void ContactProblem<dim>::run()
+  RunSummary ContactProblem<dim>::run()
   {
     run_timer.restart();
     make_grid();
+    if (exact_solution)
+      check_manufactured_setup();
     setup_system();
     assemble_matrices();
     set_initial_values();
@@ -81,6 +85,8 @@ namespace Contact
     build_delassus_operator();
     prepare_output_directory();
 
+    if (exact_solution)
+      current_errors = compute_errors();
     write_time_series_row(StepStatistics());
     const unsigned int vtu_interval = parameters.output.vtu_interval;
     if (vtu_interval > 0)
@@ -97,6 +103,18 @@ namespace Contact
                      std::max(energy.scale(),
                               std::numeric_limits<double>::min()));
 
+        if (exact_solution)
+          {
+            current_errors            = compute_errors();
+            max_errors.displacement_V = std::max(max_errors.displacement_V,
+                                                 current_errors.displacement_V);
+            max_errors.velocity_L2 =
+              std::max(max_errors.velocity_L2, current_errors.velocity_L2);
+            max_errors.displacement_L2 =
+              std::max(max_errors.displacement_L2,
+                       current_errors.displacement_L2);
+          }
+
         totals.convexification_iterations +=
           statistics.convexification_iterations;
         totals.active_set_iterations += statistics.active_set_iterations;
@@ -111,6 +129,15 @@ namespace Contact
       }
     step_number = n_time_steps;
     print_summary();
+
+    RunSummary summary;
+    summary.cell_size  = parameters.geometry.cell_size;
+    summary.time_step  = time_step;
+    summary.n_steps    = n_time_steps;
+    summary.n_dofs     = dof_handler.n_dofs();
+    summary.wall_time  = run_timer.wall_time();
+    summary.max_errors = max_errors;
+    return summary;
   }
 
 

@@ -42,7 +42,8 @@ namespace Contact
              "kinetic_energy,elastic_energy,external_work,viscous_dissipation,"
              "friction_dissipation,numerical_dissipation,energy_residual,momentum_x,"
              "momentum_y"
-          << (dim == 3 ? ",momentum_z\n" : "\n");
+          << (dim == 3 ? ",momentum_z" : "")
+          << (exact_solution ? ",error_V,error_w_L2,error_u_L2\n" : "\n");
       }
   }
 
@@ -71,6 +72,12 @@ namespace Contact
     const Tensor<1, dim> p = momentum();
     for (unsigned int d = 0; d < dim; ++d)
       time_series << ',' << p[d];
+    if (exact_solution)
+      {
+        time_series << ',' << current_errors.displacement_V << ','
+                    << current_errors.velocity_L2 << ','
+                    << current_errors.displacement_L2;
+      }
     time_series << std::endl;
   }
 
@@ -302,6 +309,11 @@ namespace Contact
           << (max_relative_energy_residual < 1e-8 ? " (below 1e-8)" :
                                                     " (ABOVE 1e-8)")
           << std::endl;
+    if (exact_solution)
+      pcout << "Errors, largest over the steps: ||eps(u - u_h)|| "
+            << std::setprecision(6) << max_errors.displacement_V
+            << ", ||w - w_h|| " << max_errors.velocity_L2 << ", ||u - u_h|| "
+            << max_errors.displacement_L2 << std::endl;
     if (parameters.output.print_timings)
       {
         pcout << "Wall time: " << std::setprecision(4) << run_timer.wall_time()

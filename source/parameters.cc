@@ -436,6 +436,78 @@ namespace Contact
   }
 
 
+  // @sect3{Verification}
+
+  void VerificationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Verification");
+    {
+      prm.declare_entry(
+        "Manufactured solution",
+        "none",
+        Patterns::Selection("none|slip front"),
+        "slip front: solve for the exact solution of ManufacturedSolution "
+        "(a stick zone x < 1/2 and a slip zone x > 1/2 on Gamma_3 = {y = 0}, "
+        "Gamma_1 = {x = 0}); body force, tractions of all sides but Gamma_1 "
+        "and Gamma_3, a tangential load on Gamma_3 and the initial values are "
+        "then computed from it (the entries for them are ignored), and the "
+        "errors are reported.");
+      prm.declare_entry("Amplitude",
+                        "0.1",
+                        Patterns::Double(0),
+                        "A in u = A (t + t^2/2) U(x) [m/s]; the slip rate on "
+                        "Gamma_3 reaches A (1 + t)/8.");
+    }
+    prm.leave_subsection();
+  }
+
+  void VerificationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Verification");
+    {
+      manufactured_solution = (prm.get("Manufactured solution") != "none");
+      amplitude             = prm.get_double("Amplitude");
+    }
+    prm.leave_subsection();
+  }
+
+
+  // @sect3{Convergence study}
+
+  void ConvergenceStudyParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Convergence study");
+    {
+      prm.declare_entry(
+        "Levels",
+        "0",
+        Patterns::Integer(0, 12),
+        "0: one run. n > 0: n + 1 runs, starting from Geometry/Cell size and "
+        "Time/Time step and halving what 'Refine' says from one run to the "
+        "next; a table of the errors (with a manufactured solution) and "
+        "their rates is printed at the end.");
+      prm.declare_entry("Refine",
+                        "space and time",
+                        Patterns::Selection("space and time|space|time"),
+                        "What is halved from one level to the next.");
+    }
+    prm.leave_subsection();
+  }
+
+  void ConvergenceStudyParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Convergence study");
+    {
+      levels                   = prm.get_integer("Levels");
+      const std::string choice = prm.get("Refine");
+      refine                   = (choice == "space" ? Refine::space :
+                                  choice == "time"  ? Refine::time :
+                                                      Refine::space_and_time);
+    }
+    prm.leave_subsection();
+  }
+
+
   // @sect3{Output}
 
   void OutputParameters::declare_parameters(ParameterHandler &prm)
@@ -510,6 +582,8 @@ namespace Contact
     FrictionParameters::declare_parameters(prm);
     TimeParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);
+    VerificationParameters::declare_parameters(prm);
+    ConvergenceStudyParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
   }
 
@@ -523,6 +597,8 @@ namespace Contact
     friction.parse_parameters(prm);
     time.parse_parameters(prm);
     solver.parse_parameters(prm);
+    verification.parse_parameters(prm);
+    convergence_study.parse_parameters(prm);
     output.parse_parameters(prm);
 
     std::ostringstream text;

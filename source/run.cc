@@ -2,13 +2,16 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/convergence_table.h>
 #include <deal.II/base/utilities.h>
 
 #include <contact_problem.h>
 #include <run.h>
 
 #include <filesystem>
+#include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -165,6 +168,102 @@ namespace Contact
           prm.set(path, value);
       return prm.get_integer("Dimension");
     }
+
+    // @sect4{The convergence study}
+
+    // Runs the scene 'Convergence study/Levels' + 1 times, halving h, k or
+    // both from one run to the next (each run in its own subdirectory, with
+    // its own parameters.prm), and prints the table of the largest errors
+    // over the steps with their rates log2(e_{l-1}/e_l). Convergence of the
+    // scheme is O(h + k) in the V-norm, Corollary 5.3 (5.26).
+    void run_convergence_study(ParameterHandler &prm, const Parameters &base)
+    {
+      using Refine                  = ConvergenceStudyParameters::Refine;
+      const auto             &study = base.convergence_study;
+      ConvergenceTable        table;
+      std::vector<ErrorNorms> errors;
+      for (unsigned int level = 0; level <= study.levels; ++level)
+        {
+          const double       factor = std::pow(0.5, level);
+          std::ostringstream h, k;
+          h << std::setprecision(17)
+            << base.geometry.cell_size *
+                 (study.refine == Refine::time ? 1. : factor);
+          k << std::setprecision(17)
+            << base.time.time_step *
+                 (study.refine == Refine::space ? 1. : factor);
+          apply_override(prm, "Geometry/Cell size", h.str());
+          apply_override(prm, "Time/Time step", k.str());
+          apply_override(prm,
+                         "Output/Output directory",
+                         base.output.directory + "/level-" +
+                           std::to_string(level));
+          apply_override(prm, "Convergence study/Levels", "0");
+          Parameters parameters;
+          parameters.parse_parameters(prm);
+
+          std::cout << "Convergence study, level " << level
+                    << ": h = " << h.str() << ", k = " << k.str() << std::endl;
+          const RunSummary run =
+            (base.dimension == 2 ? ContactProblem<2>(parameters).run() :
+                                   ContactProblem<3>(parameters).run());
+          errors.push_back(run.max_errors);
+          table.add_value("level", level);
+          table.add_value("h", run.cell_size);
+          table.add_value("k", run.time_step);
+          table.add_value("unknowns", run.n_dofs);
+          table.add_value("steps", run.n_steps);
+          if (base.verification.manufactured_solution)
+            {
+              table.add_value("max |eps(u-u_h)|",
+                              run.max_errors.displacement_V);
+              table.add_value("max |w-w_h|", run.max_errors.velocity_L2);
+              table.add_value("max |u-u_h|", run.max_errors.displacement_L2);
+            }
+          if (base.output.print_timings)
+            table.add_value("wall time [s]", run.wall_time);
+        }
+
+      for (const std::string column : {"h", "k"})
+        table.set_scientific(column, true);
+      if (base.verification.manufactured_solution)
+        for (const std::string column :
+             {"max |eps(u-u_h)|", "max |w-w_h|", "max |u-u_h|"})
+          {
+            table.set_precision(column, 4);
+            table.set_scientific(column, true);
+            table.evaluate_convergence_rates(
+              column, ConvergenceTable::reduction_rate_log2);
+          }
+      std::cout << std::endl
+                << "Convergence study (refining "
+                << (study.refine == Refine::space ? "h" :
+                    study.refine == Refine::time  ? "k" :
+                                                    "h and k")
+                << "; rates log2(e_{l-1}/e_l)):" << std::endl;
+      table.write_text(std::cout,
+                       TableHandler::TextOutputFormat::org_mode_table);
+      if (base.verification.manufactured_solution && study.levels > 0)
+        {
+          const auto last_rate = [&](const ErrorNorms &coarse,
+                                     const ErrorNorms &fine,
+                                     double ErrorNorms::*norm) {
+            return std::log2(coarse.*norm / fine.*norm);
+          };
+          const ErrorNorms &coarse = errors[errors.size() - 2];
+          const ErrorNorms &fine   = errors.back();
+          std::cout << "Rates between the two finest levels: V-norm "
+                    << std::fixed << std::setprecision(2)
+                    << last_rate(coarse, fine, &ErrorNorms::displacement_V)
+                    << ", velocity L2 "
+                    << last_rate(coarse, fine, &ErrorNorms::velocity_L2)
+                    << ", displacement L2 "
+                    << last_rate(coarse, fine, &ErrorNorms::displacement_L2)
+                    << std::defaultfloat << std::endl;
+        }
+      std::ofstream file(base.output.directory + "/convergence.txt");
+      table.write_text(file, TableHandler::TextOutputFormat::org_mode_table);
+    }
   } // namespace
 
 
@@ -190,7 +289,9 @@ namespace Contact
     parameters.parse_parameters(prm);
     AssertThrow(parameters.dimension == dimension, ExcInternalError());
 
-    if (dimension == 2)
+    if (parameters.convergence_study.levels > 0)
+      run_convergence_study(prm, parameters);
+    else if (dimension == 2)
       ContactProblem<2>(parameters).run();
     else
       ContactProblem<3>(parameters).run();
