@@ -45,6 +45,7 @@
 
 #include <array>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -148,6 +149,23 @@ namespace Contact
     explicit ContactProblem(const Parameters &parameters);
 
     RunSummary run();
+
+    /**
+     * Called at the end of every time step with the problem itself; a
+     * convergence study uses it to collect solutions at common times.
+     */
+    void set_step_observer(
+      const std::function<void(const ContactProblem<dim> &)> &observer);
+
+    unsigned int           get_step_number() const;
+    const DoFHandler<dim> &get_dof_handler() const;
+    const VectorType      &get_displacement() const;
+    const VectorType      &get_velocity() const;
+
+    /** ||eps(v)|| (the paper's V-norm) and ||v|| in L2 of a field on this
+     *  problem's mesh. */
+    double strain_norm(const VectorType &v) const;
+    double l2_norm(const VectorType &v) const;
 
   private:
     // setup.cc
@@ -264,7 +282,8 @@ namespace Contact
     double                                      max_relative_energy_residual;
     ErrorNorms                                  current_errors;
     ErrorNorms                                  max_errors;
-    Timer                                       run_timer;
+    std::function<void(const ContactProblem<dim> &)> step_observer;
+    Timer                                            run_timer;
   };
 } // namespace Contact
 

@@ -126,6 +126,8 @@ namespace Contact
           write_vtu();
         print_progress(statistics);
         report_contact_state();
+        if (step_observer)
+          step_observer(*this);
       }
     step_number = n_time_steps;
     print_summary();
@@ -138,6 +140,38 @@ namespace Contact
     summary.wall_time  = run_timer.wall_time();
     summary.max_errors = max_errors;
     return summary;
+  }
+
+
+  template <int dim>
+  void ContactProblem<dim>::set_step_observer(
+    const std::function<void(const ContactProblem<dim> &)> &observer)
+  {
+    step_observer = observer;
+  }
+
+  template <int dim>
+  unsigned int ContactProblem<dim>::get_step_number() const
+  {
+    return step_number;
+  }
+
+  template <int dim>
+  const DoFHandler<dim> &ContactProblem<dim>::get_dof_handler() const
+  {
+    return dof_handler;
+  }
+
+  template <int dim>
+  const VectorType &ContactProblem<dim>::get_displacement() const
+  {
+    return displacement;
+  }
+
+  template <int dim>
+  const VectorType &ContactProblem<dim>::get_velocity() const
+  {
+    return velocity;
   }
 
 

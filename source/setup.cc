@@ -27,7 +27,10 @@ namespace Contact
   // The box of the .prm, colorized so that its faces carry the boundary
   // ids 0 (x = x0), 1 (x = x1), 2 (y = y0), 3 (y = y1), 4, 5 (z). Every edge
   // is divided into round(length / h) parts, as the paper divides its
-  // boundary "into 1/h equal parts".
+  // boundary "into 1/h equal parts". The mesh is built as the coarsest box
+  // that refines globally into this one: the same cells, but meshes of a
+  // convergence study then share their coarse mesh, which is what
+  // interpolate_to_different_mesh needs, and p4est gets few trees.
   template <int dim>
   void ContactProblem<dim>::make_grid()
   {
@@ -41,8 +44,18 @@ namespace Contact
         subdivisions[d] =
           std::max(1., std::round((upper[d] - lower[d]) / geometry.cell_size));
       }
+    unsigned int n_refinements = 0;
+    while (std::all_of(subdivisions.begin(),
+                       subdivisions.end(),
+                       [](const unsigned int n) { return n % 2 == 0; }))
+      {
+        for (unsigned int &n : subdivisions)
+          n /= 2;
+        ++n_refinements;
+      }
     GridGenerator::subdivided_hyper_rectangle(
       triangulation, subdivisions, lower, upper, /*colorize=*/true);
+    triangulation.refine_global(n_refinements);
     check_boundary_ids();
   }
 
