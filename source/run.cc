@@ -330,7 +330,7 @@ namespace Contact
                                                     "h and k")
                 << "; rates log2(e_{l-1}/e_l)";
       if (!exact)
-        std::cout << "; reference: level " << L
+        std::cout << "; reference: level " << L << std::setprecision(6)
                   << ", h = " << results[L].run.cell_size
                   << ", k = " << results[L].run.time_step << ", "
                   << results[L].run.n_dofs << " unknowns";
