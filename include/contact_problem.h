@@ -162,10 +162,8 @@ namespace Contact
     const VectorType      &get_displacement() const;
     const VectorType      &get_velocity() const;
 
-    /** ||eps(v)|| (the paper's V-norm) and ||v|| in L2 of a field on this
-     *  problem's mesh. */
+    /** ||eps(v)||, the paper's V-norm, of a field on this problem's mesh. */
     double strain_norm(const VectorType &v) const;
-    double l2_norm(const VectorType &v) const;
 
   private:
     // setup.cc

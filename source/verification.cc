@@ -96,7 +96,7 @@ namespace Contact
   }
 
 
-  // @sect4{ContactProblem::strain_norm, ContactProblem::l2_norm}
+  // @sect4{ContactProblem::strain_norm}
 
   // Norms of a field of this problem's finite element space, such as the
   // difference of two solutions interpolated onto this mesh; the Gauss rule
@@ -122,33 +122,11 @@ namespace Contact
     return std::sqrt(Utilities::MPI::sum(sum, mpi_communicator));
   }
 
-  template <int dim>
-  double ContactProblem<dim>::l2_norm(const VectorType &v) const
-  {
-    FEValues<dim>                    fe_values(mapping,
-                            fe,
-                            quadrature,
-                            update_values | update_JxW_values);
-    const FEValuesExtractors::Vector displacements(0);
-    std::vector<Tensor<1, dim>>      values(quadrature.size());
-    double                           sum = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          fe_values[displacements].get_function_values(v, values);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            sum += values[q].norm_square() * fe_values.JxW(q);
-        }
-    return std::sqrt(Utilities::MPI::sum(sum, mpi_communicator));
-  }
 
-
-#define INSTANTIATE(dim)                                                      \
-  template void       ContactProblem<dim>::check_manufactured_setup() const;  \
-  template ErrorNorms ContactProblem<dim>::compute_errors() const;            \
-  template double ContactProblem<dim>::strain_norm(const VectorType &) const; \
-  template double ContactProblem<dim>::l2_norm(const VectorType &) const;
+#define INSTANTIATE(dim)                                                     \
+  template void       ContactProblem<dim>::check_manufactured_setup() const; \
+  template ErrorNorms ContactProblem<dim>::compute_errors() const;           \
+  template double ContactProblem<dim>::strain_norm(const VectorType &) const;
 
   INSTANTIATE(2)
   INSTANTIATE(3)
