@@ -168,6 +168,7 @@ namespace Contact
   private:
     // setup.cc
     void make_grid();
+    void grade_towards_points();
     void check_boundary_ids() const;
     void setup_system();
     void make_constraints();

@@ -27,6 +27,10 @@ namespace Contact
     std::vector<double> upper_corner;
     double              cell_size;
     unsigned int        fe_degree;
+    /** Points towards which the mesh is refined, each of dim coordinates. */
+    std::vector<std::vector<double>> refinement_points;
+    double                           refinement_radius;
+    double                           refinement_grading;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm, const unsigned int dim);

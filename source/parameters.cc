@@ -65,6 +65,25 @@ namespace Contact
                         "1",
                         Patterns::Integer(1, 4),
                         "Polynomial degree of the Lagrange elements Q_p.");
+      prm.declare_entry(
+        "Refinement points",
+        "",
+        Patterns::Anything(),
+        "Points 'x, y[, z]' separated by ';' (a corner where the solution is "
+        "singular) towards which the mesh is graded: within the distance "
+        "r_j = R 2^(-(j-1)/gamma) of a point the cells are refined j more times "
+        "than the global mesh, so that the cell size grows like "
+        "h (r/R)^gamma. The refinement must stay away from Gamma_3.");
+      prm.declare_entry("Refinement radius",
+                        "0",
+                        Patterns::Double(0),
+                        "R [m] of the grading; 0 switches it off.");
+      prm.declare_entry(
+        "Refinement grading",
+        "0.3333333333",
+        Patterns::Double(0.05, 1),
+        "gamma of the grading: for a singularity u ~ r^lambda, gamma = "
+        "1 - lambda restores the rate of smooth solutions.");
     }
     prm.leave_subsection();
   }
@@ -80,6 +99,19 @@ namespace Contact
         Utilities::split_string_list(prm.get("Upper corner")));
       cell_size = prm.get_double("Cell size");
       fe_degree = prm.get_integer("Finite element degree");
+      refinement_points.clear();
+      for (const std::string &point :
+           Utilities::split_string_list(prm.get("Refinement points"), ';'))
+        {
+          refinement_points.push_back(
+            Utilities::string_to_double(Utilities::split_string_list(point)));
+          check_entry(refinement_points.back().size() == dim,
+                      "Geometry/Refinement points",
+                      refinement_points.back().size(),
+                      "points of exactly Dimension coordinates each");
+        }
+      refinement_radius  = prm.get_double("Refinement radius");
+      refinement_grading = prm.get_double("Refinement grading");
     }
     prm.leave_subsection();
 
