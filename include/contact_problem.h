@@ -187,9 +187,11 @@ namespace Contact
     void           build_delassus_operator();
     StepStatistics do_time_step();
     StepStatistics
-           solve_friction_problem(const Vector<double> &free_slip_velocity);
-    double tangential_velocity(const ContactNode<dim> &node,
-                               const VectorType       &w) const;
+    solve_friction_problem(const Vector<double> &free_slip_velocity);
+    std::string convexification_failure(const double residual) const;
+    void        add_contact_state(StepStatistics &statistics) const;
+    double      tangential_velocity(const ContactNode<dim> &node,
+                                    const VectorType       &w) const;
 
     // verification.cc
     void       check_manufactured_setup() const;

@@ -160,8 +160,7 @@ namespace Contact
       {
         for (unsigned int p = 0; p < contact_nodes.size(); ++p)
           slip_velocity[p] = tangential_velocity(contact_nodes[p], velocity);
-        statistics.n_slip        = contact_nodes.size();
-        statistics.max_slip_rate = slip_velocity.linfty_norm();
+        add_contact_state(statistics);
       }
     else if (!contact_nodes.empty())
       {
@@ -297,30 +296,49 @@ namespace Contact
       }
     statistics.convexification_change = residual;
 
-    if (!converged)
-      {
-        const auto        &friction = parameters.friction;
-        std::ostringstream message;
-        message
-          << "The convexification did not converge in step " << step_number
-          << " (t = " << time << ") within "
-          << solver.max_convexification_iterations
-          << " iterations ('Solver/Max convexification iterations'): the "
-          << "slip rates still change by " << residual
-          << " relative to the velocity (tolerance "
-          << solver.convexification_tolerance
-          << ", 'Solver/Convexification tolerance'). It contracts fast when "
-          << "S (a - b) alpha is small against the stiffness of K on "
-          << "Gamma_3; here S = " << friction.bound_S
-          << ", (a - b) alpha = " << friction_law.one_sided_lipschitz_constant()
-          << ", k = " << time_step
-          << ". More iterations, a larger 'Solver/Anderson depth', a smaller "
-          << "'Time/Time step' or a smaller 'Friction/Friction bound S' help.";
-        AssertThrow(false, ExcMessage(message.str()));
-      }
+    AssertThrow(converged, ExcMessage(convexification_failure(residual)));
+    add_contact_state(statistics);
+    return statistics;
+  }
 
+
+  // @sect4{ContactProblem::convexification_failure}
+
+  // What a user needs when the convexification stops without converging:
+  // where, how far from converged, and which data drive it.
+  template <int dim>
+  std::string
+  ContactProblem<dim>::convexification_failure(const double residual) const
+  {
+    const auto        &solver   = parameters.solver;
+    const auto        &friction = parameters.friction;
+    std::ostringstream message;
+    message << "The convexification did not converge in step " << step_number
+            << " (t = " << time << ") within "
+            << solver.max_convexification_iterations
+            << " iterations ('Solver/Max convexification iterations'): the "
+            << "slip rates still change by " << residual
+            << " relative to the velocity (tolerance "
+            << solver.convexification_tolerance
+            << ", 'Solver/Convexification tolerance'). It contracts fast when "
+            << "S (a - b) alpha is small against the stiffness of K on "
+            << "Gamma_3; here S = " << friction.bound_S << ", (a - b) alpha = "
+            << friction_law.one_sided_lipschitz_constant()
+            << ", k = " << time_step
+            << ". More iterations, a larger 'Solver/Anderson depth', a "
+            << "smaller 'Time/Time step' or a smaller 'Friction/Friction bound "
+            << "S' help.";
+    return message.str();
+  }
+
+
+  // @sect4{ContactProblem::add_contact_state}
+
+  template <int dim>
+  void ContactProblem<dim>::add_contact_state(StepStatistics &statistics) const
+  {
     Tensor<1, dim> resultant;
-    for (unsigned int p = 0; p < n; ++p)
+    for (unsigned int p = 0; p < contact_nodes.size(); ++p)
       {
         if (node_state[p] == NodeState::stick)
           ++statistics.n_stick;
@@ -331,7 +349,6 @@ namespace Contact
         resultant += friction_force[p] * contact_nodes[p].tangent;
       }
     statistics.friction_force = resultant.norm();
-    return statistics;
   }
 
 
@@ -341,6 +358,10 @@ namespace Contact
     const ContactNode<dim> &, const VectorType &) const;                  \
   template void           ContactProblem<dim>::build_delassus_operator(); \
   template StepStatistics ContactProblem<dim>::do_time_step();            \
+  template std::string    ContactProblem<dim>::convexification_failure(   \
+    const double) const;                                               \
+  template void ContactProblem<dim>::add_contact_state(StepStatistics &)  \
+    const;                                                                \
   template StepStatistics ContactProblem<dim>::solve_friction_problem(    \
     const Vector<double> &);
 
