@@ -70,10 +70,10 @@ namespace Contact
         "",
         Patterns::Anything(),
         "Points 'x, y[, z]' separated by ';' (a corner where the solution is "
-        "singular) towards which the mesh is graded: within the distance "
-        "r_j = R 2^(-(j-1)/gamma) of a point the cells are refined j more times "
-        "than the global mesh, so that the cell size grows like "
-        "h (r/R)^gamma. The refinement must stay away from Gamma_3.");
+        "singular) towards which the mesh is graded: cells closer than R to "
+        "a point are refined until their size is at most h (r/R)^gamma, r the "
+        "distance of their center to the point. The refinement must stay away "
+        "from Gamma_3.");
       prm.declare_entry("Refinement radius",
                         "0",
                         Patterns::Double(0),

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -63,15 +64,16 @@ namespace Contact
 
   // @sect4{ContactProblem::grade_towards_points}
 
-  // In pass j = 1, 2, ..., refines the cells whose center lies within
-  // r_j = R 2^(-(j-1)/gamma) of one of the 'Refinement points', until no cell
-  // is that close: the cell size then grows like h (r/R)^gamma away from the
-  // point, the grading that a corner singularity u ~ r^lambda needs
-  // (gamma = 1 - lambda) for the rate of a smooth solution
-  // (doc/verification.md). The grading depends only on the distance, so
-  // the meshes of a convergence study stay nested. Hanging nodes on
-  // Gamma_3 would need the nodal friction weights of the constrained basis;
-  // they are excluded for now.
+  // Refines, until none is left, every cell that is larger than
+  // h (r/R)^gamma, r the distance of its center to the nearest of the
+  // 'Refinement points' (cells farther than R keep the global size h): the
+  // grading that a corner singularity u ~ r^lambda needs (gamma =
+  // 1 - lambda) for the rate of a smooth solution (doc/verification.md).
+  // The smallest cells, at the point, have the size of about
+  // (h R^-gamma)^(1/(1-gamma)), h^(3/2) for gamma = 1/3. The target size is
+  // proportional to h, so the meshes of a convergence study stay nested.
+  // Hanging nodes on Gamma_3 would need the nodal friction weights of the
+  // constrained basis; they are excluded for now.
   template <int dim>
   void ContactProblem<dim>::grade_towards_points()
   {
@@ -86,24 +88,26 @@ namespace Contact
           point[d] = coordinates[d];
         points.push_back(point);
       }
-    const unsigned int global_level = triangulation.n_global_levels() - 1;
-    for (unsigned int pass = 1;; ++pass)
+    const double h = triangulation.begin_active()->extent_in_direction(0);
+    for (bool flagged = true; flagged;)
       {
-        const double radius =
-          geometry.refinement_radius *
-          std::pow(2., (1. - pass) / geometry.refinement_grading);
-        bool flagged = false;
+        flagged = false;
         for (const auto &cell : triangulation.active_cell_iterators())
-          for (const Point<dim> &point : points)
-            if (cell->center().distance(point) < radius &&
-                cell->level() < static_cast<int>(global_level + pass))
+          {
+            double r = std::numeric_limits<double>::max();
+            for (const Point<dim> &point : points)
+              r = std::min(r, cell->center().distance(point));
+            const double target =
+              h * std::pow(std::min(r / geometry.refinement_radius, 1.),
+                           geometry.refinement_grading);
+            if (cell->extent_in_direction(0) > target * (1. + 1e-10))
               {
                 cell->set_refine_flag();
                 flagged = true;
               }
-        if (!flagged)
-          break;
-        triangulation.execute_coarsening_and_refinement();
+          }
+        if (flagged)
+          triangulation.execute_coarsening_and_refinement();
       }
 
     const std::set<types::boundary_id> contact_ids(
