@@ -1,15 +1,17 @@
 #!/usr/bin/env python3
-"""Work-precision study on the manufactured solution (exact errors):
-error against wall time for element degree, h and k, the convexification
-tolerance and Anderson acceleration.
+"""Work-precision studies: error against wall time for the element
+degree, h and k, the convexification tolerance and Anderson acceleration.
 
-Each setting is one convergence study of prm/manufactured_slip_front.prm
-(the program's own 'Convergence study' mode); this script runs them one
-after the other, collects convergence.txt, prints one Markdown table and
-writes a PNG when matplotlib is there (Debian: python3-matplotlib, run
-with /usr/bin/python3).
+Each setting is one convergence study (the program's own 'Convergence
+study' mode), run one after the other; the script collects their
+convergence.txt, prints a Markdown table and writes a PNG when matplotlib
+is there (Debian: python3-matplotlib, run with /usr/bin/python3).
 
-Usage: doc/work_precision.py path/to/contact prm/manufactured_slip_front.prm out.png
+  manufactured: prm/manufactured_slip_front.prm, exact errors (max V-error)
+  paper:        prm/barboteu2015.prm, V-error at T against a Q2 reference
+                at the finest level of each study
+
+Usage: doc/work_precision.py path/to/contact manufactured|paper prm out.png
 """
 import os
 import platform
@@ -17,7 +19,22 @@ import subprocess
 import sys
 import tempfile
 
-SETTINGS = [
+PAPER = [
+    ("Q1, k = h", ["Geometry/Finite element degree=1"]),
+    ("Q2, k = h", ["Geometry/Finite element degree=2"]),
+    ("Q2, k = h/4", ["Geometry/Finite element degree=2", "Time/Time step=0.125"]),
+    ("Q1, k = h, graded", ["Geometry/Finite element degree=1",
+                           "Geometry/Refinement points=0, 0.5",
+                           "Geometry/Refinement radius=0.25"]),
+    ("Q2, k = h, graded", ["Geometry/Finite element degree=2",
+                           "Geometry/Refinement points=0, 0.5",
+                           "Geometry/Refinement radius=0.25"]),
+]
+PAPER_COMMON = ["Geometry/Cell size=0.5", "Time/Time step=0.5", "Convergence study/Levels=6",
+                "Convergence study/Reference degree=2", "Output/VTU interval=0",
+                "Output/Report times="]
+
+MANUFACTURED = [
     ("Q1, k = h", ["Geometry/Finite element degree=1", "Geometry/Cell size=0.125",
                    "Time/Time step=0.125", "Convergence study/Levels=4"]),
     ("Q2, k = h", ["Geometry/Finite element degree=2", "Geometry/Cell size=0.25",
@@ -43,10 +60,17 @@ def read_org_table(path):
 
 
 def main():
-    contact, prm, png = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3]
+    contact, study = os.path.abspath(sys.argv[1]), sys.argv[2]
+    prm, png = os.path.abspath(sys.argv[3]), sys.argv[4]
+    if study == "paper":
+        settings = [(name, PAPER_COMMON + entries) for name, entries in PAPER]
+        columns = ("V-error at T", "V-difference to next level at T")
+    else:
+        settings = MANUFACTURED
+        columns = ("max V-error", "max L2 velocity error")
     results = []
     with tempfile.TemporaryDirectory() as tmp:
-        for name, entries in SETTINGS:
+        for name, entries in settings:
             directory = os.path.join(tmp, str(len(results)))
             command = [contact]
             for entry in entries + ["Output/Output directory=" + directory,
@@ -58,12 +82,12 @@ def main():
     print(f"Machine: {platform.machine()}, {os.cpu_count()} cores, "
           f"{platform.processor() or platform.platform()}")
     print()
-    print("| setting | h | k | unknowns | max V-error | max L2 velocity error | wall time [s] |")
+    print(f"| setting | h | k | unknowns | {columns[0]} | {columns[1]} | wall time [s] |")
     print("|---|---|---|---|---|---|---|")
     for name, rows in results:
         for row in rows:
             print(f"| {name} | {float(row['h']):.4g} | {float(row['k']):.4g} | {row['unknowns']} "
-                  f"| {row['max V-error']} | {row['max L2 velocity error']} | {row['wall time [s]']} |")
+                  f"| {row[columns[0]]} | {row[columns[1]]} | {row['wall time [s]']} |")
 
     try:
         import matplotlib
@@ -74,9 +98,9 @@ def main():
     figure, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
     for name, rows in results:
         time = [float(r["wall time [s]"]) for r in rows]
-        axes[0].loglog(time, [float(r["max V-error"]) for r in rows], "o-", label=name)
-        axes[1].loglog(time, [float(r["max L2 velocity error"]) for r in rows], "o-", label=name)
-    for axis, title in zip(axes, ("max V-error ‖ε(u − u_h)‖", "max ‖w − w_h‖ in L2")):
+        axes[0].loglog(time, [float(r[columns[0]]) for r in rows], "o-", label=name)
+        axes[1].loglog(time, [float(r[columns[1]]) for r in rows], "o-", label=name)
+    for axis, title in zip(axes, columns):
         axis.set_xlabel("wall time of the run [s]")
         axis.set_ylabel("error")
         axis.set_title(title)

@@ -139,6 +139,8 @@ namespace Contact
     /** 0: one run; n: n + 1 runs, each halving h and/or k. */
     unsigned int levels;
     Refine       refine;
+    /** Element degree of the reference run; 0: that of the levels. */
+    unsigned int reference_degree;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);

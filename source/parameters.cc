@@ -522,6 +522,14 @@ namespace Contact
                         "space and time",
                         Patterns::Selection("space and time|space|time"),
                         "What is halved from one level to the next.");
+      prm.declare_entry(
+        "Reference degree",
+        "0",
+        Patterns::Integer(0, 4),
+        "Without a manufactured solution the finest level is the reference; "
+        "this is its element degree (0: the degree of the levels). A richer "
+        "reference lets studies with different degrees share one reference "
+        "(work-precision).");
     }
     prm.leave_subsection();
   }
@@ -531,6 +539,7 @@ namespace Contact
     prm.enter_subsection("Convergence study");
     {
       levels                   = prm.get_integer("Levels");
+      reference_degree         = prm.get_integer("Reference degree");
       const std::string choice = prm.get("Refine");
       refine                   = (choice == "space" ? Refine::space :
                                   choice == "time"  ? Refine::time :

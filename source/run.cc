@@ -5,6 +5,8 @@
 #include <deal.II/base/convergence_table.h>
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/fe/fe_tools.h>
+
 #include <deal.II/numerics/vector_tools.h>
 
 #include <contact_problem.h>
@@ -183,6 +185,36 @@ namespace Contact
       std::vector<VectorType> displacements;
     };
 
+    // A field of one level's space, interpolated onto the reference's
+    // finer mesh (the meshes share their coarse mesh) and, if the reference
+    // has another element, into the reference's element; both steps are
+    // exact when the reference space contains the level's.
+    template <int dim>
+    VectorType interpolate_onto(const DoFHandler<dim> &source,
+                                const VectorType      &field,
+                                const DoFHandler<dim> &target)
+    {
+      VectorType result(target.locally_owned_dofs(), MPI_COMM_WORLD);
+      if (source.get_fe() == target.get_fe())
+        {
+          VectorTools::interpolate_to_different_mesh(source,
+                                                     field,
+                                                     target,
+                                                     result);
+          return result;
+        }
+      DoFHandler<dim> same_element(target.get_triangulation());
+      same_element.distribute_dofs(source.get_fe());
+      VectorType on_target_mesh(same_element.locally_owned_dofs(),
+                                MPI_COMM_WORLD);
+      VectorTools::interpolate_to_different_mesh(source,
+                                                 field,
+                                                 same_element,
+                                                 on_target_mesh);
+      FETools::interpolate(same_element, on_target_mesh, target, result);
+      return result;
+    }
+
     // Sets the entries that differ from one level to the next, and parses.
     Parameters parameters_of_level(ParameterHandler  &prm,
                                    const Parameters  &base,
@@ -243,20 +275,24 @@ namespace Contact
         return [&, stride, level](const ContactProblem<dim> &problem) {
           if (problem.get_step_number() % stride != 0)
             return;
-          const DoFHandler<dim> &target = reference->get_dof_handler();
-          VectorType             u(target.locally_owned_dofs(), MPI_COMM_WORLD);
-          VectorTools::interpolate_to_different_mesh(problem.get_dof_handler(),
-                                                     problem.get_displacement(),
-                                                     target,
-                                                     u);
-          results[level].displacements.push_back(u);
+          results[level].displacements.push_back(
+            interpolate_onto(problem.get_dof_handler(),
+                             problem.get_displacement(),
+                             reference->get_dof_handler()));
         };
       };
 
       if (!exact)
         {
+          if (study.reference_degree > 0)
+            apply_override(prm,
+                           "Geometry/Finite element degree",
+                           std::to_string(study.reference_degree));
           reference = std::make_unique<ContactProblem<dim>>(
             parameters_of_level(prm, base, L));
+          apply_override(prm,
+                         "Geometry/Finite element degree",
+                         std::to_string(base.geometry.fe_degree));
           reference->set_step_observer(collect(L));
           results[L].run = reference->run();
         }
