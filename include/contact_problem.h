@@ -232,6 +232,7 @@ namespace Contact
     const FE_Q<dim>                           scalar_fe;
     const MappingQ<dim>                       mapping;
     const QGauss<dim>                         quadrature;
+    const Quadrature<dim>                     mass_quadrature;
     const QGauss<dim - 1>                     face_quadrature;
     DoFHandler<dim>                           dof_handler;
     DoFHandler<dim>                           scalar_dof_handler;

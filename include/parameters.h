@@ -27,6 +27,7 @@ namespace Contact
     std::vector<double> upper_corner;
     double              cell_size;
     unsigned int        fe_degree;
+    bool                lumped_mass;
     /** Points towards which the mesh is refined, each of dim coordinates. */
     std::vector<std::vector<double>> refinement_points;
     double                           refinement_radius;

@@ -19,7 +19,9 @@ namespace Contact
   // the elasticity (B eps(u), eps(v)) with
   // B tau = lambda tr(tau) I + 2G tau, lambda = E kappa/((1+kappa)(1-2kappa)),
   // 2G = E/(1+kappa) (the paper's formula, plane strain in 2D; plane
-  // stress replaces lambda by 2 lambda G/(lambda + 2G)). The constant
+  // stress replaces lambda by 2 lambda G/(lambda + 2G)). A lumped mass
+  // matrix comes from the Gauss-Lobatto rule, whose points are the nodes of
+  // Q_p: M is then diagonal. The constant
   // matrix of a step follows from backward Euler, (5.2) with (5.5):
   //   K w_n = F_n + (1/k) M w_{n-1} - B u_{n-1} - C^T eta_n,
   //   K = (1/k) M + A + k B.
@@ -38,8 +40,11 @@ namespace Contact
     FEValues<dim>                        fe_values(mapping,
                             fe,
                             quadrature,
-                            update_values | update_gradients |
-                              update_JxW_values);
+                            update_gradients | update_JxW_values);
+    FEValues<dim>                        mass_values(mapping,
+                              fe,
+                              mass_quadrature,
+                              update_values | update_JxW_values);
     const FEValuesExtractors::Vector     displacements(0);
     const unsigned int                   n_dofs = fe.n_dofs_per_cell();
     FullMatrix<double>                   cell_mass(n_dofs, n_dofs);
@@ -55,29 +60,38 @@ namespace Contact
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
+          mass_values.reinit(cell);
           cell_mass       = 0;
           cell_viscosity  = 0;
           cell_elasticity = 0;
           for (auto &vector : cell_momentum)
             vector = 0;
+          for (const unsigned int q : mass_values.quadrature_point_indices())
+            {
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                phi[i] = mass_values[displacements].value(i, q);
+              const double JxW = mass_values.JxW(q);
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  for (unsigned int d = 0; d < dim; ++d)
+                    cell_momentum[d](i) += rho * phi[i][d] * JxW;
+                  for (unsigned int j = 0; j < n_dofs; ++j)
+                    cell_mass(i, j) += rho * phi[i] * phi[j] * JxW;
+                }
+            }
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               for (unsigned int i = 0; i < n_dofs; ++i)
                 {
-                  phi[i] = fe_values[displacements].value(i, q);
                   eps[i] = fe_values[displacements].symmetric_gradient(i, q);
                   div[i] = trace(eps[i]);
                 }
               const double JxW = fe_values.JxW(q);
               for (unsigned int i = 0; i < n_dofs; ++i)
-                for (unsigned int d = 0; d < dim; ++d)
-                  cell_momentum[d](i) += rho * phi[i][d] * JxW;
-              for (unsigned int i = 0; i < n_dofs; ++i)
                 for (unsigned int j = 0; j < n_dofs; ++j)
                   {
                     const double div_div = div[i] * div[j];
                     const double eps_eps = eps[i] * eps[j];
-                    cell_mass(i, j) += rho * phi[i] * phi[j] * JxW;
                     cell_viscosity(i, j) +=
                       (mu1 * div_div + mu2 * eps_eps) * JxW;
                     cell_elasticity(i, j) +=

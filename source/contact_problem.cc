@@ -37,6 +37,11 @@ namespace Contact
     , scalar_fe(parameters.geometry.fe_degree)
     , mapping(1)
     , quadrature(parameters.geometry.fe_degree + 1)
+    , mass_quadrature(
+        parameters.geometry.lumped_mass ?
+          Quadrature<dim>(
+            QGaussLobatto<dim>(parameters.geometry.fe_degree + 1)) :
+          Quadrature<dim>(QGauss<dim>(parameters.geometry.fe_degree + 1)))
     , face_quadrature(parameters.geometry.fe_degree + 1)
     , dof_handler(triangulation)
     , scalar_dof_handler(triangulation)

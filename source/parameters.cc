@@ -65,6 +65,11 @@ namespace Contact
                         "1",
                         Patterns::Integer(1, 4),
                         "Polynomial degree of the Lagrange elements Q_p.");
+      prm.declare_entry("Mass matrix",
+                        "consistent",
+                        Patterns::Selection("consistent|lumped"),
+                        "consistent: Gauss quadrature; lumped: Gauss-Lobatto "
+                        "quadrature at the nodes, a diagonal M.");
       prm.declare_entry(
         "Refinement points",
         "",
@@ -97,8 +102,9 @@ namespace Contact
         Utilities::split_string_list(prm.get("Lower corner")));
       upper_corner = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Upper corner")));
-      cell_size = prm.get_double("Cell size");
-      fe_degree = prm.get_integer("Finite element degree");
+      cell_size   = prm.get_double("Cell size");
+      fe_degree   = prm.get_integer("Finite element degree");
+      lumped_mass = (prm.get("Mass matrix") == "lumped");
       refinement_points.clear();
       for (const std::string &point :
            Utilities::split_string_list(prm.get("Refinement points"), ';'))
