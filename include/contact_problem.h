@@ -85,7 +85,6 @@ namespace Contact
     unsigned int n_slip                     = 0;
     double       max_slip_rate              = 0;
     double       friction_force             = 0;
-    double       convexification_change     = 0;
   };
 
   /**

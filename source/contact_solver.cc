@@ -294,7 +294,6 @@ namespace Contact
         for (double &r : rate)
           r = std::max(r, 0.);
       }
-    statistics.convexification_change = residual;
 
     AssertThrow(converged, ExcMessage(convexification_failure(residual)));
     add_contact_state(statistics);
