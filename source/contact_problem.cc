@@ -51,6 +51,12 @@ namespace Contact
     , max_relative_energy_residual(0)
   {
     AssertThrow(parameters.dimension == dim, ExcInternalError());
+    // The data structures are the distributed ones of step-40/step-42, but
+    // the friction solver on Gamma_3 still reads every node's values
+    // directly; a parallel run would be wrong, so it is refused.
+    AssertThrow(Utilities::MPI::n_mpi_processes(mpi_communicator) == 1,
+                ExcMessage("This version runs on one MPI process only; "
+                           "start it without mpirun (or with -np 1)."));
     body_force =
       parse_vector_function<dim>("Loads and initial values/Body force",
                                  parameters.loads.body_force,
