@@ -175,7 +175,10 @@ namespace Contact
 
     // assembly.cc
     void   assemble_matrices();
-    void   assemble_load(const double time, VectorType &load_vector) const;
+    void   assemble_load(const double time,
+                         VectorType  &load_vector,
+                         const bool   with_body_force,
+                         const bool   with_surface_loads) const;
     void   set_initial_values();
     double quadratic_form(const MatrixType &matrix, const VectorType &x) const;
     Tensor<1, dim> momentum() const;
@@ -223,6 +226,9 @@ namespace Contact
     // With 'Verification/Manufactured solution', the exact solution that
     // replaces the load data above.
     std::unique_ptr<const ManufacturedSolution<dim>> exact_solution;
+    // A body force that does not depend on t is assembled once.
+    const bool body_force_is_constant;
+    VectorType constant_body_load;
 
     // Mesh and finite element space. The scalar space of the same degree
     // carries the Gamma_3 quantities (slip rate, status) for output.

@@ -187,6 +187,10 @@ namespace Contact
    * named `entry`. Syntax errors, unknown variables and a wrong number of
    * components are reported with the entry and the expression.
    */
+  /** Whether the muparser expression uses the variable (as a whole name). */
+  bool expression_uses_variable(const std::string &expression,
+                                const std::string &variable);
+
   template <int dim>
   std::unique_ptr<FunctionParser<dim>>
   parse_vector_function(const std::string &entry,

@@ -133,7 +133,9 @@ namespace Contact
   // Gamma_3 is added with the nodal weights m_p of the friction term.
   template <int dim>
   void ContactProblem<dim>::assemble_load(const double time,
-                                          VectorType  &load_vector) const
+                                          VectorType  &load_vector,
+                                          const bool   with_body_force,
+                                          const bool   with_surface_loads) const
   {
     TimerOutput::Scope t(computing_timer, "Assembly");
 
@@ -201,13 +203,16 @@ namespace Contact
       if (cell->is_locally_owned())
         {
           cell_rhs = 0;
-          fe_values.reinit(cell);
-          if (exact_solution)
-            add_force(fe_values, exact_body_force);
-          else
-            add_force(fe_values, parsed(fe_values, *body_force));
+          if (with_body_force)
+            {
+              fe_values.reinit(cell);
+              if (exact_solution)
+                add_force(fe_values, exact_body_force);
+              else
+                add_force(fe_values, parsed(fe_values, *body_force));
+            }
           for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary())
+            if (with_surface_loads && cell->face(f)->at_boundary())
               {
                 const types::boundary_id id = cell->face(f)->boundary_id();
                 if (exact_solution && is_free_side(id))
@@ -228,7 +233,7 @@ namespace Contact
                                                  load_vector);
         }
 
-    if (exact_solution)
+    if (exact_solution && with_surface_loads)
       {
         std::vector<types::global_dof_index> node_dofs(dim);
         Vector<double>                       node_load(dim);
@@ -343,15 +348,17 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                                       \
-  template void ContactProblem<dim>::assemble_matrices();                      \
-  template void ContactProblem<dim>::assemble_load(const double, VectorType &) \
-    const;                                                                     \
-  template void   ContactProblem<dim>::set_initial_values();                   \
-  template double ContactProblem<dim>::quadratic_form(const MatrixType &,      \
-                                                      const VectorType &)      \
-    const;                                                                     \
-  template void           ContactProblem<dim>::update_energy_balance();        \
+#define INSTANTIATE(dim)                                                  \
+  template void   ContactProblem<dim>::assemble_matrices();               \
+  template void   ContactProblem<dim>::assemble_load(const double,        \
+                                                   VectorType &,        \
+                                                   const bool,          \
+                                                   const bool) const;   \
+  template void   ContactProblem<dim>::set_initial_values();              \
+  template double ContactProblem<dim>::quadratic_form(const MatrixType &, \
+                                                      const VectorType &) \
+    const;                                                                \
+  template void           ContactProblem<dim>::update_energy_balance();   \
   template Tensor<1, dim> ContactProblem<dim>::momentum() const;
 
   INSTANTIATE(2)

@@ -45,6 +45,9 @@ namespace Contact
     , face_quadrature(parameters.geometry.fe_degree + 1)
     , dof_handler(triangulation)
     , scalar_dof_handler(triangulation)
+    , body_force_is_constant(
+        !parameters.verification.manufactured_solution &&
+        !expression_uses_variable(parameters.loads.body_force, "t"))
     , time(0)
     , step_number(0)
     , pending_report_times(parameters.output.report_times)
@@ -91,6 +94,11 @@ namespace Contact
       check_manufactured_setup();
     setup_system();
     assemble_matrices();
+    if (body_force_is_constant)
+      {
+        constant_body_load.reinit(locally_owned_dofs, mpi_communicator);
+        assemble_load(0., constant_body_load, true, false);
+      }
     set_initial_values();
     factorize_system_matrix();
     build_delassus_operator();

@@ -142,7 +142,9 @@ namespace Contact
   {
     old_velocity     = velocity;
     old_displacement = displacement;
-    assemble_load(time, load);
+    assemble_load(time, load, !body_force_is_constant, true);
+    if (body_force_is_constant)
+      load += constant_body_load;
 
     TimerOutput::Scope t(computing_timer, "Time steps");
     VectorType         rhs(load), product(load);

@@ -7,6 +7,7 @@
 
 #include <parameters.h>
 
+#include <cctype>
 #include <iostream>
 #include <sstream>
 
@@ -657,6 +658,31 @@ namespace Contact
 
 
   // @sect3{Expressions}
+
+  bool expression_uses_variable(const std::string &expression,
+                                const std::string &variable)
+  {
+    const auto is_name_character = [](const char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    };
+    for (std::size_t i = 0; i < expression.size();)
+      {
+        if (!is_name_character(expression[i]))
+          {
+            ++i;
+            continue;
+          }
+        std::size_t end = i;
+        while (end < expression.size() && is_name_character(expression[end]))
+          ++end;
+        if (expression.compare(i, end - i, variable) == 0 &&
+            end - i == variable.size())
+          return true;
+        i = end;
+      }
+    return false;
+  }
+
 
   // deal.II's FunctionParser reports a muparser error as an exception whose
   // text says nothing about where the expression came from; evaluating the
