@@ -159,7 +159,6 @@ namespace Contact
     unsigned int           get_step_number() const;
     const DoFHandler<dim> &get_dof_handler() const;
     const VectorType      &get_displacement() const;
-    const VectorType      &get_velocity() const;
 
     /** ||eps(v)||, the paper's V-norm, of a field on this problem's mesh. */
     double strain_norm(const VectorType &v) const;

@@ -187,12 +187,6 @@ namespace Contact
     return displacement;
   }
 
-  template <int dim>
-  const VectorType &ContactProblem<dim>::get_velocity() const
-  {
-    return velocity;
-  }
-
 
   template class ContactProblem<2>;
   template class ContactProblem<3>;
