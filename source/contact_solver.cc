@@ -90,7 +90,9 @@ namespace Contact
         constraints.distribute_local_to_global(node_tangent, node_dofs, column);
         column.compress(VectorOperation::add);
         delassus_columns[q].reinit(locally_owned_dofs, mpi_communicator);
+        Timer substitution;
         direct_solver->solve(delassus_columns[q], column);
+        substitution_time += substitution.wall_time() / n;
         constraints.distribute(delassus_columns[q]);
 
         double K_pp = 0;

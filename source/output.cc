@@ -318,6 +318,14 @@ namespace Contact
       {
         pcout << "Wall time: " << std::setprecision(4) << run_timer.wall_time()
               << " s" << std::endl;
+        const double step_time = computing_timer.get_summary_data(
+                                   TimerOutput::total_wall_time)["Time steps"] /
+                                 n_time_steps;
+        if (substitution_time > 0)
+          pcout << "Time per step " << 1e3 * step_time
+                << " ms = " << step_time / substitution_time
+                << " substitutions with the factor of K (one: "
+                << 1e3 * substitution_time << " ms)" << std::endl;
         computing_timer.print_summary();
       }
   }
