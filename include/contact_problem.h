@@ -60,18 +60,31 @@ namespace Contact
 
   /**
    * A node p of Gamma_3 that is not clamped: its dofs, its weight
-   * m_p = int_Gamma3 phi_p ds and its tangent (2D). The nodal friction force
-   * eta_p is the node's share of the friction traction, eta_p / m_p.
+   * m_p = int_Gamma3 phi_p ds, its outward normal and an orthonormal basis
+   * of the tangent plane (one tangent in 2D, two in 3D). The tangential
+   * unknowns of Gamma_3 (slip velocity, nodal friction force eta_p, the
+   * node's share of the friction traction eta_p / m_p) are stored node-major
+   * in vectors of length (dim - 1) times the number of nodes.
    */
   template <int dim>
   struct ContactNode
   {
     std::array<types::global_dof_index, dim> dofs;
-    types::global_dof_index scalar_dof = numbers::invalid_dof_index;
-    Point<dim>              location;
-    Tensor<1, dim>          normal;
-    Tensor<1, dim>          tangent;
-    double                  weight = 0;
+    types::global_dof_index             scalar_dof = numbers::invalid_dof_index;
+    Point<dim>                          location;
+    Tensor<1, dim>                      normal;
+    std::array<Tensor<1, dim>, dim - 1> tangents;
+    double                              weight = 0;
+
+    /** sum_i a_{p,i} t_i: node p's tangential components as a vector. */
+    Tensor<1, dim> tangential_vector(const Vector<double> &a,
+                                     const unsigned int    p) const
+    {
+      Tensor<1, dim> result;
+      for (unsigned int i = 0; i < dim - 1; ++i)
+        result += a[p * (dim - 1) + i] * tangents[i];
+      return result;
+    }
   };
 
   /** What one time step did, for the console and time_series.csv. */
@@ -189,10 +202,12 @@ namespace Contact
     StepStatistics do_time_step();
     StepStatistics
     solve_friction_problem(const Vector<double> &free_slip_velocity);
-    std::string convexification_failure(const double residual) const;
-    void        add_contact_state(StepStatistics &statistics) const;
-    double      tangential_velocity(const ContactNode<dim> &node,
-                                    const VectorType       &w) const;
+    std::string    convexification_failure(const double residual) const;
+    void           add_contact_state(StepStatistics &statistics) const;
+    double         tangential_velocity(const ContactNode<dim> &node,
+                                       const unsigned int      direction,
+                                       const VectorType       &w) const;
+    Vector<double> tangential_velocities(const VectorType &w) const;
 
     // verification.cc
     void       check_manufactured_setup() const;

@@ -84,23 +84,32 @@ namespace Contact
 
 
   /**
-   * The Tresca problem with given nodal bounds g_p >= 0 on the n tangential
-   * unknowns of Gamma_3 in 2D, in terms of the Delassus operator
+   * The Tresca problem with given nodal bounds g_p >= 0 on the tangential
+   * unknowns of Gamma_3, m = dim - 1 per node (node-major: unknown p m + i
+   * is component i of node p), in terms of the Delassus operator
    * D = C K^{-1} C^T (DESIGN.md section 4):
    *
    *   v = v_free - D eta,
-   *   |eta_p| <= g_p if v_p = 0,   eta_p = g_p sign(v_p) otherwise,
+   *   |eta_p| <= g_p if v_p = 0,   eta_p = g_p v_p / |v_p| otherwise,
    *
    * i.e. the nodal form of the friction condition (5.3) with the
-   * coefficient frozen. It is solved by the primal-dual active set method
-   * (semismooth Newton on eta_p = P_[-g_p, g_p](eta_p + c_p v_p)): stick
-   * where |eta_p + c_p v_p| <= g_p (impose v_p = 0), slip elsewhere (impose
-   * eta_p = g_p sign(eta_p + c_p v_p)). Each iteration is one dense SPD
-   * solve on the stick set. The method stops when the sets and signs repeat
-   * from one iteration to the next; then (eta, v) solves the problem
-   * exactly. If a set seen before (not the last one) comes back, the method
-   * cycles; c is then halved, which is what cures the cycling at slip onset
-   * (DESIGN.md section 3).
+   * coefficient frozen. It is solved by the primal-dual active set method,
+   * the semismooth Newton method on the complementarity function
+   * eta_p = P_{B(g_p)}(z_p), z_p = eta_p + c_p v_p (Hueber, Stadler and
+   * Wohlmuth 2008): stick where |z_p| <= g_p (impose v_p = 0), slip
+   * elsewhere. On a slip node the generalised derivative of the projection,
+   * (g_p / |z_p|) (I - zhat zhat^T), gives two conditions in the local
+   * basis (zhat, tangents of zhat): eta_p . zhat = g_p, and
+   * v_p . t = beta_p eta_p . t with beta_p = (|z_p| - g_p) / (g_p c_p) >= 0
+   * along the other directions. Every Newton step is then one dense SPD
+   * solve (D + beta) on the unknowns that are not fixed. For m = 1 (2D)
+   * there are no such directions: the slip set fixes eta_p = g_p sign(z_p)
+   * and the method ends when the sets and signs repeat, with (eta, v)
+   * exact. For m = 2 the slip directions converge superlinearly; the method
+   * stops when the sets repeat and eta - P(z) is below round-off. If a set
+   * seen before (not the last one) comes back, the method cycles; c is then
+   * halved, which is what cures the cycling at slip onset (DESIGN.md
+   * section 3).
    */
   struct TrescaResult
   {
@@ -111,19 +120,19 @@ namespace Contact
 
   enum class NodeState : int
   {
-    slip_negative = -1,
-    stick         = 0,
-    slip_positive = 1
+    stick,
+    slip
   };
 
-  TrescaResult solve_tresca_2d(const FullMatrix<double> &D,
-                               const Vector<double>     &v_free,
-                               const Vector<double>     &g,
-                               const Vector<double>     &c,
-                               const unsigned int        max_iterations,
-                               Vector<double>           &eta,
-                               Vector<double>           &v,
-                               std::vector<NodeState>   &state);
+  TrescaResult solve_tresca(const FullMatrix<double> &D,
+                            const unsigned int        n_components,
+                            const Vector<double>     &v_free,
+                            const Vector<double>     &g,
+                            const Vector<double>     &c,
+                            const unsigned int        max_iterations,
+                            Vector<double>           &eta,
+                            Vector<double>           &v,
+                            std::vector<NodeState>   &state);
 } // namespace Contact
 
 #endif

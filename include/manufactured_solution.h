@@ -47,11 +47,11 @@ namespace Contact
                                                 const double      t) const;
     SymmetricTensor<2, dim> stress(const Point<dim> &p, const double t) const;
     Tensor<1, dim> body_force(const Point<dim> &p, const double t) const;
-    /** f_3 . t at a node of Gamma_3 with outward normal n and tangent t. */
-    double contact_load(const Point<dim>     &p,
-                        const Tensor<1, dim> &normal,
-                        const Tensor<1, dim> &tangent,
-                        const double          t) const;
+    /** The tangential load f_3 at a point of Gamma_3 with outward
+     *  normal n. */
+    Tensor<1, dim> contact_load(const Point<dim>     &p,
+                                const Tensor<1, dim> &normal,
+                                const double          t) const;
 
     /** u or w as a deal.II Function, for interpolating u_0 and u_1. */
     class Field : public Function<dim>

@@ -41,6 +41,7 @@ namespace Contact
   {
     std::vector<types::boundary_id> clamped_ids;
     std::vector<types::boundary_id> contact_ids;
+    std::vector<types::boundary_id> symmetry_ids;
     /** Boundary id -> traction expression "f_x; f_y[; f_z]" of x,y,z,t. */
     std::map<types::boundary_id, std::string> tractions;
 

@@ -239,14 +239,12 @@ namespace Contact
         Vector<double>                       node_load(dim);
         for (const ContactNode<dim> &node : contact_nodes)
           {
-            const double f3 = exact_solution->contact_load(node.location,
-                                                           node.normal,
-                                                           node.tangent,
-                                                           time);
+            const Tensor<1, dim> f3 =
+              exact_solution->contact_load(node.location, node.normal, time);
             for (unsigned int d = 0; d < dim; ++d)
               {
                 node_dofs[d] = node.dofs[d];
-                node_load[d] = node.weight * f3 * node.tangent[d];
+                node_load[d] = node.weight * f3[d];
               }
             constraints.distribute_local_to_global(node_load,
                                                    node_dofs,
@@ -342,9 +340,9 @@ namespace Contact
       0.5 * quadratic_form(mass_matrix, velocity_change) +
       0.5 * k * k * quadratic_form(elasticity_matrix, velocity);
     energy.external_work += k * (load * velocity);
-    for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+    if (!friction_law.is_frictionless())
       energy.friction_dissipation +=
-        k * friction_force[p] * tangential_velocity(contact_nodes[p], velocity);
+        k * (friction_force * tangential_velocities(velocity));
   }
 
 

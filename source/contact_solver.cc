@@ -33,11 +33,24 @@ namespace Contact
 
   template <int dim>
   double ContactProblem<dim>::tangential_velocity(const ContactNode<dim> &node,
-                                                  const VectorType &w) const
+                                                  const unsigned int direction,
+                                                  const VectorType  &w) const
   {
     double v = 0;
     for (unsigned int d = 0; d < dim; ++d)
-      v += node.tangent[d] * w[node.dofs[d]];
+      v += node.tangents[direction][d] * w[node.dofs[d]];
+    return v;
+  }
+
+  // C w: all tangential components on Gamma_3, node-major.
+  template <int dim>
+  Vector<double>
+  ContactProblem<dim>::tangential_velocities(const VectorType &w) const
+  {
+    Vector<double> v(contact_nodes.size() * (dim - 1));
+    for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+      for (unsigned int i = 0; i < dim - 1; ++i)
+        v[p * (dim - 1) + i] = tangential_velocity(contact_nodes[p], i, w);
     return v;
   }
 
@@ -57,75 +70,81 @@ namespace Contact
   {
     TimerOutput::Scope t(computing_timer, "Delassus operator");
 
-    const unsigned int n = contact_nodes.size();
-    friction_force.reinit(n);
-    slip_velocity.reinit(n);
-    for (unsigned int p = 0; p < n; ++p)
-      slip_velocity[p] = tangential_velocity(contact_nodes[p], velocity);
+    const unsigned int n = contact_nodes.size(), m = dim - 1;
+    friction_force.reinit(n * m);
+    slip_velocity = tangential_velocities(velocity);
     // Without friction Gamma_3 only carries the normal constraint: every
     // node slips freely and nothing is needed beyond the free velocity.
     node_state.assign(n,
-                      friction_law.is_frictionless() ?
-                        NodeState::slip_positive :
-                        NodeState::stick);
+                      friction_law.is_frictionless() ? NodeState::slip :
+                                                       NodeState::stick);
     if (friction_law.is_frictionless())
       return;
 
-    delassus_columns.resize(n);
-    delassus_operator.reinit(n, n);
+    delassus_columns.resize(n * m);
     active_set_parameter.reinit(n);
 
     std::vector<types::global_dof_index> node_dofs(dim);
     Vector<double>                       node_tangent(dim);
     VectorType column(locally_owned_dofs, mpi_communicator);
     for (unsigned int q = 0; q < n; ++q)
+      for (unsigned int j = 0; j < m; ++j)
+        {
+          const ContactNode<dim> &node = contact_nodes[q];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              node_dofs[d]    = node.dofs[d];
+              node_tangent[d] = node.tangents[j][d];
+            }
+          column = 0;
+          constraints.distribute_local_to_global(node_tangent,
+                                                 node_dofs,
+                                                 column);
+          column.compress(VectorOperation::add);
+          VectorType &Z_column = delassus_columns[q * m + j];
+          Z_column.reinit(locally_owned_dofs, mpi_communicator);
+          Timer substitution;
+          direct_solver->solve(Z_column, column);
+          substitution_time += substitution.wall_time() / (n * m);
+          constraints.distribute(Z_column);
+
+          // c_q of the active set method: the parameter times the node's
+          // stiffness t^T K t, averaged over its tangents.
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              if (!constraints.is_constrained(node.dofs[a]) &&
+                  !constraints.is_constrained(node.dofs[b]))
+                active_set_parameter[q] +=
+                  parameters.solver.active_set_parameter / m *
+                  node.tangents[j][a] *
+                  system_matrix.el(node.dofs[a], node.dofs[b]) *
+                  node.tangents[j][b];
+        }
+
+    delassus_operator.reinit(n * m, n * m);
+    for (unsigned int s = 0; s < n * m; ++s)
       {
-        const ContactNode<dim> &node = contact_nodes[q];
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            node_dofs[d]    = node.dofs[d];
-            node_tangent[d] = node.tangent[d];
-          }
-        column = 0;
-        constraints.distribute_local_to_global(node_tangent, node_dofs, column);
-        column.compress(VectorOperation::add);
-        delassus_columns[q].reinit(locally_owned_dofs, mpi_communicator);
-        Timer substitution;
-        direct_solver->solve(delassus_columns[q], column);
-        substitution_time += substitution.wall_time() / n;
-        constraints.distribute(delassus_columns[q]);
-
-        double K_pp = 0;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            if (!constraints.is_constrained(node.dofs[i]) &&
-                !constraints.is_constrained(node.dofs[j]))
-              K_pp += node.tangent[i] *
-                      system_matrix.el(node.dofs[i], node.dofs[j]) *
-                      node.tangent[j];
-        active_set_parameter[q] = parameters.solver.active_set_parameter * K_pp;
+        const Vector<double> column =
+          tangential_velocities(delassus_columns[s]);
+        for (unsigned int r = 0; r < n * m; ++r)
+          delassus_operator(r, s) = column[r];
       }
-
-    for (unsigned int p = 0; p < n; ++p)
-      for (unsigned int q = 0; q < n; ++q)
-        delassus_operator(p, q) =
-          tangential_velocity(contact_nodes[p], delassus_columns[q]);
 
     // D is symmetric up to the round-off of the solves; the active set
     // method relies on it (Cholesky on the stick set), so it is made exactly
     // symmetric after checking that nothing more than round-off is removed.
     double asymmetry = 0, largest = 0;
-    for (unsigned int p = 0; p < n; ++p)
-      for (unsigned int q = 0; q < p; ++q)
+    for (unsigned int r = 0; r < n * m; ++r)
+      for (unsigned int s = 0; s < r; ++s)
         {
           const double mean =
-            0.5 * (delassus_operator(p, q) + delassus_operator(q, p));
+            0.5 * (delassus_operator(r, s) + delassus_operator(s, r));
           asymmetry =
-            std::max(asymmetry, std::abs(delassus_operator(p, q) - mean));
-          delassus_operator(p, q) = delassus_operator(q, p) = mean;
+            std::max(asymmetry, std::abs(delassus_operator(r, s) - mean));
+          delassus_operator(r, s) = delassus_operator(s, r) = mean;
         }
-    for (unsigned int p = 0; p < n; ++p)
-      largest = std::max(largest, delassus_operator(p, p));
+    for (unsigned int r = 0; r < n * m; ++r)
+      largest = std::max(largest, delassus_operator(r, r));
     AssertThrow(asymmetry <= 1e-8 * largest,
                 ExcMessage("The Delassus operator C K^{-1} C^T is not "
                            "symmetric (relative asymmetry " +
@@ -162,20 +181,15 @@ namespace Contact
     StepStatistics statistics;
     if (friction_law.is_frictionless())
       {
-        for (unsigned int p = 0; p < contact_nodes.size(); ++p)
-          slip_velocity[p] = tangential_velocity(contact_nodes[p], velocity);
+        slip_velocity = tangential_velocities(velocity);
         add_contact_state(statistics);
       }
     else if (!contact_nodes.empty())
       {
-        Vector<double> free_slip_velocity(contact_nodes.size());
-        for (unsigned int p = 0; p < contact_nodes.size(); ++p)
-          free_slip_velocity[p] =
-            tangential_velocity(contact_nodes[p], velocity);
-        statistics = solve_friction_problem(free_slip_velocity);
-        for (unsigned int q = 0; q < contact_nodes.size(); ++q)
-          if (friction_force[q] != 0.)
-            velocity.add(-friction_force[q], delassus_columns[q]);
+        statistics = solve_friction_problem(tangential_velocities(velocity));
+        for (unsigned int r = 0; r < friction_force.size(); ++r)
+          if (friction_force[r] != 0.)
+            velocity.add(-friction_force[r], delassus_columns[r]);
       }
 
     displacement = old_displacement;
@@ -212,9 +226,13 @@ namespace Contact
     const unsigned int n      = contact_nodes.size();
     StepStatistics     statistics;
 
-    Vector<double> rate(n), bound(n), eta(friction_force), v(n);
-    for (unsigned int p = 0; p < n; ++p)
-      rate[p] = std::abs(slip_velocity[p]);
+    Vector<double> rate(n), bound(n), eta(friction_force),
+      v(free_slip_velocity.size());
+    const auto slip_rates = [&](const Vector<double> &velocities) {
+      for (unsigned int p = 0; p < n; ++p)
+        rate[p] = contact_nodes[p].tangential_vector(velocities, p).norm();
+    };
+    slip_rates(slip_velocity);
     std::vector<NodeState> state;
     std::vector<bool>      slip_set, previous_slip_set;
     AndersonAcceleration   anderson(solver.anderson_depth);
@@ -226,7 +244,9 @@ namespace Contact
       // E(v) with v = v_free - D eta: the quadratic term is eta^T D eta / 2.
       double value = 0.5 * delassus_operator.matrix_norm_square(eta);
       for (unsigned int p = 0; p < n; ++p)
-        value += contact_nodes[p].weight * friction_law.potential(v[p]);
+        value += contact_nodes[p].weight *
+                 friction_law.potential(
+                   contact_nodes[p].tangential_vector(v, p).norm());
       return value;
     };
 
@@ -240,14 +260,15 @@ namespace Contact
                        contact_nodes[p].weight * friction_law.bound(rate[p]);
 
         const TrescaResult tresca =
-          solve_tresca_2d(delassus_operator,
-                          free_slip_velocity,
-                          bound,
-                          active_set_parameter,
-                          solver.max_active_set_iterations,
-                          eta,
-                          v,
-                          state);
+          solve_tresca(delassus_operator,
+                       dim - 1,
+                       free_slip_velocity,
+                       bound,
+                       active_set_parameter,
+                       solver.max_active_set_iterations,
+                       eta,
+                       v,
+                       state);
         statistics.active_set_iterations += tresca.iterations;
         statistics.cycles_cured += tresca.cycles_cured;
         AssertThrow(
@@ -267,8 +288,7 @@ namespace Contact
             // Safeguard: back to the plain step from the accepted iterate.
             ++statistics.rejected_accelerations;
             anderson.restart();
-            for (unsigned int p = 0; p < n; ++p)
-              rate[p] = std::abs(slip_velocity[p]);
+            slip_rates(slip_velocity);
             eta = friction_force;
             continue;
           }
@@ -283,10 +303,13 @@ namespace Contact
         Vector<double> new_rate(n);
         for (unsigned int p = 0; p < n; ++p)
           {
-            new_rate[p] = std::abs(v[p]);
+            new_rate[p] = contact_nodes[p].tangential_vector(v, p).norm();
             residual    = std::max(residual, std::abs(new_rate[p] - rate[p]));
-            scale       = std::max(
-              {scale, std::abs(v[p]), std::abs(free_slip_velocity[p])});
+            scale       = std::max({scale,
+                                    new_rate[p],
+                                    contact_nodes[p]
+                                      .tangential_vector(free_slip_velocity, p)
+                                      .norm()});
             slip_set[p] = (state[p] != NodeState::stick);
           }
         residual /= scale;
@@ -348,24 +371,27 @@ namespace Contact
         else
           ++statistics.n_slip;
         statistics.max_slip_rate =
-          std::max(statistics.max_slip_rate, std::abs(slip_velocity[p]));
-        resultant += friction_force[p] * contact_nodes[p].tangent;
+          std::max(statistics.max_slip_rate,
+                   contact_nodes[p].tangential_vector(slip_velocity, p).norm());
+        resultant += contact_nodes[p].tangential_vector(friction_force, p);
       }
     statistics.friction_force = resultant.norm();
   }
 
 
-#define INSTANTIATE(dim)                                                  \
-  template void   ContactProblem<dim>::factorize_system_matrix();         \
-  template double ContactProblem<dim>::tangential_velocity(               \
-    const ContactNode<dim> &, const VectorType &) const;                  \
-  template void           ContactProblem<dim>::build_delassus_operator(); \
-  template StepStatistics ContactProblem<dim>::do_time_step();            \
-  template std::string    ContactProblem<dim>::convexification_failure(   \
-    const double) const;                                               \
-  template void ContactProblem<dim>::add_contact_state(StepStatistics &)  \
-    const;                                                                \
-  template StepStatistics ContactProblem<dim>::solve_friction_problem(    \
+#define INSTANTIATE(dim)                                                     \
+  template void   ContactProblem<dim>::factorize_system_matrix();            \
+  template double ContactProblem<dim>::tangential_velocity(                  \
+    const ContactNode<dim> &, const unsigned int, const VectorType &) const; \
+  template Vector<double> ContactProblem<dim>::tangential_velocities(        \
+    const VectorType &) const;                                               \
+  template void           ContactProblem<dim>::build_delassus_operator();    \
+  template StepStatistics ContactProblem<dim>::do_time_step();               \
+  template std::string    ContactProblem<dim>::convexification_failure(      \
+    const double) const;                                                  \
+  template void ContactProblem<dim>::add_contact_state(StepStatistics &)     \
+    const;                                                                   \
+  template StepStatistics ContactProblem<dim>::solve_friction_problem(       \
     const Vector<double> &);
 
   INSTANTIATE(2)

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace Contact
 {
@@ -145,114 +146,266 @@ namespace Contact
 
   namespace
   {
-    // The stick/slip state that the complementarity function
-    // eta_p = P_[-g_p, g_p](eta_p + c_p v_p) predicts. A node with g_p = 0
-    // slips with eta_p = 0 whatever its sign, so it is reported as
-    // slip_positive to keep the state deterministic.
-    std::vector<NodeState> predict_state(const Vector<double> &eta,
-                                         const Vector<double> &v,
-                                         const Vector<double> &g,
-                                         const Vector<double> &c)
+    // The linearisation of the complementarity function at one node: its
+    // state, the unit vector zhat along z_p = eta_p + c_p v_p, and beta_p.
+    // A node with g_p = 0 slips with eta_p = 0 whatever v_p does; its
+    // direction is that of v_p (the first axis if v_p = 0) to keep it
+    // deterministic.
+    struct NodeLinearisation
     {
-      std::vector<NodeState> state(eta.size());
-      for (unsigned int p = 0; p < eta.size(); ++p)
-        {
-          const double z = eta[p] + c[p] * v[p];
-          if (g[p] == 0.)
-            state[p] = NodeState::slip_positive;
-          else if (std::abs(z) <= g[p])
-            state[p] = NodeState::stick;
-          else
-            state[p] =
-              (z > 0 ? NodeState::slip_positive : NodeState::slip_negative);
-        }
-      return state;
-    }
+      NodeState           state = NodeState::stick;
+      std::vector<double> direction;
+      double              beta = 0;
+    };
 
-    // Given the state, eta is known on the slip set and v = 0 on the stick
-    // set, so eta_S solves D_SS eta_S = v_free_S - D_SL eta_L.
-    void solve_for_state(const FullMatrix<double>     &D,
-                         const Vector<double>         &v_free,
-                         const Vector<double>         &g,
-                         const std::vector<NodeState> &state,
-                         Vector<double>               &eta,
-                         Vector<double>               &v)
+    std::vector<NodeLinearisation> linearise(const unsigned int    m,
+                                             const Vector<double> &eta,
+                                             const Vector<double> &v,
+                                             const Vector<double> &g,
+                                             const Vector<double> &c)
     {
-      const unsigned int        n = v_free.size();
-      std::vector<unsigned int> stick;
-      for (unsigned int p = 0; p < n; ++p)
-        if (state[p] == NodeState::stick)
-          stick.push_back(p);
-        else
-          eta[p] = static_cast<int>(state[p]) * g[p];
-
-      if (!stick.empty())
+      std::vector<NodeLinearisation> result(g.size());
+      for (unsigned int p = 0; p < g.size(); ++p)
         {
-          const unsigned int       m = stick.size();
-          LAPACKFullMatrix<double> D_SS(m, m);
-          Vector<double>           rhs(m);
+          NodeLinearisation &node = result[p];
+          node.direction.assign(m, 0.);
+          double z_norm = 0, v_norm = 0;
           for (unsigned int i = 0; i < m; ++i)
             {
-              rhs[i] = v_free[stick[i]];
-              for (unsigned int q = 0; q < n; ++q)
-                if (state[q] != NodeState::stick)
-                  rhs[i] -= D(stick[i], q) * eta[q];
-              for (unsigned int j = 0; j < m; ++j)
-                D_SS(i, j) = D(stick[i], stick[j]);
+              node.direction[i] = eta[p * m + i] + c[p] * v[p * m + i];
+              z_norm += node.direction[i] * node.direction[i];
+              v_norm += v[p * m + i] * v[p * m + i];
             }
-          D_SS.set_property(LAPACKSupport::symmetric);
-          D_SS.compute_cholesky_factorization();
-          D_SS.solve(rhs);
-          for (unsigned int i = 0; i < m; ++i)
-            eta[stick[i]] = rhs[i];
+          z_norm = std::sqrt(z_norm);
+          if (g[p] == 0.)
+            {
+              node.state = NodeState::slip;
+              for (unsigned int i = 0; i < m; ++i)
+                node.direction[i] =
+                  (v_norm > 0 ? v[p * m + i] / std::sqrt(v_norm) : i == 0);
+            }
+          else if (z_norm > g[p])
+            {
+              node.state = NodeState::slip;
+              for (double &d : node.direction)
+                d /= z_norm;
+              node.beta = (z_norm - g[p]) / (g[p] * c[p]);
+            }
+        }
+      return result;
+    }
+
+    // The sets that the cycle detection compares: stick, or slip with (in
+    // 2D) its sign.
+    std::vector<int>
+    set_signature(const std::vector<NodeLinearisation> &linearisation)
+    {
+      std::vector<int> signature;
+      for (const NodeLinearisation &node : linearisation)
+        signature.push_back(node.state == NodeState::stick ? 0 :
+                            node.direction.size() > 1      ? 1 :
+                            node.direction[0] > 0          ? 1 :
+                                                             -1);
+      return signature;
+    }
+
+    // The orthonormal basis of one node's tangential plane in which the
+    // Newton step is diagonal: stick nodes keep the canonical basis; slip
+    // nodes take (zhat, zhat rotated by 90 degrees) for m = 2.
+    FullMatrix<double> local_basis(const NodeLinearisation &node)
+    {
+      const unsigned int m = node.direction.size();
+      FullMatrix<double> basis(m, m);
+      for (unsigned int i = 0; i < m; ++i)
+        basis(i, i) = 1;
+      if (node.state == NodeState::slip)
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            basis(i, 0) = node.direction[i];
+            if (m == 2)
+              basis(i, 1) = (i == 0 ? -node.direction[1] : node.direction[0]);
+          }
+      return basis;
+    }
+
+    // One Newton step: in the rotated unknowns eta' = Q^T eta (Q block
+    // diagonal of the local bases), the components eta'_{p,0} = g_p of the
+    // slip nodes are fixed, as are the components with D_rr = 0 of stick
+    // nodes (a zero tangent: a direction the node cannot move in, e.g. on a
+    // symmetry plane; eta' = 0 there), and the others solve
+    //   (Q^T D Q + diag beta)_FF eta'_F = (Q^T v_free)_F - (Q^T D Q)_FL g_L,
+    // which is SPD. Then v = v_free - D eta, and v_p = 0 where p sticks.
+    // Q^T D Q is formed entry by entry from the m x m blocks, O((nm)^2 m^2).
+    void newton_step(const FullMatrix<double>             &D,
+                     const std::vector<NodeLinearisation> &linearisation,
+                     const Vector<double>                 &v_free,
+                     const Vector<double>                 &g,
+                     Vector<double>                       &eta,
+                     Vector<double>                       &v)
+    {
+      const unsigned int              n = g.size(), m = D.m() / n;
+      std::vector<FullMatrix<double>> Q;
+      for (const NodeLinearisation &node : linearisation)
+        Q.push_back(local_basis(node));
+      const auto rotated_D = [&](const unsigned int r, const unsigned int s) {
+        const unsigned int p = r / m, a = r % m, q = s / m, b = s % m;
+        double             entry = 0;
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int j = 0; j < m; ++j)
+            entry += Q[p](i, a) * D(p * m + i, q * m + j) * Q[q](j, b);
+        return entry;
+      };
+
+      std::vector<unsigned int> free, fixed;
+      Vector<double>            rotated_eta(n * m);
+      for (unsigned int p = 0; p < n; ++p)
+        for (unsigned int i = 0; i < m; ++i)
+          if ((linearisation[p].state == NodeState::stick &&
+               D(p * m + i, p * m + i) > 0) ||
+              (linearisation[p].state == NodeState::slip && i > 0 && g[p] > 0))
+            free.push_back(p * m + i);
+          else
+            {
+              fixed.push_back(p * m + i);
+              rotated_eta[p * m + i] =
+                (linearisation[p].state == NodeState::slip && i == 0 ? g[p] :
+                                                                       0.);
+            }
+
+      if (!free.empty())
+        {
+          const unsigned int       n_free = free.size();
+          LAPACKFullMatrix<double> matrix(n_free, n_free);
+          Vector<double>           rhs(n_free);
+          for (unsigned int a = 0; a < n_free; ++a)
+            {
+              const unsigned int r = free[a], p = r / m;
+              for (unsigned int i = 0; i < m; ++i)
+                rhs[a] += Q[p](i, r % m) * v_free[p * m + i];
+              for (const unsigned int s : fixed)
+                rhs[a] -= rotated_D(r, s) * rotated_eta[s];
+              for (unsigned int b = 0; b <= a; ++b)
+                matrix(a, b) = matrix(b, a) = rotated_D(r, free[b]);
+              matrix(a, a) += linearisation[p].beta;
+            }
+          matrix.set_property(LAPACKSupport::symmetric);
+          matrix.compute_cholesky_factorization();
+          matrix.solve(rhs);
+          for (unsigned int a = 0; a < n_free; ++a)
+            rotated_eta[free[a]] = rhs[a];
         }
 
+      for (unsigned int p = 0; p < n; ++p)
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            eta[p * m + i] = 0;
+            for (unsigned int a = 0; a < m; ++a)
+              eta[p * m + i] += Q[p](i, a) * rotated_eta[p * m + a];
+          }
       D.vmult(v, eta);
       v.sadd(-1., 1., v_free);
-      for (const unsigned int p : stick)
-        v[p] = 0.;
+      for (unsigned int p = 0; p < n; ++p)
+        if (linearisation[p].state == NodeState::stick)
+          for (unsigned int i = 0; i < m; ++i)
+            v[p * m + i] = 0.;
+    }
+
+    // max_p |eta_p - P_{B(g_p)}(eta_p + c_p v_p)|: zero at a solution.
+    double complementarity_residual(const unsigned int    m,
+                                    const Vector<double> &eta,
+                                    const Vector<double> &v,
+                                    const Vector<double> &g,
+                                    const Vector<double> &c)
+    {
+      double residual = 0;
+      for (unsigned int p = 0; p < g.size(); ++p)
+        {
+          std::vector<double> z(m);
+          double              z_norm = 0;
+          for (unsigned int i = 0; i < m; ++i)
+            {
+              z[i] = eta[p * m + i] + c[p] * v[p * m + i];
+              z_norm += z[i] * z[i];
+            }
+          z_norm             = std::sqrt(z_norm);
+          const double scale = (z_norm > g[p] ? g[p] / z_norm : 1.);
+          for (unsigned int i = 0; i < m; ++i)
+            residual =
+              std::max(residual, std::abs(eta[p * m + i] - scale * z[i]));
+        }
+      return residual;
     }
   } // namespace
 
 
-  TrescaResult solve_tresca_2d(const FullMatrix<double> &D,
-                               const Vector<double>     &v_free,
-                               const Vector<double>     &g,
-                               const Vector<double>     &c_initial,
-                               const unsigned int        max_iterations,
-                               Vector<double>           &eta,
-                               Vector<double>           &v,
-                               std::vector<NodeState>   &state)
+  TrescaResult solve_tresca(const FullMatrix<double> &D,
+                            const unsigned int        m,
+                            const Vector<double>     &v_free,
+                            const Vector<double>     &g,
+                            const Vector<double>     &c_initial,
+                            const unsigned int        max_iterations,
+                            Vector<double>           &eta,
+                            Vector<double>           &v,
+                            std::vector<NodeState>   &state)
   {
     AssertDimension(D.m(), v_free.size());
     AssertDimension(eta.size(), v_free.size());
-    TrescaResult                        result;
-    Vector<double>                      c = c_initial;
-    std::vector<std::vector<NodeState>> history;
+    AssertDimension(g.size() * m, v_free.size());
+    TrescaResult                  result;
+    Vector<double>                c = c_initial;
+    std::vector<std::vector<int>> history;
+    const double                  tolerance =
+      1e-12 * std::max(g.linfty_norm(), std::numeric_limits<double>::min());
 
     D.vmult(v, eta);
     v.sadd(-1., 1., v_free);
-    state = predict_state(eta, v, g, c);
+    auto linearisation = linearise(m, eta, v, g, c);
+
+    // Progress test for m = 2, where the slip directions may keep turning
+    // without a set repeating: if the residual has not halved within
+    // `patience` steps, c is halved as for a cycle.
+    const unsigned int patience      = 8;
+    double             best_residual = std::numeric_limits<double>::max();
+    unsigned int       steps_without_progress = 0;
+    const auto         halve_c                = [&]() {
+      c *= 0.5;
+      ++result.cycles_cured;
+      history.clear();
+      best_residual          = std::numeric_limits<double>::max();
+      steps_without_progress = 0;
+      linearisation          = linearise(m, eta, v, g, c);
+    };
 
     while (result.iterations < max_iterations)
       {
         ++result.iterations;
-        solve_for_state(D, v_free, g, state, eta, v);
-        history.push_back(state);
+        newton_step(D, linearisation, v_free, g, eta, v);
+        history.push_back(set_signature(linearisation));
 
-        state = predict_state(eta, v, g, c);
-        if (state == history.back())
+        linearisation                    = linearise(m, eta, v, g, c);
+        const std::vector<int> signature = set_signature(linearisation);
+        const double residual = complementarity_residual(m, eta, v, g, c);
+        if (signature == history.back() && residual <= tolerance)
           {
             result.converged = true;
             break;
           }
-        if (std::find(history.begin(), history.end(), state) != history.end())
+        if (residual <= 0.5 * best_residual)
           {
-            c *= 0.5;
-            ++result.cycles_cured;
-            history.clear();
+            best_residual          = residual;
+            steps_without_progress = 0;
           }
+        else
+          ++steps_without_progress;
+        if ((signature != history.back() &&
+             std::find(history.begin(), history.end(), signature) !=
+               history.end()) ||
+            steps_without_progress >= patience)
+          halve_c();
       }
+    state.resize(g.size());
+    for (unsigned int p = 0; p < g.size(); ++p)
+      state[p] = linearisation[p].state;
     return result;
   }
 } // namespace Contact

@@ -105,17 +105,19 @@ namespace Contact
   // friction law (3.6) where the body slips, 0 (inside the bound) where it
   // sticks.
   template <int dim>
-  double ManufacturedSolution<dim>::contact_load(const Point<dim>     &p,
-                                                 const Tensor<1, dim> &normal,
-                                                 const Tensor<1, dim> &tangent,
-                                                 const double          t) const
+  Tensor<1, dim>
+  ManufacturedSolution<dim>::contact_load(const Point<dim>     &p,
+                                          const Tensor<1, dim> &normal,
+                                          const double          t) const
   {
-    const double sigma_tau = (stress(p, t) * normal) * tangent;
-    const double w_tau     = velocity(p, t) * tangent;
-    const double eta       = (w_tau == 0. ? 0. :
-                                            friction_law.bound(std::abs(w_tau)) *
-                                        (w_tau > 0 ? 1. : -1.));
-    return sigma_tau + eta;
+    const auto tangential = [&](const Tensor<1, dim> &vector) {
+      return vector - (vector * normal) * normal;
+    };
+    const Tensor<1, dim> sigma_tau = tangential(stress(p, t) * normal);
+    const Tensor<1, dim> w_tau     = tangential(velocity(p, t));
+    const double         rate      = w_tau.norm();
+    return sigma_tau + (rate == 0. ? Tensor<1, dim>() :
+                                     friction_law.bound(rate) / rate * w_tau);
   }
 
   template <int dim>

@@ -102,14 +102,14 @@ namespace Contact
     for (unsigned int p = 0; p < contact_nodes.size(); ++p)
       {
         const ContactNode<dim> &node = contact_nodes[p];
-        const double            rate = std::abs(slip_velocity[p]);
+        const double rate = node.tangential_vector(slip_velocity, p).norm();
         status[node.scalar_dof] = (node_state[p] == NodeState::stick ? 1 : 2);
         slip_rate[node.scalar_dof]      = rate;
         friction_bound[node.scalar_dof] = friction_law.bound(rate);
         if (node.weight > 0)
           for (unsigned int d = 0; d < dim; ++d)
             traction[node.dofs[d]] =
-              -friction_force[p] / node.weight * node.tangent[d];
+              -node.tangential_vector(friction_force, p)[d] / node.weight;
       }
     traction.compress(VectorOperation::insert);
 
@@ -275,11 +275,17 @@ namespace Contact
           if (n_slip > 0)
             pcout << ", slip zone x in [" << slip_from << ", " << slip_to
                   << "]";
-          double friction = 0;
+          // The sum of the nodal forces: along the tangent in 2D, as a
+          // vector in 3D.
+          Tensor<1, dim> friction;
           for (unsigned int p = 0; p < contact_nodes.size(); ++p)
-            friction += friction_force[p];
-          pcout << "; friction force " << friction << ", momentum "
-                << momentum() << std::endl;
+            friction += contact_nodes[p].tangential_vector(friction_force, p);
+          pcout << "; friction force ";
+          if (dim == 2)
+            pcout << friction * contact_nodes[0].tangents[0];
+          else
+            pcout << friction;
+          pcout << ", momentum " << momentum() << std::endl;
           t = pending_report_times.erase(t);
         }
       else

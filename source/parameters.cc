@@ -158,6 +158,13 @@ namespace Contact
         Patterns::List(Patterns::Integer(0, 254)),
         "Boundary ids of Gamma_3: bilateral contact (u.n = 0) with friction.");
       prm.declare_entry(
+        "Symmetry boundary ids",
+        "",
+        Patterns::List(Patterns::Integer(0, 254)),
+        "Boundary ids of symmetry planes (rollers): u.n = 0 and no tangential "
+        "traction. The paper's block extruded in z with both z faces here is "
+        "the 2D plane strain problem.");
+      prm.declare_entry(
         "Tractions",
         "3: 0; -600*t",
         Patterns::Anything(),
@@ -172,8 +179,9 @@ namespace Contact
   {
     prm.enter_subsection("Boundary conditions");
     {
-      clamped_ids = parse_boundary_ids(prm.get("Clamped boundary ids"));
-      contact_ids = parse_boundary_ids(prm.get("Contact boundary ids"));
+      clamped_ids  = parse_boundary_ids(prm.get("Clamped boundary ids"));
+      contact_ids  = parse_boundary_ids(prm.get("Contact boundary ids"));
+      symmetry_ids = parse_boundary_ids(prm.get("Symmetry boundary ids"));
       tractions.clear();
       for (const std::string &piece :
            Utilities::split_string_list(prm.get("Tractions"), '|'))

@@ -161,6 +161,8 @@ namespace Contact
       claim(id, "Clamped boundary ids");
     for (const auto id : parameters.boundary.contact_ids)
       claim(id, "Contact boundary ids");
+    for (const auto id : parameters.boundary.symmetry_ids)
+      claim(id, "Symmetry boundary ids");
     for (const auto &traction : parameters.boundary.tractions)
       claim(traction.first, "Tractions");
   }
@@ -227,18 +229,105 @@ namespace Contact
                                                  dim),
                                                constraints);
 
-    AffineConstraints<double> normal_constraints(locally_relevant_dofs);
-    const std::set<types::boundary_id> contact_ids(
+    // Gamma_3 and the symmetry planes in one call, so that where they meet
+    // (an edge in 3D) both normal directions are constrained.
+    AffineConstraints<double>    normal_constraints(locally_relevant_dofs);
+    std::set<types::boundary_id> normal_ids(
       parameters.boundary.contact_ids.begin(),
       parameters.boundary.contact_ids.end());
+    normal_ids.insert(parameters.boundary.symmetry_ids.begin(),
+                      parameters.boundary.symmetry_ids.end());
     VectorTools::compute_no_normal_flux_constraints(
-      dof_handler, 0, contact_ids, normal_constraints, mapping);
+      dof_handler, 0, normal_ids, normal_constraints, mapping);
     normal_constraints.close();
 
     constraints.merge(normal_constraints,
                       AffineConstraints<double>::left_object_wins);
     constraints.close();
   }
+
+
+  // @sect4{The tangent basis of a node of Gamma_3}
+
+  // The directions in which a node of Gamma_3 may not move are the rows of
+  // its constraints: the normal that compute_no_normal_flux_constraints
+  // used, the normal of a symmetry plane it also lies on, a clamped
+  // component. The friction acts in the orthogonal complement, spanned by
+  // the node's tangents. With one constraint (the usual case) the tangents
+  // are, in 2D, the normal turned by +90 degrees, (-n_y, n_x), so that on the
+  // paper's Gamma_3 (n = (0, -1)) t = e_x; in 3D the coordinate axis least
+  // aligned with n, made orthogonal to n, and n x t_1. Where Gamma_3 meets a
+  // symmetry plane in 3D one direction is left; the second tangent is then
+  // zero, which the Tresca solver reads as a component without force. The
+  // Tresca ball is isotropic, so the solution does not depend on the choice
+  // of basis, only the components that represent it do.
+  namespace
+  {
+    std::array<Tensor<1, 2>, 1> tangent_basis(const Tensor<1, 2> &normal)
+    {
+      return {{Tensor<1, 2>({-normal[1], normal[0]})}};
+    }
+
+    std::array<Tensor<1, 3>, 2> tangent_basis(const Tensor<1, 3> &normal)
+    {
+      unsigned int axis = 0;
+      for (unsigned int d = 1; d < 3; ++d)
+        if (std::abs(normal[d]) < std::abs(normal[axis]))
+          axis = d;
+      Tensor<1, 3> first;
+      first[axis] = 1;
+      first -= (first * normal) * normal;
+      first /= first.norm();
+      return {{first, cross_product_3d(normal, first)}};
+    }
+
+    // Orthonormal rows of the constraints of one node's dofs (Gram-Schmidt).
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    constrained_directions(const std::array<types::global_dof_index, dim> &dofs,
+                           const AffineConstraints<double> &constraints)
+    {
+      std::vector<Tensor<1, dim>> directions;
+      for (unsigned int d = 0; d < dim; ++d)
+        if (constraints.is_constrained(dofs[d]))
+          {
+            Tensor<1, dim> row;
+            row[d] = 1;
+            for (const auto &[dof, weight] :
+                 *constraints.get_constraint_entries(dofs[d]))
+              for (unsigned int e = 0; e < dim; ++e)
+                if (dofs[e] == dof)
+                  row[e] -= weight;
+            for (const Tensor<1, dim> &direction : directions)
+              row -= (row * direction) * direction;
+            if (row.norm() > 1e-10)
+              directions.push_back(row / row.norm());
+          }
+      return directions;
+    }
+
+    // The tangents of a node whose constraint rows are `constrained`
+    // (1 <= size < dim); `normal` orients them.
+    template <int dim>
+    std::array<Tensor<1, dim>, dim - 1>
+    free_tangents(const std::vector<Tensor<1, dim>> &constrained,
+                  const Tensor<1, dim>              &normal)
+    {
+      if (constrained.size() == 1)
+        return tangent_basis(constrained[0] * normal > 0 ? constrained[0] :
+                                                           -constrained[0]);
+      std::array<Tensor<1, dim>, dim - 1> tangents;
+      if constexpr (dim == 3)
+        {
+          const Tensor<1, dim> reference = tangent_basis(normal)[0];
+          tangents[0] = cross_product_3d(constrained[0], constrained[1]);
+          tangents[0] /= tangents[0].norm();
+          if (tangents[0] * reference < 0)
+            tangents[0] *= -1;
+        }
+      return tangents;
+    }
+  } // namespace
 
 
   // @sect4{ContactProblem::setup_contact_nodes}
@@ -307,14 +396,15 @@ namespace Contact
     contact_nodes.clear();
     for (auto &[key, node] : nodes)
       {
-        unsigned int n_constrained = 0;
-        for (const auto dof : node.dofs)
-          n_constrained += constraints.is_constrained(dof) ? 1 : 0;
-        if (n_constrained == dim)
+        const auto constrained =
+          constrained_directions<dim>(node.dofs, constraints);
+        AssertThrow(!constrained.empty(),
+                    ExcInternalError("A node of Gamma_3 without its normal "
+                                     "constraint."));
+        if (constrained.size() == dim)
           continue;
         node.normal /= node.normal.norm();
-        node.tangent[0] = -node.normal[1];
-        node.tangent[1] = node.normal[0];
+        node.tangents = free_tangents(constrained, node.normal);
         contact_nodes.push_back(node);
       }
     // Order along Gamma_3, so that output and reports read left to right.
@@ -326,11 +416,6 @@ namespace Contact
                     return a.location[d] < b.location[d];
                 return false;
               });
-    AssertThrow(dim == 2 || friction_law.is_frictionless() ||
-                  contact_nodes.empty(),
-                ExcMessage("Friction on Gamma_3 in 3D (two tangential "
-                           "directions) is not implemented yet; set "
-                           "'Friction/Friction law = none' or Dimension = 2."));
   }
 
 

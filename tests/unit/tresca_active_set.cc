@@ -1,8 +1,9 @@
 /* The primal-dual active set method for the nodal Tresca problem
-   v = v_free - D eta, |eta_p| <= g_p, eta_p = g_p sign(v_p) where v_p != 0:
-   it terminates with sets that repeat, its answer satisfies the friction
-   conditions exactly and agrees with projected Gauss-Seidel on the dual
-   problem min 1/2 eta^T D eta - v_free^T eta, |eta_p| <= g_p. Also Anderson
+   v = v_free - D eta, |eta_p| <= g_p, eta_p = g_p v_p / |v_p| where
+   v_p != 0, with one (2D) and two (3D) tangential components per node: it
+   terminates, its answer satisfies the friction conditions to round-off and
+   agrees with projected gradient steps on the dual problem
+   min 1/2 eta^T D eta - v_free^T eta, |eta_p| <= g_p. Also Anderson
    acceleration on a linear fixed point. */
 
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -15,8 +16,10 @@
 
 using namespace Contact;
 
-// A dense SPD compliance: the inverse of a 1D chain stiffness.
-FullMatrix<double> make_delassus(const unsigned int n)
+// A dense SPD compliance: the inverse of a 1D chain stiffness, and with two
+// tangential components per node its Kronecker product with an anisotropic
+// 2 x 2 coupling, so that the slip direction is not that of v_free.
+FullMatrix<double> make_delassus(const unsigned int n, const unsigned int m)
 {
   LAPACKFullMatrix<double> stiffness(n, n);
   for (unsigned int i = 0; i < n; ++i)
@@ -26,73 +29,99 @@ FullMatrix<double> make_delassus(const unsigned int n)
         stiffness(i, i - 1) = stiffness(i - 1, i) = -1;
     }
   stiffness.invert();
-  FullMatrix<double> D(n, n);
+  const double       coupling[2][2] = {{1., 0.4}, {0.4, 0.8}};
+  FullMatrix<double> D(n * m, n * m);
   for (unsigned int i = 0; i < n; ++i)
     for (unsigned int j = 0; j < n; ++j)
-      D(i, j) = stiffness(i, j);
+      for (unsigned int a = 0; a < m; ++a)
+        for (unsigned int b = 0; b < m; ++b)
+          D(i * m + a, j * m + b) =
+            stiffness(i, j) * (m == 1 ? 1. : coupling[a][b]);
   return D;
 }
 
-Vector<double> projected_gauss_seidel(const FullMatrix<double> &D,
-                                      const Vector<double>     &v_free,
-                                      const Vector<double>     &g)
+// The dual problem min 1/2 eta^T D eta - v_free^T eta, |eta_p| <= g_p, by
+// projected gradient steps: slow, but obviously right.
+Vector<double> projected_gradient(const FullMatrix<double> &D,
+                                  const unsigned int        m,
+                                  const Vector<double>     &v_free,
+                                  const Vector<double>     &g)
 {
-  Vector<double> eta(v_free.size());
-  for (unsigned int sweep = 0; sweep < 20000; ++sweep)
-    for (unsigned int p = 0; p < eta.size(); ++p)
-      {
-        double r = v_free[p];
-        for (unsigned int q = 0; q < eta.size(); ++q)
-          if (q != p)
-            r -= D(p, q) * eta[q];
-        eta[p] = std::max(-g[p], std::min(g[p], r / D(p, p)));
-      }
+  Vector<double> eta(v_free.size()), gradient(v_free.size());
+  const double   step = 1. / D.frobenius_norm();
+  for (unsigned int iteration = 0; iteration < 100000; ++iteration)
+    {
+      D.vmult(gradient, eta);
+      gradient -= v_free;
+      eta.add(-step, gradient);
+      for (unsigned int p = 0; p < g.size(); ++p)
+        {
+          double norm = 0;
+          for (unsigned int i = 0; i < m; ++i)
+            norm += eta[p * m + i] * eta[p * m + i];
+          norm = std::sqrt(norm);
+          if (norm > g[p])
+            for (unsigned int i = 0; i < m; ++i)
+              eta[p * m + i] *= g[p] / norm;
+        }
+    }
   return eta;
 }
 
 void check(const std::string    &name,
+           const unsigned int    m,
            const Vector<double> &v_free,
            const Vector<double> &g,
            const double          c_factor)
 {
-  const unsigned int       n = v_free.size();
-  const FullMatrix<double> D = make_delassus(n);
-  Vector<double>           c(n), eta(n), v(n);
+  const unsigned int       n = g.size();
+  const FullMatrix<double> D = make_delassus(n, m);
+  Vector<double>           c(n), eta(n * m), v(n * m);
   for (unsigned int p = 0; p < n; ++p)
-    c[p] = c_factor / D(p, p);
+    c[p] = c_factor / D(p * m, p * m);
   std::vector<NodeState> state;
   const TrescaResult     result =
-    solve_tresca_2d(D, v_free, g, c, 100, eta, v, state);
+    solve_tresca(D, m, v_free, g, c, 100, eta, v, state);
 
   // The friction conditions, and v = v_free - D eta.
-  double         violation = 0;
-  Vector<double> residual(n);
+  Vector<double> residual(n * m);
   D.vmult(residual, eta);
   residual += v;
   residual -= v_free;
-  violation = residual.linfty_norm();
+  double      violation = residual.linfty_norm();
+  std::string pattern;
   for (unsigned int p = 0; p < n; ++p)
     {
-      violation = std::max(violation, std::abs(eta[p]) - g[p]);
+      double eta_norm = 0, v_norm = 0, eta_dot_v = 0;
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          eta_norm += eta[p * m + i] * eta[p * m + i];
+          v_norm += v[p * m + i] * v[p * m + i];
+          eta_dot_v += eta[p * m + i] * v[p * m + i];
+        }
+      eta_norm  = std::sqrt(eta_norm);
+      v_norm    = std::sqrt(v_norm);
+      violation = std::max(violation, eta_norm - g[p]);
       if (state[p] == NodeState::stick)
-        violation = std::max(violation, std::abs(v[p]));
+        violation = std::max(violation, v_norm);
       else
-        violation = std::max(violation, g[p] * std::abs(v[p]) - eta[p] * v[p]);
+        violation =
+          std::max({violation, g[p] * v_norm - eta_dot_v, g[p] - eta_norm});
+      pattern += (state[p] == NodeState::stick ? 'S' :
+                  m == 2                       ? 'L' :
+                  eta[p] > 0                   ? '+' :
+                  eta[p] < 0                   ? '-' :
+                                                 '0');
     }
-  Vector<double> difference = projected_gauss_seidel(D, v_free, g);
+  Vector<double> difference = projected_gradient(D, m, v_free, g);
   difference -= eta;
 
-  std::string pattern;
-  for (const NodeState s : state)
-    pattern += (s == NodeState::stick         ? 'S' :
-                s == NodeState::slip_positive ? '+' :
-                                                '-');
-  std::cout << name << " (c = " << c_factor << "/D_pp): converged "
-            << result.converged << " in " << result.iterations
-            << " iterations, cycles cured " << result.cycles_cured << ", state "
-            << pattern
+  std::cout << name << " (m = " << m << ", c = " << c_factor
+            << "/D_pp): converged " << result.converged << " in "
+            << result.iterations << " iterations, cycles cured "
+            << result.cycles_cured << ", state " << pattern
             << ", conditions hold: " << (violation < 1e-12 ? "yes" : "no")
-            << ", agrees with projected Gauss-Seidel: "
+            << ", agrees with projected gradient: "
             << (difference.linfty_norm() < 1e-9 ? "yes" : "no") << std::endl;
 }
 
@@ -122,16 +151,28 @@ int main()
   std::cout << std::setprecision(6);
   const unsigned int n = 12;
   Vector<double>     ramp(n), g(n), zero_bound(n), large_bound(n);
+  Vector<double>     turning(2 * n);
   for (unsigned int p = 0; p < n; ++p)
     {
       ramp[p]        = -0.4 + 0.1 * p;
       g[p]           = 0.08;
       large_bound[p] = 100;
+      // In the plane: a slip velocity whose size grows and whose direction
+      // turns by 30 degrees from node to node.
+      const double angle = p * M_PI / 6;
+      turning[2 * p]     = (0.1 * p - 0.3) * std::cos(angle);
+      turning[2 * p + 1] = (0.1 * p - 0.3) * std::sin(angle);
     }
   for (const double c : {0.05, 1., 20.})
-    check("stick and slip both ways", ramp, g, c);
-  check("all stick", ramp, large_bound, 0.05);
-  check("no friction (g = 0)", ramp, zero_bound, 0.05);
+    check("stick and slip both ways", 1, ramp, g, c);
+  check("all stick", 1, ramp, large_bound, 0.05);
+  check("no friction (g = 0)", 1, ramp, zero_bound, 0.05);
+  Vector<double> g_plane(n);
+  g_plane = 0.3;
+  for (const double c : {0.05, 1., 20.})
+    check("stick and slip in turning directions", 2, turning, g_plane, c);
+  check("all stick", 2, turning, large_bound, 0.05);
+  check("no friction (g = 0)", 2, turning, zero_bound, 0.05);
   anderson(0);
   anderson(3);
 }
