@@ -184,6 +184,7 @@ namespace Contact
     void setup_system();
     void make_constraints();
     void setup_contact_nodes();
+    void setup_probes();
 
     // assembly.cc
     void   assemble_matrices();
@@ -214,12 +215,13 @@ namespace Contact
     ErrorNorms compute_errors() const;
 
     // output.cc
-    void prepare_output_directory();
-    void write_vtu();
-    void write_time_series_row(const StepStatistics &statistics);
-    void print_progress(const StepStatistics &statistics) const;
-    void report_contact_state();
-    void print_summary() const;
+    void           prepare_output_directory();
+    void           write_vtu();
+    void           write_time_series_row(const StepStatistics &statistics);
+    Tensor<1, dim> probe_displacement(const unsigned int probe) const;
+    void           print_progress(const StepStatistics &statistics) const;
+    void           report_contact_state();
+    void           print_summary() const;
 
     // Parameters and the objects fixed by them.
     const Parameters   parameters;
@@ -295,7 +297,11 @@ namespace Contact
 
     EnergyBalance energy;
 
-    // Output state.
+    // Output state. A probe is the cell around an 'Output/Probe points'
+    // entry and the point in its reference cell.
+    std::vector<
+      std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>>
+                                                probes;
     std::ofstream                               time_series;
     std::vector<std::pair<double, std::string>> pvd_records;
     std::vector<double>                         pending_report_times;

@@ -32,6 +32,10 @@ namespace Contact
     std::vector<std::vector<double>> refinement_points;
     double                           refinement_radius;
     double                           refinement_grading;
+    /** Rotation of the whole mesh about the origin [degrees], about the
+     *  z axis in 2D and about `rotation_axis` in 3D. */
+    double              rotation_angle;
+    std::vector<double> rotation_axis;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm, const unsigned int dim);
@@ -154,11 +158,13 @@ namespace Contact
     unsigned int        vtu_interval;
     bool                write_time_series;
     std::vector<double> report_times;
-    unsigned int        progress_interval;
-    bool                print_timings;
+    /** Points whose displacement goes into time_series.csv. */
+    std::vector<std::vector<double>> probe_points;
+    unsigned int                     progress_interval;
+    bool                             print_timings;
 
     static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm, const unsigned int dim);
   };
 
   struct Parameters

@@ -42,9 +42,35 @@ namespace Contact
              "kinetic_energy,elastic_energy,external_work,viscous_dissipation,"
              "friction_dissipation,numerical_dissipation,energy_residual,momentum_x,"
              "momentum_y"
-          << (dim == 3 ? ",momentum_z" : "")
-          << (exact_solution ? ",error_V,error_w_L2,error_u_L2\n" : "\n");
+          << (dim == 3 ? ",momentum_z" : "");
+        for (unsigned int i = 0; i < probes.size(); ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            time_series << ",probe" << i + 1 << "_u_"
+                        << "xyz"[d];
+        time_series << (exact_solution ? ",error_V,error_w_L2,error_u_L2\n" :
+                                         "\n");
       }
+  }
+
+
+  // @sect4{ContactProblem::probe_displacement}
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactProblem<dim>::probe_displacement(const unsigned int probe) const
+  {
+    const auto &[cell, reference_point] = probes[probe];
+    FEValues<dim> fe_values(mapping,
+                            fe,
+                            Quadrature<dim>(reference_point),
+                            update_values);
+    fe_values.reinit(cell);
+    std::vector<Vector<double>> values(1, Vector<double>(dim));
+    fe_values.get_function_values(displacement, values);
+    Tensor<1, dim> u;
+    for (unsigned int d = 0; d < dim; ++d)
+      u[d] = values[0][d];
+    return u;
   }
 
 
@@ -72,6 +98,9 @@ namespace Contact
     const Tensor<1, dim> p = momentum();
     for (unsigned int d = 0; d < dim; ++d)
       time_series << ',' << p[d];
+    for (unsigned int i = 0; i < probes.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        time_series << ',' << probe_displacement(i)[d];
     if (exact_solution)
       {
         time_series << ',' << current_errors.displacement_V << ','
@@ -344,8 +373,10 @@ namespace Contact
   template void ContactProblem<dim>::write_vtu();                           \
   template void ContactProblem<dim>::print_progress(const StepStatistics &) \
     const;                                                                  \
-  template void ContactProblem<dim>::report_contact_state();                \
-  template void ContactProblem<dim>::print_summary() const;
+  template void           ContactProblem<dim>::report_contact_state();      \
+  template void           ContactProblem<dim>::print_summary() const;       \
+  template Tensor<1, dim> ContactProblem<dim>::probe_displacement(          \
+    const unsigned int) const;
 
   INSTANTIATE(2)
   INSTANTIATE(3)

@@ -8,6 +8,7 @@
 #include <parameters.h>
 
 #include <cctype>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
@@ -38,6 +39,37 @@ namespace Contact
            Utilities::string_to_int(Utilities::split_string_list(text)))
         ids.push_back(static_cast<types::boundary_id>(id));
       return ids;
+    }
+
+    // Points 'x, y[, z]' separated by ';', each of exactly dim numbers.
+    std::vector<std::vector<double>> parse_points(const std::string &text,
+                                                  const unsigned int dim,
+                                                  const std::string &entry)
+    {
+      std::vector<std::vector<double>> points;
+      for (const std::string &point : Utilities::split_string_list(text, ';'))
+        {
+          const auto          coordinates = Utilities::split_string_list(point);
+          bool                numbers     = (coordinates.size() == dim);
+          std::vector<double> values;
+          for (const std::string &coordinate : coordinates)
+            {
+              char        *end   = nullptr;
+              const double value = std::strtod(coordinate.c_str(), &end);
+              numbers            = numbers && *end == '\0';
+              values.push_back(value);
+            }
+          AssertThrow(numbers,
+                      ExcMessage("Entry '" + entry +
+                                 "': cannot read the "
+                                 "point '" +
+                                 point +
+                                 "'; allowed are points "
+                                 "of exactly Dimension numbers 'x, y[, z]', "
+                                 "separated by ';'."));
+          points.push_back(values);
+        }
+      return points;
     }
   } // namespace
 
@@ -90,6 +122,19 @@ namespace Contact
         Patterns::Double(0.05, 1),
         "gamma of the grading: for a singularity u ~ r^lambda, gamma = "
         "1 - lambda restores the rate of smooth solutions.");
+      prm.declare_entry(
+        "Rotation angle",
+        "0",
+        Patterns::Double(-360, 360),
+        "Rotates the mesh about the origin by this angle [degrees] (about "
+        "the z axis in 2D, about the Rotation axis in 3D): an inclined "
+        "Gamma_3. Loads, refinement and probe points are given in the "
+        "rotated frame.");
+      prm.declare_entry("Rotation axis",
+                        "0, 0, 1",
+                        Patterns::List(Patterns::Double(), 3, 3),
+                        "Axis of the rotation in 3D, three numbers, not all "
+                        "zero.");
     }
     prm.leave_subsection();
   }
@@ -103,24 +148,25 @@ namespace Contact
         Utilities::split_string_list(prm.get("Lower corner")));
       upper_corner = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Upper corner")));
-      cell_size   = prm.get_double("Cell size");
-      fe_degree   = prm.get_integer("Finite element degree");
-      lumped_mass = (prm.get("Mass matrix") == "lumped");
-      refinement_points.clear();
-      for (const std::string &point :
-           Utilities::split_string_list(prm.get("Refinement points"), ';'))
-        {
-          refinement_points.push_back(
-            Utilities::string_to_double(Utilities::split_string_list(point)));
-          check_entry(refinement_points.back().size() == dim,
-                      "Geometry/Refinement points",
-                      refinement_points.back().size(),
-                      "points of exactly Dimension coordinates each");
-        }
+      cell_size          = prm.get_double("Cell size");
+      fe_degree          = prm.get_integer("Finite element degree");
+      lumped_mass        = (prm.get("Mass matrix") == "lumped");
+      refinement_points  = parse_points(prm.get("Refinement points"),
+                                       dim,
+                                       "Geometry/Refinement points");
       refinement_radius  = prm.get_double("Refinement radius");
       refinement_grading = prm.get_double("Refinement grading");
+      rotation_angle     = prm.get_double("Rotation angle");
+      rotation_axis      = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Rotation axis")));
     }
     prm.leave_subsection();
+
+    check_entry(dim == 2 || rotation_angle == 0 || rotation_axis[0] != 0 ||
+                  rotation_axis[1] != 0 || rotation_axis[2] != 0,
+                "Geometry/Rotation axis",
+                0.,
+                "a nonzero vector");
 
     check_entry(lower_corner.size() == dim,
                 "Geometry/Lower corner",
@@ -589,6 +635,12 @@ namespace Contact
                         Patterns::List(Patterns::Double(0)),
                         "Times [s] at which the stick/slip state of Gamma_3 "
                         "is printed (at the nearest step).");
+      prm.declare_entry("Probe points",
+                        "",
+                        Patterns::Anything(),
+                        "Points 'x, y[, z]' separated by ';' whose "
+                        "displacement is written to time_series.csv "
+                        "(columns probe<i>_u_x, ...).");
       prm.declare_entry("Progress interval",
                         "1",
                         Patterns::Integer(0),
@@ -603,7 +655,8 @@ namespace Contact
     prm.leave_subsection();
   }
 
-  void OutputParameters::parse_parameters(ParameterHandler &prm)
+  void OutputParameters::parse_parameters(ParameterHandler  &prm,
+                                          const unsigned int dim)
   {
     prm.enter_subsection("Output");
     {
@@ -612,6 +665,8 @@ namespace Contact
       write_time_series = prm.get_bool("Time series");
       report_times      = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Report times")));
+      probe_points =
+        parse_points(prm.get("Probe points"), dim, "Output/Probe points");
       progress_interval = prm.get_integer("Progress interval");
       print_timings     = prm.get_bool("Print timings");
     }
@@ -655,7 +710,7 @@ namespace Contact
     solver.parse_parameters(prm);
     verification.parse_parameters(prm);
     convergence_study.parse_parameters(prm);
-    output.parse_parameters(prm);
+    output.parse_parameters(prm, dimension);
 
     std::ostringstream text;
     prm.print_parameters(text,

@@ -7,6 +7,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -20,6 +21,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace Contact
 {
@@ -56,6 +58,18 @@ namespace Contact
       }
     GridGenerator::subdivided_hyper_rectangle(
       triangulation, subdivisions, lower, upper, /*colorize=*/true);
+    const double angle = geometry.rotation_angle * numbers::PI / 180.;
+    if (angle != 0.)
+      {
+        if constexpr (dim == 2)
+          GridTools::rotate(angle, triangulation);
+        else
+          GridTools::rotate(Tensor<1, 3>({geometry.rotation_axis[0],
+                                          geometry.rotation_axis[1],
+                                          geometry.rotation_axis[2]}),
+                            angle,
+                            triangulation);
+      }
     triangulation.refine_global(n_refinements);
     grade_towards_points();
     check_boundary_ids();
@@ -201,6 +215,7 @@ namespace Contact
       vector->reinit(locally_owned_dofs, mpi_communicator);
 
     setup_contact_nodes();
+    setup_probes();
 
     pcout << "Mesh: " << triangulation.n_global_active_cells() << " cells, Q"
           << fe.degree << ", " << dof_handler.n_dofs() << " unknowns, "
@@ -419,13 +434,47 @@ namespace Contact
   }
 
 
+  // @sect4{ContactProblem::setup_probes}
+
+  template <int dim>
+  void ContactProblem<dim>::setup_probes()
+  {
+    probes.clear();
+    for (const auto &coordinates : parameters.output.probe_points)
+      {
+        Point<dim> point;
+        for (unsigned int d = 0; d < dim; ++d)
+          point[d] = coordinates[d];
+        // Depending on the triangulation, a point outside the mesh either
+        // throws or gives an invalid cell.
+        bool found = false;
+        try
+          {
+            probes.push_back(GridTools::find_active_cell_around_point(
+              mapping, dof_handler, point));
+            found = (probes.back().first.state() == IteratorState::valid);
+          }
+        catch (const ExceptionBase &)
+          {}
+        std::ostringstream text;
+        text << point;
+        AssertThrow(found,
+                    ExcMessage("Entry 'Output/Probe points': the point " +
+                               text.str() +
+                               " is not in the mesh; allowed are points of "
+                               "the body."));
+      }
+  }
+
+
 #define INSTANTIATE(dim)                                         \
   template void ContactProblem<dim>::make_grid();                \
   template void ContactProblem<dim>::grade_towards_points();     \
   template void ContactProblem<dim>::check_boundary_ids() const; \
   template void ContactProblem<dim>::setup_system();             \
   template void ContactProblem<dim>::make_constraints();         \
-  template void ContactProblem<dim>::setup_contact_nodes();
+  template void ContactProblem<dim>::setup_contact_nodes();      \
+  template void ContactProblem<dim>::setup_probes();
 
   INSTANTIATE(2)
   INSTANTIATE(3)
