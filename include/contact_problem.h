@@ -210,6 +210,11 @@ namespace Contact
                                        const VectorType       &w) const;
     Vector<double> tangential_velocities(const VectorType &w) const;
 
+    // contact_problem.cc: Gauss rules of n points per direction on the
+    // cells and faces of the mesh's shape.
+    Quadrature<dim>     gauss_rule(const unsigned int n_points) const;
+    Quadrature<dim - 1> face_gauss_rule(const unsigned int n_points) const;
+
     // verification.cc
     void       check_manufactured_setup() const;
     ErrorNorms compute_errors() const;
@@ -246,19 +251,22 @@ namespace Contact
     const bool body_force_is_constant;
     VectorType constant_body_load;
 
-    // Mesh and finite element space. The scalar space of the same degree
-    // carries the Gamma_3 quantities (slip rate, status) for output.
-    parallel::distributed::Triangulation<dim> triangulation;
-    const FESystem<dim>                       fe;
-    const FE_Q<dim>                           scalar_fe;
-    const MappingQ<dim>                       mapping;
-    const QGauss<dim>                         quadrature;
-    const Quadrature<dim>                     mass_quadrature;
-    const QGauss<dim - 1>                     face_quadrature;
-    DoFHandler<dim>                           dof_handler;
-    DoFHandler<dim>                           scalar_dof_handler;
-    IndexSet                                  locally_owned_dofs;
-    IndexSet                                  locally_relevant_dofs;
+    // Mesh and finite element space: p4est's distributed triangulation and
+    // Q_p for hypercubes, a plain triangulation with P_p (FE_SimplexP and
+    // its MappingFE) for simplices, which p4est does not handle. The scalar
+    // space of the same degree carries the Gamma_3 quantities (slip rate,
+    // status) for output.
+    const std::unique_ptr<Triangulation<dim>>       triangulation;
+    const std::unique_ptr<const FiniteElement<dim>> scalar_fe;
+    const FESystem<dim>                             fe;
+    const std::unique_ptr<const Mapping<dim>>       mapping;
+    const Quadrature<dim>                           quadrature;
+    const Quadrature<dim>                           mass_quadrature;
+    const Quadrature<dim - 1>                       face_quadrature;
+    DoFHandler<dim>                                 dof_handler;
+    DoFHandler<dim>                                 scalar_dof_handler;
+    IndexSet                                        locally_owned_dofs;
+    IndexSet                                        locally_relevant_dofs;
 
     // Clamped Gamma_1 (u = 0, hence w = 0) and the bilateral Gamma_3
     // (w.n = 0) as homogeneous constraints: V_h of the paper.

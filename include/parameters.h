@@ -26,8 +26,11 @@ namespace Contact
     std::vector<double> lower_corner;
     std::vector<double> upper_corner;
     double              cell_size;
-    unsigned int        fe_degree;
-    bool                lumped_mass;
+    /** Triangles/tetrahedra with P_p instead of quadrilaterals/hexahedra
+     *  with Q_p. */
+    bool         simplex_cells;
+    unsigned int fe_degree;
+    bool         lumped_mass;
     /** Points towards which the mesh is refined, each of dim coordinates. */
     std::vector<std::vector<double>> refinement_points;
     double                           refinement_radius;

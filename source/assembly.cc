@@ -37,11 +37,11 @@ namespace Contact
     const double mu1      = material.viscosity_mu1;
     const double mu2      = material.viscosity_mu2;
 
-    FEValues<dim>                        fe_values(mapping,
+    FEValues<dim>                        fe_values(*mapping,
                             fe,
                             quadrature,
                             update_gradients | update_JxW_values);
-    FEValues<dim>                        mass_values(mapping,
+    FEValues<dim>                        mass_values(*mapping,
                               fe,
                               mass_quadrature,
                               update_values | update_JxW_values);
@@ -143,12 +143,12 @@ namespace Contact
     for (const auto &traction : tractions)
       traction.second->set_time(time);
 
-    FEValues<dim>                        fe_values(mapping,
+    FEValues<dim>                        fe_values(*mapping,
                             fe,
                             quadrature,
                             update_values | update_quadrature_points |
                               update_JxW_values);
-    FEFaceValues<dim>                    fe_face_values(mapping,
+    FEFaceValues<dim>                    fe_face_values(*mapping,
                                      fe,
                                      face_quadrature,
                                      update_values | update_quadrature_points |
@@ -275,9 +275,9 @@ namespace Contact
         u0 = exact_u0.get();
         u1 = exact_u1.get();
       }
-    VectorTools::interpolate(mapping, dof_handler, *u0, displacement);
+    VectorTools::interpolate(*mapping, dof_handler, *u0, displacement);
     constraints.distribute(displacement);
-    VectorTools::interpolate(mapping, dof_handler, *u1, velocity);
+    VectorTools::interpolate(*mapping, dof_handler, *u1, velocity);
     constraints.distribute(velocity);
     old_displacement = displacement;
     old_velocity     = velocity;

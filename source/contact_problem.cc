@@ -2,9 +2,18 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/fe/mapping_q.h>
 
 #include <contact_problem.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace Contact
@@ -18,7 +27,60 @@ namespace Contact
       return static_cast<unsigned int>(
         std::ceil(time.end_time / time.time_step - 1e-9));
     }
+
+    template <int dim>
+    std::unique_ptr<Triangulation<dim>>
+    make_triangulation(const GeometryParameters &geometry,
+                       const MPI_Comm            communicator)
+    {
+      if (geometry.simplex_cells)
+        return std::make_unique<Triangulation<dim>>();
+      return std::make_unique<parallel::distributed::Triangulation<dim>>(
+        communicator);
+    }
+
+    template <int dim>
+    std::unique_ptr<const FiniteElement<dim>>
+    make_scalar_element(const GeometryParameters &geometry)
+    {
+      if (geometry.simplex_cells)
+        return std::make_unique<FE_SimplexP<dim>>(geometry.fe_degree);
+      return std::make_unique<FE_Q<dim>>(geometry.fe_degree);
+    }
+
+    // Straight-sided cells: the linear mapping of the cell shape.
+    template <int dim>
+    std::unique_ptr<const Mapping<dim>>
+    make_mapping(const GeometryParameters &geometry)
+    {
+      if (geometry.simplex_cells)
+        return std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
+      return std::make_unique<MappingQ<dim>>(1);
+    }
   } // namespace
+
+
+  // @sect4{ContactProblem::gauss_rule}
+
+  // QGaussSimplex has rules of up to 4 points per direction in this deal.II
+  // (exact for degree 7); more are not needed for the degrees offered.
+  template <int dim>
+  Quadrature<dim>
+  ContactProblem<dim>::gauss_rule(const unsigned int n_points) const
+  {
+    if (parameters.geometry.simplex_cells)
+      return QGaussSimplex<dim>(std::min(n_points, 4u));
+    return QGauss<dim>(n_points);
+  }
+
+  template <int dim>
+  Quadrature<dim - 1>
+  ContactProblem<dim>::face_gauss_rule(const unsigned int n_points) const
+  {
+    if (parameters.geometry.simplex_cells)
+      return QGaussSimplex<dim - 1>(std::min(n_points, 4u));
+    return QGauss<dim - 1>(n_points);
+  }
 
 
   // @sect4{ContactProblem::ContactProblem}
@@ -32,19 +94,19 @@ namespace Contact
     , mpi_communicator(MPI_COMM_WORLD)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
-    , triangulation(mpi_communicator)
-    , fe(FE_Q<dim>(parameters.geometry.fe_degree), dim)
-    , scalar_fe(parameters.geometry.fe_degree)
-    , mapping(1)
-    , quadrature(parameters.geometry.fe_degree + 1)
-    , mass_quadrature(
-        parameters.geometry.lumped_mass ?
-          Quadrature<dim>(
-            QGaussLobatto<dim>(parameters.geometry.fe_degree + 1)) :
-          Quadrature<dim>(QGauss<dim>(parameters.geometry.fe_degree + 1)))
-    , face_quadrature(parameters.geometry.fe_degree + 1)
-    , dof_handler(triangulation)
-    , scalar_dof_handler(triangulation)
+    , triangulation(
+        make_triangulation<dim>(parameters.geometry, mpi_communicator))
+    , scalar_fe(make_scalar_element<dim>(parameters.geometry))
+    , fe(*scalar_fe, dim)
+    , mapping(make_mapping<dim>(parameters.geometry))
+    , quadrature(gauss_rule(parameters.geometry.fe_degree + 1))
+    , mass_quadrature(parameters.geometry.lumped_mass ?
+                        Quadrature<dim>(QGaussLobatto<dim>(
+                          parameters.geometry.fe_degree + 1)) :
+                        quadrature)
+    , face_quadrature(face_gauss_rule(parameters.geometry.fe_degree + 1))
+    , dof_handler(*triangulation)
+    , scalar_dof_handler(*triangulation)
     , body_force_is_constant(
         !parameters.verification.manufactured_solution &&
         !expression_uses_variable(parameters.loads.body_force, "t"))

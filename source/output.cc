@@ -60,7 +60,7 @@ namespace Contact
   ContactProblem<dim>::probe_displacement(const unsigned int probe) const
   {
     const auto &[cell, reference_point] = probes[probe];
-    FEValues<dim> fe_values(mapping,
+    FEValues<dim> fe_values(*mapping,
                             fe,
                             Quadrature<dim>(reference_point),
                             update_values);
@@ -147,11 +147,11 @@ namespace Contact
     const double lambda       = material.lambda(dim);
     const bool   plane_strain = (dim == 2 && !material.plane_stress);
 
-    const unsigned int               n_cells = triangulation.n_active_cells();
+    const unsigned int               n_cells = triangulation->n_active_cells();
     std::vector<Vector<double>>      stress(dim * (dim + 1) / 2,
                                        Vector<double>(n_cells));
     Vector<double>                   von_mises(n_cells);
-    FEValues<dim>                    fe_values(mapping,
+    FEValues<dim>                    fe_values(*mapping,
                             fe,
                             quadrature,
                             update_gradients | update_JxW_values);
@@ -228,7 +228,7 @@ namespace Contact
     data_out.add_data_vector(von_mises,
                              "von_mises",
                              DataOut<dim>::type_cell_data);
-    data_out.build_patches(mapping, fe.degree);
+    data_out.build_patches(*mapping, fe.degree);
 
     DataOutBase::VtkFlags flags;
     flags.time              = time;

@@ -94,6 +94,13 @@ namespace Contact
         Patterns::Double(0),
         "Edge length h of the cells [m]; every edge of the box is divided "
         "into round(length/h) equal parts (the paper's h).");
+      prm.declare_entry(
+        "Cell shape",
+        "hypercube",
+        Patterns::Selection("hypercube|simplex"),
+        "hypercube: quadrilaterals/hexahedra with Q_p elements; simplex: "
+        "every box cell split into triangles (2) or tetrahedra (5), with "
+        "P_p elements (FE_SimplexP).");
       prm.declare_entry("Finite element degree",
                         "1",
                         Patterns::Integer(1, 4),
@@ -149,6 +156,7 @@ namespace Contact
       upper_corner = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Upper corner")));
       cell_size          = prm.get_double("Cell size");
+      simplex_cells      = (prm.get("Cell shape") == "simplex");
       fe_degree          = prm.get_integer("Finite element degree");
       lumped_mass        = (prm.get("Mass matrix") == "lumped");
       refinement_points  = parse_points(prm.get("Refinement points"),
@@ -183,6 +191,17 @@ namespace Contact
                   "a value above the matching Geometry/Lower corner in "
                   "every coordinate");
     check_entry(cell_size > 0, "Geometry/Cell size", cell_size, "h > 0");
+    // Gauss-Lobatto nodes and local refinement exist for hypercubes only
+    // in deal.II 9.4.
+    AssertThrow(!(simplex_cells && lumped_mass),
+                ExcMessage("Entry 'Geometry/Mass matrix': lumped is "
+                           "available for 'Cell shape = hypercube' only; "
+                           "allowed with simplices is consistent."));
+    check_entry(!simplex_cells || refinement_radius == 0.,
+                "Geometry/Refinement radius",
+                refinement_radius,
+                "0 with 'Cell shape = simplex' (local refinement of "
+                "simplices is not available)");
   }
 
 
@@ -711,6 +730,18 @@ namespace Contact
     verification.parse_parameters(prm);
     convergence_study.parse_parameters(prm);
     output.parse_parameters(prm, dimension);
+
+    // On a P2 triangle the integral of a vertex basis function is zero:
+    // the nodal friction weights m_p of Gamma_3 would vanish at the vertices.
+    AssertThrow(!(dimension == 3 && geometry.simplex_cells &&
+                  geometry.fe_degree > 1 &&
+                  friction.law != FrictionParameters::Law::none),
+                ExcMessage("Entry 'Geometry/Finite element degree': P" +
+                           std::to_string(geometry.fe_degree) +
+                           " on tetrahedra gives zero nodal friction weights "
+                           "at the vertices of Gamma_3; allowed with friction "
+                           "in 3D are degree 1 on simplices or any degree on "
+                           "hexahedra."));
 
     std::ostringstream text;
     prm.print_parameters(text,

@@ -56,21 +56,37 @@ namespace Contact
           n /= 2;
         ++n_refinements;
       }
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation, subdivisions, lower, upper, /*colorize=*/true);
+    if (geometry.simplex_cells)
+      {
+        // deal.II 9.4 cannot colorize the simplex box itself.
+        GridGenerator::subdivided_hyper_rectangle_with_simplices(*triangulation,
+                                                                 subdivisions,
+                                                                 lower,
+                                                                 upper);
+        for (const auto &face : triangulation->active_face_iterators())
+          if (face->at_boundary())
+            for (unsigned int d = 0; d < dim; ++d)
+              for (const unsigned int side : {0u, 1u})
+                if (std::abs(face->center()[d] - (side ? upper : lower)[d]) <
+                    1e-10 * (upper[d] - lower[d]))
+                  face->set_boundary_id(2 * d + side);
+      }
+    else
+      GridGenerator::subdivided_hyper_rectangle(
+        *triangulation, subdivisions, lower, upper, /*colorize=*/true);
     const double angle = geometry.rotation_angle * numbers::PI / 180.;
     if (angle != 0.)
       {
         if constexpr (dim == 2)
-          GridTools::rotate(angle, triangulation);
+          GridTools::rotate(angle, *triangulation);
         else
           GridTools::rotate(Tensor<1, 3>({geometry.rotation_axis[0],
                                           geometry.rotation_axis[1],
                                           geometry.rotation_axis[2]}),
                             angle,
-                            triangulation);
+                            *triangulation);
       }
-    triangulation.refine_global(n_refinements);
+    triangulation->refine_global(n_refinements);
     grade_towards_points();
     check_boundary_ids();
   }
@@ -102,11 +118,11 @@ namespace Contact
           point[d] = coordinates[d];
         points.push_back(point);
       }
-    const double h = triangulation.begin_active()->extent_in_direction(0);
+    const double h = triangulation->begin_active()->extent_in_direction(0);
     for (bool flagged = true; flagged;)
       {
         flagged = false;
-        for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &cell : triangulation->active_cell_iterators())
           {
             double r = std::numeric_limits<double>::max();
             for (const Point<dim> &point : points)
@@ -121,14 +137,14 @@ namespace Contact
               }
           }
         if (flagged)
-          triangulation.execute_coarsening_and_refinement();
+          triangulation->execute_coarsening_and_refinement();
       }
 
     const std::set<types::boundary_id> contact_ids(
       parameters.boundary.contact_ids.begin(),
       parameters.boundary.contact_ids.end());
     std::set<unsigned int> levels_on_gamma3;
-    for (const auto &cell : triangulation.active_cell_iterators())
+    for (const auto &cell : triangulation->active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary() && contact_ids.count(face->boundary_id()) != 0)
           levels_on_gamma3.insert(cell->level());
@@ -150,7 +166,7 @@ namespace Contact
   void ContactProblem<dim>::check_boundary_ids() const
   {
     const std::vector<types::boundary_id> mesh_ids =
-      triangulation.get_boundary_ids();
+      triangulation->get_boundary_ids();
     std::string available;
     for (const auto id : mesh_ids)
       available += (available.empty() ? "" : ", ") + std::to_string(id);
@@ -190,7 +206,7 @@ namespace Contact
     TimerOutput::Scope t(computing_timer, "Setup");
 
     dof_handler.distribute_dofs(fe);
-    scalar_dof_handler.distribute_dofs(scalar_fe);
+    scalar_dof_handler.distribute_dofs(*scalar_fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 
@@ -217,8 +233,9 @@ namespace Contact
     setup_contact_nodes();
     setup_probes();
 
-    pcout << "Mesh: " << triangulation.n_global_active_cells() << " cells, Q"
-          << fe.degree << ", " << dof_handler.n_dofs() << " unknowns, "
+    pcout << "Mesh: " << triangulation->n_global_active_cells() << " cells, "
+          << (parameters.geometry.simplex_cells ? 'P' : 'Q') << fe.degree
+          << ", " << dof_handler.n_dofs() << " unknowns, "
           << contact_nodes.size() << " free nodes on Gamma_3" << std::endl;
   }
 
@@ -237,7 +254,7 @@ namespace Contact
     constraints.reinit(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     for (const auto id : parameters.boundary.clamped_ids)
-      VectorTools::interpolate_boundary_values(mapping,
+      VectorTools::interpolate_boundary_values(*mapping,
                                                dof_handler,
                                                id,
                                                Functions::ZeroFunction<dim>(
@@ -253,7 +270,7 @@ namespace Contact
     normal_ids.insert(parameters.boundary.symmetry_ids.begin(),
                       parameters.boundary.symmetry_ids.end());
     VectorTools::compute_no_normal_flux_constraints(
-      dof_handler, 0, normal_ids, normal_constraints, mapping);
+      dof_handler, 0, normal_ids, normal_constraints, *mapping);
     normal_constraints.close();
 
     constraints.merge(normal_constraints,
@@ -358,14 +375,14 @@ namespace Contact
     const std::set<types::boundary_id> contact_ids(
       parameters.boundary.contact_ids.begin(),
       parameters.boundary.contact_ids.end());
-    FEFaceValues<dim>                    fe_face_values(mapping,
+    FEFaceValues<dim>                    fe_face_values(*mapping,
                                      fe,
                                      face_quadrature,
                                      update_values | update_normal_vectors |
                                        update_JxW_values);
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> scalar_dofs(
-      scalar_fe.n_dofs_per_cell());
+      scalar_fe->n_dofs_per_cell());
     std::map<types::global_dof_index, ContactNode<dim>> nodes;
 
     auto scalar_cell = scalar_dof_handler.begin_active();
@@ -381,18 +398,21 @@ namespace Contact
               fe_face_values.reinit(cell, f);
               cell->get_dof_indices(cell_dofs);
               this_scalar_cell->get_dof_indices(scalar_dofs);
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              // The dofs of the face (has_support_on_face is not exact
+              // for simplex elements).
+              for (unsigned int j = 0; j < fe.n_dofs_per_face(f); ++j)
                 {
+                  const unsigned int i = fe.face_to_cell_index(j, f);
                   const auto [component, base_index] =
                     fe.system_to_component_index(i);
-                  if (component != 0 || !fe.has_support_on_face(i, f))
+                  if (component != 0)
                     continue;
                   ContactNode<dim> &node = nodes[cell_dofs[i]];
                   for (unsigned int d = 0; d < dim; ++d)
                     node.dofs[d] =
                       cell_dofs[fe.component_to_system_index(d, base_index)];
                   node.scalar_dof = scalar_dofs[base_index];
-                  node.location   = mapping.transform_unit_to_real_cell(
+                  node.location   = mapping->transform_unit_to_real_cell(
                     cell, fe.base_element(0).unit_support_point(base_index));
                   for (const unsigned int q :
                        fe_face_values.quadrature_point_indices())
@@ -451,7 +471,7 @@ namespace Contact
         try
           {
             probes.push_back(GridTools::find_active_cell_around_point(
-              mapping, dof_handler, point));
+              *mapping, dof_handler, point));
             found = (probes.back().first.state() == IteratorState::valid);
           }
         catch (const ExceptionBase &)
