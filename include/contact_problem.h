@@ -178,13 +178,15 @@ namespace Contact
 
   private:
     // setup.cc
-    void make_grid();
-    void grade_towards_points();
-    void check_boundary_ids() const;
-    void setup_system();
-    void make_constraints();
-    void setup_contact_nodes();
-    void setup_probes();
+    void         make_grid();
+    unsigned int make_box();
+    unsigned int read_mesh_file();
+    void         grade_towards_points();
+    void         check_boundary_ids() const;
+    void         setup_system();
+    void         make_constraints();
+    void         setup_contact_nodes();
+    void         setup_probes();
 
     // assembly.cc
     void   assemble_matrices();

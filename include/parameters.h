@@ -23,6 +23,9 @@ namespace Contact
 
   struct GeometryParameters
   {
+    /** A gmsh .msh file; empty: the box of lower_corner, upper_corner. */
+    std::string         mesh_file;
+    unsigned int        mesh_refinements;
     std::vector<double> lower_corner;
     std::vector<double> upper_corner;
     double              cell_size;

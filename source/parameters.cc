@@ -80,6 +80,19 @@ namespace Contact
   {
     prm.enter_subsection("Geometry");
     {
+      prm.declare_entry(
+        "Mesh file",
+        "",
+        Patterns::Anything(),
+        "A gmsh .msh file (format 2.2 or 4) whose physical ids are the "
+        "boundary ids of 'Boundary conditions'; a relative path is taken "
+        "relative to the .prm file that sets it. Empty: the box of Lower and "
+        "Upper corner with the Cell size.");
+      prm.declare_entry("Mesh refinements",
+                        "0",
+                        Patterns::Integer(0, 10),
+                        "Global refinements of the mesh read from the Mesh "
+                        "file.");
       prm.declare_entry("Lower corner",
                         "0, 0",
                         Patterns::List(Patterns::Double(), 2, 3),
@@ -151,7 +164,9 @@ namespace Contact
   {
     prm.enter_subsection("Geometry");
     {
-      lower_corner = Utilities::string_to_double(
+      mesh_file        = Utilities::trim(prm.get("Mesh file"));
+      mesh_refinements = prm.get_integer("Mesh refinements");
+      lower_corner     = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Lower corner")));
       upper_corner = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Upper corner")));

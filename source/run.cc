@@ -114,6 +114,10 @@ namespace Contact
     // directory). The text between includes goes to ParameterHandler with
     // the lines before it blanked, so its error messages keep the line
     // numbers of the file.
+    //
+    // A relative 'Geometry/Mesh file' is made relative to the file that sets
+    // it, for the same reason (only in the full parse, where it is
+    // declared).
     void parse_parameter_file(ParameterHandler  &prm,
                               const std::string &file,
                               const bool         skip_undefined)
@@ -124,11 +128,28 @@ namespace Contact
       const std::filesystem::path directory =
         std::filesystem::path(file).parent_path();
       std::string  chunk, blank_lines;
-      unsigned int depth = 0;
-      const auto   flush = [&]() {
+      unsigned int depth     = 0;
+      const auto   mesh_file = [&]() {
+        prm.enter_subsection("Geometry");
+        const std::string name = prm.get("Mesh file");
+        prm.leave_subsection();
+        return Utilities::trim(name);
+      };
+      const auto flush = [&]() {
+        const std::string  mesh_before = skip_undefined ? "" : mesh_file();
         std::istringstream text(chunk);
         prm.parse_input(text, file, "", skip_undefined);
         chunk.clear();
+        if (skip_undefined)
+          return;
+        const std::filesystem::path mesh = mesh_file();
+        if (!mesh.empty() && mesh.string() != mesh_before && mesh.is_relative())
+          {
+            prm.enter_subsection("Geometry");
+            prm.set("Mesh file",
+                    (directory / mesh).lexically_normal().string());
+            prm.leave_subsection();
+          }
       };
       for (std::string line; std::getline(in, line);)
         {

@@ -7,6 +7,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -17,6 +18,7 @@
 #include <contact_problem.h>
 
 #include <algorithm>
+#include <fstream>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -27,15 +29,44 @@ namespace Contact
 {
   // @sect4{ContactProblem::make_grid}
 
+  // The coarse mesh (the box, or a gmsh file), turned by the 'Rotation
+  // angle', refined globally, then graded towards the 'Refinement points'.
+  template <int dim>
+  void ContactProblem<dim>::make_grid()
+  {
+    const auto        &geometry = parameters.geometry;
+    const unsigned int n_refinements =
+      geometry.mesh_file.empty() ? make_box() : read_mesh_file();
+    const double angle = geometry.rotation_angle * numbers::PI / 180.;
+    if (angle != 0.)
+      {
+        if constexpr (dim == 2)
+          GridTools::rotate(angle, *triangulation);
+        else
+          GridTools::rotate(Tensor<1, 3>({geometry.rotation_axis[0],
+                                          geometry.rotation_axis[1],
+                                          geometry.rotation_axis[2]}),
+                            angle,
+                            *triangulation);
+      }
+    triangulation->refine_global(n_refinements);
+    grade_towards_points();
+    check_boundary_ids();
+  }
+
+
+  // @sect4{ContactProblem::make_box}
+
   // The box of the .prm, colorized so that its faces carry the boundary
   // ids 0 (x = x0), 1 (x = x1), 2 (y = y0), 3 (y = y1), 4, 5 (z). Every edge
   // is divided into round(length / h) parts, as the paper divides its
-  // boundary "into 1/h equal parts". The mesh is built as the coarsest box
-  // that refines globally into this one: the same cells, but meshes of a
-  // convergence study then share their coarse mesh, which is what
-  // interpolate_to_different_mesh needs, and p4est gets few trees.
+  // boundary "into 1/h equal parts". The coarse mesh is the coarsest box
+  // that refines globally into this one (the number of refinements is
+  // returned): the same cells, but meshes of a convergence study then share
+  // their coarse mesh, which is what interpolate_to_different_mesh needs,
+  // and p4est gets few trees.
   template <int dim>
-  void ContactProblem<dim>::make_grid()
+  unsigned int ContactProblem<dim>::make_box()
   {
     const auto               &geometry = parameters.geometry;
     Point<dim>                lower, upper;
@@ -48,7 +79,8 @@ namespace Contact
           std::max(1., std::round((upper[d] - lower[d]) / geometry.cell_size));
       }
     unsigned int n_refinements = 0;
-    while (std::all_of(subdivisions.begin(),
+    while (!geometry.simplex_cells &&
+           std::all_of(subdivisions.begin(),
                        subdivisions.end(),
                        [](const unsigned int n) { return n % 2 == 0; }))
       {
@@ -74,21 +106,55 @@ namespace Contact
     else
       GridGenerator::subdivided_hyper_rectangle(
         *triangulation, subdivisions, lower, upper, /*colorize=*/true);
-    const double angle = geometry.rotation_angle * numbers::PI / 180.;
-    if (angle != 0.)
-      {
-        if constexpr (dim == 2)
-          GridTools::rotate(angle, *triangulation);
-        else
-          GridTools::rotate(Tensor<1, 3>({geometry.rotation_axis[0],
-                                          geometry.rotation_axis[1],
-                                          geometry.rotation_axis[2]}),
-                            angle,
-                            *triangulation);
-      }
-    triangulation->refine_global(n_refinements);
-    grade_towards_points();
-    check_boundary_ids();
+    return n_refinements;
+  }
+
+
+  // @sect4{ContactProblem::read_mesh_file}
+
+  // A gmsh mesh: its physical ids become boundary ids. It is read once
+  // into a serial triangulation to check that its cells have the declared
+  // 'Cell shape' (p4est would fail on simplices with a less clear message),
+  // then into the triangulation of the run.
+  template <int dim>
+  unsigned int ContactProblem<dim>::read_mesh_file()
+  {
+    const std::string &file = parameters.geometry.mesh_file;
+    const auto         read = [&](Triangulation<dim> &target) {
+      std::ifstream in(file);
+      AssertThrow(in,
+                  ExcMessage("Entry 'Geometry/Mesh file': cannot open '" +
+                             file +
+                             "'; allowed is a readable gmsh .msh file."));
+      GridIn<dim> grid_in(target);
+      try
+        {
+          grid_in.read_msh(in);
+        }
+      catch (const ExceptionBase &exc)
+        {
+          std::ostringstream reason;
+          exc.print_info(reason);
+          AssertThrow(false,
+                      ExcMessage("Entry 'Geometry/Mesh file': cannot read '" +
+                                 file + "' as a gmsh mesh of dimension " +
+                                 std::to_string(dim) + ": " +
+                                 Utilities::trim(reason.str())));
+        }
+    };
+    Triangulation<dim> serial;
+    read(serial);
+    const bool simplices = serial.all_reference_cells_are_simplex();
+    AssertThrow(simplices == parameters.geometry.simplex_cells &&
+                  (simplices || serial.all_reference_cells_are_hyper_cube()),
+                ExcMessage("Entry 'Geometry/Cell shape': the mesh '" + file +
+                           "' has " +
+                           (simplices ? "simplices" : "not only simplices") +
+                           "; allowed is 'Cell shape = " +
+                           (simplices ? "simplex" : "hypercube") +
+                           "' for it (meshes of one cell shape only)."));
+    read(*triangulation);
+    return parameters.geometry.mesh_refinements;
   }
 
 
@@ -487,14 +553,16 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                         \
-  template void ContactProblem<dim>::make_grid();                \
-  template void ContactProblem<dim>::grade_towards_points();     \
-  template void ContactProblem<dim>::check_boundary_ids() const; \
-  template void ContactProblem<dim>::setup_system();             \
-  template void ContactProblem<dim>::make_constraints();         \
-  template void ContactProblem<dim>::setup_contact_nodes();      \
-  template void ContactProblem<dim>::setup_probes();
+#define INSTANTIATE(dim)                                                 \
+  template void         ContactProblem<dim>::make_grid();                \
+  template unsigned int ContactProblem<dim>::make_box();                 \
+  template unsigned int ContactProblem<dim>::read_mesh_file();           \
+  template void         ContactProblem<dim>::grade_towards_points();     \
+  template void         ContactProblem<dim>::check_boundary_ids() const; \
+  template void         ContactProblem<dim>::setup_system();             \
+  template void         ContactProblem<dim>::make_constraints();         \
+  template void         ContactProblem<dim>::setup_contact_nodes();      \
+  template void         ContactProblem<dim>::setup_probes();
 
   INSTANTIATE(2)
   INSTANTIATE(3)
