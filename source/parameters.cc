@@ -754,8 +754,10 @@ namespace Contact
                 ExcMessage("Entry 'Geometry/Finite element degree': P" +
                            std::to_string(geometry.fe_degree) +
                            " on tetrahedra gives zero nodal friction weights "
-                           "at the vertices of Gamma_3; allowed with friction "
-                           "in 3D are degree 1 on simplices or any degree on "
+                           "at the vertices of Gamma_3 (positive lumped "
+                           "weights were tried and give only first order in "
+                           "the V-norm); allowed with friction in 3D are "
+                           "degree 1 on simplices or any degree on "
                            "hexahedra."));
 
     std::ostringstream text;
