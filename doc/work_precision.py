@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Work-precision studies: error against wall time for the element
-degree, h and k, the convexification tolerance and Anderson acceleration.
+(Q1, Q2 on quadrilaterals, P1, P2 on triangles), h and k, the convexification tolerance and Anderson acceleration.
 
 Each setting is one convergence study (the program's own 'Convergence
 study' mode), run one after the other; the script collects their
@@ -30,6 +30,10 @@ PAPER = [
     ("Q2, k = h, graded", ["Geometry/Finite element degree=2",
                            "Geometry/Refinement points=0, 0.5",
                            "Geometry/Refinement radius=0.25"]),
+    ("P1 triangles, k = h", ["Geometry/Cell shape=simplex",
+                             "Geometry/Finite element degree=1"]),
+    ("P2 triangles, k = h", ["Geometry/Cell shape=simplex",
+                             "Geometry/Finite element degree=2"]),
 ]
 PAPER_COMMON = ["Geometry/Cell size=0.5", "Time/Time step=0.5", "Convergence study/Levels=6",
                 "Convergence study/Reference degree=2", "Output/VTU interval=0",
@@ -42,6 +46,12 @@ MANUFACTURED = [
                    "Time/Time step=0.25", "Convergence study/Levels=4"]),
     ("Q2, k = h/4", ["Geometry/Finite element degree=2", "Geometry/Cell size=0.25",
                      "Time/Time step=0.0625", "Convergence study/Levels=3"]),
+    ("P1 triangles, k = h", ["Geometry/Cell shape=simplex", "Geometry/Finite element degree=1",
+                             "Geometry/Cell size=0.125", "Time/Time step=0.125",
+                             "Convergence study/Levels=4"]),
+    ("P2 triangles, k = h/4", ["Geometry/Cell shape=simplex", "Geometry/Finite element degree=2",
+                               "Geometry/Cell size=0.25", "Time/Time step=0.0625",
+                               "Convergence study/Levels=3"]),
     ("Q1, k = h, lumped mass", ["Geometry/Finite element degree=1", "Geometry/Cell size=0.125",
                                 "Time/Time step=0.125", "Convergence study/Levels=4",
                                 "Geometry/Mass matrix=lumped"]),
