@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """Work-precision studies: error against wall time for the element
-(Q1, Q2 on quadrilaterals, P1, P2 on triangles), h and k, the convexification tolerance and Anderson acceleration.
+(Q1, Q2 on quadrilaterals, P1, P2 on triangles), h and k, the
+convexification tolerance, the active set parameter and Anderson
+acceleration.
 
 Each setting is one convergence study (the program's own 'Convergence
 study' mode), run one after the other; the script collects their
@@ -59,6 +61,11 @@ MANUFACTURED = [
                                    "Geometry/Cell size=0.125", "Time/Time step=0.125",
                                    "Convergence study/Levels=4",
                                    "Solver/Convexification tolerance=1e-6"]),
+    ("Q1, k = h, active set parameter 1", ["Geometry/Finite element degree=1",
+                                           "Geometry/Cell size=0.125",
+                                           "Time/Time step=0.125",
+                                           "Convergence study/Levels=4",
+                                           "Solver/Active set parameter=1"]),
     ("Q1, k = h, plain convexification", ["Geometry/Finite element degree=1",
                                           "Geometry/Cell size=0.125",
                                           "Time/Time step=0.125",

@@ -39,6 +39,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <factorization.h>
 #include <friction.h>
 #include <manufactured_solution.h>
 #include <parameters.h>
@@ -278,13 +279,12 @@ namespace Contact
     // B_h, and K = (1/k) M + A_h + k B_h, all condensed with the
     // constraints. K is factorised once per run. momentum_density[d]_i =
     // int rho phi_i . e_d gives the momentum of a velocity as a dot product.
-    MatrixType                                      mass_matrix;
-    MatrixType                                      viscosity_matrix;
-    MatrixType                                      elasticity_matrix;
-    MatrixType                                      system_matrix;
-    std::array<VectorType, dim>                     momentum_density;
-    SolverControl                                   direct_solver_control;
-    std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
+    MatrixType                     mass_matrix;
+    MatrixType                     viscosity_matrix;
+    MatrixType                     elasticity_matrix;
+    MatrixType                     system_matrix;
+    std::array<VectorType, dim>    momentum_density;
+    std::unique_ptr<Factorization> factorization;
 
     // The time step state: u_n, w_n, the loads F_n and the previous ones.
     double       time;
@@ -318,7 +318,7 @@ namespace Contact
     StepStatistics                              totals;
     double                                      max_relative_energy_residual;
     // Mean wall time of one forward/back substitution with the factor of K
-    // (measured on the solves that build the Delassus operator).
+    // (measured on the solve for the free velocity of every step).
     double                                           substitution_time = 0;
     ErrorNorms                                       current_errors;
     ErrorNorms                                       max_errors;

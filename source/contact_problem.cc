@@ -94,6 +94,9 @@ namespace Contact
     , mpi_communicator(MPI_COMM_WORLD)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+    , body_force_is_constant(
+        !parameters.verification.manufactured_solution &&
+        !expression_uses_variable(parameters.loads.body_force, "t"))
     , triangulation(
         make_triangulation<dim>(parameters.geometry, mpi_communicator))
     , scalar_fe(make_scalar_element<dim>(parameters.geometry))
@@ -107,9 +110,6 @@ namespace Contact
     , face_quadrature(face_gauss_rule(parameters.geometry.fe_degree + 1))
     , dof_handler(*triangulation)
     , scalar_dof_handler(*triangulation)
-    , body_force_is_constant(
-        !parameters.verification.manufactured_solution &&
-        !expression_uses_variable(parameters.loads.body_force, "t"))
     , time(0)
     , step_number(0)
     , pending_report_times(parameters.output.report_times)

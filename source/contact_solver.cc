@@ -21,11 +21,8 @@ namespace Contact
   void ContactProblem<dim>::factorize_system_matrix()
   {
     TimerOutput::Scope t(computing_timer, "Factorization");
-    direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
-      direct_solver_control,
-      TrilinosWrappers::SolverDirect::AdditionalData(
-        false, parameters.solver.direct_solver));
-    direct_solver->initialize(system_matrix);
+    factorization =
+      Factorization::create(parameters.solver.direct_solver, system_matrix);
   }
 
 
@@ -84,9 +81,12 @@ namespace Contact
     delassus_columns.resize(n * m);
     active_set_parameter.reinit(n);
 
+    // The columns of C^T (the tangents, condensed like every load) and
+    // the parameters c_q of the active set method: the parameter times the
+    // node's stiffness t^T K t, averaged over its tangents.
+    std::vector<VectorType>              tangent_loads(n * m);
     std::vector<types::global_dof_index> node_dofs(dim);
     Vector<double>                       node_tangent(dim);
-    VectorType column(locally_owned_dofs, mpi_communicator);
     for (unsigned int q = 0; q < n; ++q)
       for (unsigned int j = 0; j < m; ++j)
         {
@@ -96,20 +96,15 @@ namespace Contact
               node_dofs[d]    = node.dofs[d];
               node_tangent[d] = node.tangents[j][d];
             }
-          column = 0;
+          VectorType &column = tangent_loads[q * m + j];
+          column.reinit(locally_owned_dofs, mpi_communicator);
           constraints.distribute_local_to_global(node_tangent,
                                                  node_dofs,
                                                  column);
           column.compress(VectorOperation::add);
-          VectorType &Z_column = delassus_columns[q * m + j];
-          Z_column.reinit(locally_owned_dofs, mpi_communicator);
-          Timer substitution;
-          direct_solver->solve(Z_column, column);
-          substitution_time += substitution.wall_time() / (n * m);
-          constraints.distribute(Z_column);
+          delassus_columns[q * m + j].reinit(locally_owned_dofs,
+                                             mpi_communicator);
 
-          // c_q of the active set method: the parameter times the node's
-          // stiffness t^T K t, averaged over its tangents.
           for (unsigned int a = 0; a < dim; ++a)
             for (unsigned int b = 0; b < dim; ++b)
               if (!constraints.is_constrained(node.dofs[a]) &&
@@ -120,6 +115,10 @@ namespace Contact
                   system_matrix.el(node.dofs[a], node.dofs[b]) *
                   node.tangents[j][b];
         }
+    // Z = K^{-1} C^T: one block solve.
+    factorization->solve(delassus_columns, tangent_loads);
+    for (VectorType &column : delassus_columns)
+      constraints.distribute(column);
 
     delassus_operator.reinit(n * m, n * m);
     for (unsigned int s = 0; s < n * m; ++s)
@@ -175,7 +174,9 @@ namespace Contact
     rhs.add(-1., product);
     constraints.set_zero(rhs);
 
-    direct_solver->solve(velocity, rhs);
+    Timer substitution;
+    factorization->solve(velocity, rhs);
+    substitution_time += substitution.wall_time() / n_time_steps;
     constraints.distribute(velocity);
 
     StepStatistics statistics;

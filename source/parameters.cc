@@ -528,12 +528,13 @@ namespace Contact
         "convexification combines; 0 gives the paper's plain iteration. An "
         "accelerated iterate that does not lower the step's energy is "
         "rejected.");
-      prm.declare_entry("Direct solver",
-                        "Amesos_Klu",
-                        Patterns::Selection(
-                          "Amesos_Klu|Amesos_Mumps|Amesos_Lapack"),
-                        "Trilinos Amesos direct solver that factorises K "
-                        "= (rho/k) M + A + k B once per run.");
+      prm.declare_entry(
+        "Direct solver",
+        "CHOLMOD",
+        Patterns::Selection("CHOLMOD|Amesos_Klu|Amesos_Mumps|Amesos_Lapack"),
+        "The direct solver that factorises K = (rho/k) M + A + k B once per "
+        "run: CHOLMOD (SuiteSparse's supernodal Cholesky, one process) or a "
+        "Trilinos Amesos solver.");
     }
     prm.leave_subsection();
   }

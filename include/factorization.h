@@ -1,0 +1,49 @@
+/**
+ * The factorisation of K = (1/k) M + A_h + k B_h, computed once per run,
+ * and its forward/back substitutions (DESIGN.md section 4). Two
+ * implementations behind one interface, chosen by 'Solver/Direct solver':
+ *
+ * - CHOLMOD (SuiteSparse): supernodal sparse Cholesky with BLAS-3 kernels,
+ *   for one process. K is symmetric positive definite (the constraints are
+ *   condensed symmetrically), so Cholesky applies; a block of right-hand
+ *   sides is solved in one call, which is how the columns of Z = K^{-1} C^T
+ *   are computed.
+ * - Trilinos Amesos (KLU, MUMPS, LAPACK) through deal.II's SolverDirect,
+ *   for distributed matrices.
+ */
+#ifndef contact_factorization_h
+#define contact_factorization_h
+
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace Contact
+{
+  using namespace dealii;
+
+  class Factorization
+  {
+  public:
+    virtual ~Factorization() = default;
+
+    /** x = K^{-1} b. */
+    virtual void solve(TrilinosWrappers::MPI::Vector       &x,
+                       const TrilinosWrappers::MPI::Vector &b) = 0;
+
+    /** x_i = K^{-1} b_i for a block of right-hand sides. */
+    virtual void solve(std::vector<TrilinosWrappers::MPI::Vector>       &x,
+                       const std::vector<TrilinosWrappers::MPI::Vector> &b);
+
+    /** 'CHOLMOD' or an Amesos solver name ('Amesos_Klu', ...). */
+    static std::unique_ptr<Factorization>
+    create(const std::string &solver, const TrilinosWrappers::SparseMatrix &K);
+  };
+} // namespace Contact
+
+#endif

@@ -1,0 +1,217 @@
+/* The factorisation of K: CHOLMOD for one process, Trilinos Amesos
+   otherwise. */
+
+#include <deal.II/base/exceptions.h>
+
+#include <factorization.h>
+#include <suitesparse/cholmod.h>
+
+#include <Epetra_CrsMatrix.h>
+
+#include <algorithm>
+#include <cstring>
+
+namespace Contact
+{
+  void Factorization::solve(std::vector<TrilinosWrappers::MPI::Vector>       &x,
+                            const std::vector<TrilinosWrappers::MPI::Vector> &b)
+  {
+    AssertDimension(x.size(), b.size());
+    for (unsigned int i = 0; i < b.size(); ++i)
+      solve(x[i], b[i]);
+  }
+
+
+  namespace
+  {
+    // @sect3{Amesos}
+
+    class AmesosFactorization : public Factorization
+    {
+    public:
+      AmesosFactorization(const std::string                    &name,
+                          const TrilinosWrappers::SparseMatrix &K)
+        : control(1, 0)
+        , solver(control,
+                 TrilinosWrappers::SolverDirect::AdditionalData(false, name))
+      {
+        solver.initialize(K);
+      }
+
+      void solve(TrilinosWrappers::MPI::Vector       &x,
+                 const TrilinosWrappers::MPI::Vector &b) override
+      {
+        solver.solve(x, b);
+      }
+
+      using Factorization::solve;
+
+    private:
+      SolverControl                  control;
+      TrilinosWrappers::SolverDirect solver;
+    };
+
+
+    // @sect3{CHOLMOD}
+
+    // K is handed to CHOLMOD as its upper triangle in compressed columns;
+    // since K is symmetric, row i of the (row-wise) Epetra matrix holds
+    // column i. The factor is supernodal (CHOLMOD's default for matrices
+    // like this one) and its solves run on blocks of right-hand sides.
+    class CholmodFactorization : public Factorization
+    {
+    public:
+      explicit CholmodFactorization(const TrilinosWrappers::SparseMatrix &K)
+      {
+        cholmod_start(&common);
+        const Epetra_CrsMatrix &matrix = K.trilinos_matrix();
+        AssertThrow(matrix.Comm().NumProc() == 1,
+                    ExcMessage("'Solver/Direct solver = CHOLMOD' runs on one "
+                               "process; choose an Amesos solver for more."));
+        const int   n       = matrix.NumMyRows();
+        std::size_t n_upper = 0;
+        for (int i = 0; i < n; ++i)
+          {
+            int     length;
+            double *values;
+            int    *columns;
+            matrix.ExtractMyRowView(i, length, values, columns);
+            for (int k = 0; k < length; ++k)
+              n_upper += (columns[k] <= i ? 1 : 0);
+          }
+        cholmod_sparse *A            = cholmod_allocate_sparse(n,
+                                                    n,
+                                                    n_upper,
+                                                    /*sorted=*/true,
+                                                    /*packed=*/true,
+                                                    /*stype=*/1,
+                                                    CHOLMOD_REAL,
+                                                    &common);
+        auto           *column_start = static_cast<int *>(A->p);
+        auto           *row_index    = static_cast<int *>(A->i);
+        auto           *entries      = static_cast<double *>(A->x);
+        std::size_t     position     = 0;
+        for (int i = 0; i < n; ++i)
+          {
+            column_start[i] = position;
+            int     length;
+            double *values;
+            int    *columns;
+            matrix.ExtractMyRowView(i, length, values, columns);
+            std::vector<std::pair<int, double>> upper;
+            for (int k = 0; k < length; ++k)
+              if (columns[k] <= i)
+                upper.emplace_back(columns[k], values[k]);
+            std::sort(upper.begin(), upper.end());
+            for (const auto &[row, value] : upper)
+              {
+                row_index[position] = row;
+                entries[position]   = value;
+                ++position;
+              }
+          }
+        column_start[n] = position;
+
+        factor = cholmod_analyze(A, &common);
+        cholmod_factorize(A, factor, &common);
+        cholmod_free_sparse(&A, &common);
+        AssertThrow(common.status == CHOLMOD_OK &&
+                      factor->minor == static_cast<std::size_t>(n),
+                    ExcMessage("CHOLMOD could not factorise K = (1/k) M + A + "
+                               "k B: it is not positive definite (status " +
+                               std::to_string(common.status) + ")."));
+      }
+
+      ~CholmodFactorization() override
+      {
+        cholmod_free_dense(&solution, &common);
+        cholmod_free_dense(&workspace_y, &common);
+        cholmod_free_dense(&workspace_e, &common);
+        cholmod_free_factor(&factor, &common);
+        cholmod_finish(&common);
+      }
+
+      void solve(TrilinosWrappers::MPI::Vector       &x,
+                 const TrilinosWrappers::MPI::Vector &b) override
+      {
+        solve_block(
+          1,
+          [&](double *column, unsigned int) {
+            std::memcpy(column, b.begin(), sizeof(double) * b.size());
+          },
+          [&](const double *column, unsigned int) {
+            std::memcpy(x.begin(), column, sizeof(double) * x.size());
+          });
+      }
+
+      void solve(std::vector<TrilinosWrappers::MPI::Vector>       &x,
+                 const std::vector<TrilinosWrappers::MPI::Vector> &b) override
+      {
+        // Blocks of 64 columns: BLAS-3 speed without a dense copy of all
+        // of Z at once.
+        const unsigned int block = 64;
+        for (unsigned int first = 0; first < b.size(); first += block)
+          {
+            const unsigned int n_columns =
+              std::min<unsigned int>(block, b.size() - first);
+            solve_block(
+              n_columns,
+              [&](double *column, unsigned int j) {
+                std::memcpy(column,
+                            b[first + j].begin(),
+                            sizeof(double) * b[first + j].size());
+              },
+              [&](const double *column, unsigned int j) {
+                std::memcpy(x[first + j].begin(),
+                            column,
+                            sizeof(double) * x[first + j].size());
+              });
+          }
+      }
+
+    private:
+      template <typename Fill, typename Take>
+      void solve_block(const unsigned int n_columns,
+                       const Fill        &fill,
+                       const Take        &take)
+      {
+        const std::size_t n = factor->n;
+        cholmod_dense    *B =
+          cholmod_allocate_dense(n, n_columns, n, CHOLMOD_REAL, &common);
+        for (unsigned int j = 0; j < n_columns; ++j)
+          fill(static_cast<double *>(B->x) + j * n, j);
+        cholmod_solve2(CHOLMOD_A,
+                       factor,
+                       B,
+                       nullptr,
+                       &solution,
+                       nullptr,
+                       &workspace_y,
+                       &workspace_e,
+                       &common);
+        cholmod_free_dense(&B, &common);
+        AssertThrow(common.status == CHOLMOD_OK,
+                    ExcMessage("CHOLMOD's solve failed (status " +
+                               std::to_string(common.status) + ")."));
+        for (unsigned int j = 0; j < n_columns; ++j)
+          take(static_cast<const double *>(solution->x) + j * n, j);
+      }
+
+      cholmod_common  common;
+      cholmod_factor *factor      = nullptr;
+      cholmod_dense  *solution    = nullptr;
+      cholmod_dense  *workspace_y = nullptr;
+      cholmod_dense  *workspace_e = nullptr;
+    };
+  } // namespace
+
+
+  std::unique_ptr<Factorization>
+  Factorization::create(const std::string                    &solver,
+                        const TrilinosWrappers::SparseMatrix &K)
+  {
+    if (solver == "CHOLMOD")
+      return std::make_unique<CholmodFactorization>(K);
+    return std::make_unique<AmesosFactorization>(solver, K);
+  }
+} // namespace Contact
