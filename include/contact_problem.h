@@ -190,13 +190,15 @@ namespace Contact
     void         setup_probes();
 
     // assembly.cc
-    void   assemble_matrices();
-    void   assemble_load(const double time,
-                         VectorType  &load_vector,
-                         const bool   with_body_force,
-                         const bool   with_surface_loads) const;
-    void   set_initial_values();
-    double quadratic_form(const MatrixType &matrix, const VectorType &x) const;
+    void           assemble_matrices();
+    void           assemble_load(const double time,
+                                 VectorType  &load_vector,
+                                 const bool   with_body_force,
+                                 const bool   with_surface_loads) const;
+    void           set_initial_values();
+    void           condensed_product(const MatrixType &matrix,
+                                     const VectorType &x,
+                                     VectorType       &product) const;
     Tensor<1, dim> momentum() const;
     void           update_energy_balance();
 
@@ -294,6 +296,10 @@ namespace Contact
     VectorType   old_displacement;
     VectorType   old_velocity;
     VectorType   load;
+    // M w_{n-1} and B u_{n-1} (condensed), kept from the energy balance of
+    // the last step for the right-hand side of the next.
+    VectorType mass_times_velocity;
+    VectorType elasticity_times_displacement;
 
     // Gamma_3: its nodes, the columns Z = K^{-1} C^T and the Delassus
     // operator D = C Z, and the nodal state of the last step.

@@ -167,11 +167,9 @@ namespace Contact
       load += constant_body_load;
 
     TimerOutput::Scope t(computing_timer, "Time steps");
-    VectorType         rhs(load), product(load);
-    mass_matrix.vmult(product, old_velocity);
-    rhs.add(1. / time_step, product);
-    elasticity_matrix.vmult(product, old_displacement);
-    rhs.add(-1., product);
+    VectorType         rhs(load);
+    rhs.add(1. / time_step, mass_times_velocity);
+    rhs.add(-1., elasticity_times_displacement);
     constraints.set_zero(rhs);
 
     Timer substitution;
