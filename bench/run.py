@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+"""Benchmark of the paper's scene (issue 5): builds the program in Release
+and measures, on this machine, whole runs with VTU output off and the time
+series on.
+
+    python3 bench/run.py [--sizes 32,64,128,256] [--out bench/results.md]
+
+For h = k = 1/N it prints the number of unknowns, time steps, wall time,
+time per step, mean convexification and active set iterations per step, the
+peak memory of the process and the ratio of the time per step to one
+forward/back substitution with the factor of K (the program measures both),
+then the wall time of the Figure 4 study (prm/barboteu2015_convergence.prm
+taken down to 1/256). Everything printed is measured in this run; the
+table goes to --out as Markdown.
+"""
+import argparse
+import os
+import platform
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def build():
+    build_dir = os.path.join(ROOT, "build-bench")
+    subprocess.run(["cmake", "-S", ROOT, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Release"],
+                   check=True, stdout=subprocess.DEVNULL)
+    subprocess.run(["cmake", "--build", build_dir, "-j2", "--target", "contact"],
+                   check=True, stdout=subprocess.DEVNULL)
+    return os.path.join(build_dir, "contact")
+
+
+def run(contact, prm, sets):
+    """Runs contact, returns (stdout, wall seconds, peak memory in MB)."""
+    command = [contact]
+    for entry in sets:
+        command += ["--set", entry]
+    start = time.perf_counter()
+    process = subprocess.Popen(command + [prm], stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, text=True)
+    output = process.stdout.read()
+    _, status, usage = os.wait4(process.pid, 0)
+    wall = time.perf_counter() - start
+    if status != 0:
+        sys.exit(f"contact failed:\n{output}")
+    return output, wall, usage.ru_maxrss / 1024.
+
+
+def number(pattern, text):
+    match = re.search(pattern, text)
+    if not match:
+        sys.exit(f"cannot find '{pattern}' in the output")
+    return float(match.group(1))
+
+
+def machine():
+    model = "unknown CPU"
+    for line in open("/proc/cpuinfo"):
+        if line.startswith("model name"):
+            model = line.split(":", 1)[1].strip()
+            break
+    memory = 0
+    for line in open("/proc/meminfo"):
+        if line.startswith("MemTotal"):
+            memory = int(line.split()[1]) / 1024 ** 2
+    return (f"{model}, {os.cpu_count()} cores, {memory:.1f} GB, "
+            f"{platform.system()} {platform.release()}, load average "
+            f"{os.getloadavg()[0]:.2f} at the start")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--sizes", default="32,64,128,256")
+    parser.add_argument("--out", default=os.path.join(ROOT, "bench", "results.md"))
+    arguments = parser.parse_args()
+    contact = build()
+    prm = os.path.join(ROOT, "prm", "barboteu2015.prm")
+
+    lines = [f"Machine: {machine()}", "",
+             "| h = k | unknowns | steps | wall [s] | per step [ms] | convexification it./step "
+             "| active set it./step | peak memory [MB] | step / substitution |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    print("\n".join(lines), flush=True)
+    with tempfile.TemporaryDirectory() as tmp:
+        for n in [int(s) for s in arguments.sizes.split(",")]:
+            output, wall, memory = run(contact, prm, [
+                f"Geometry/Cell size={1. / n}", f"Time/Time step={1. / n}",
+                "Output/VTU interval=0", "Output/Progress interval=0",
+                "Output/Print timings=true", f"Output/Output directory={tmp}/{n}"])
+            unknowns = number(r"Q1, (\d+) unknowns", output)
+            steps = number(r"Done: (\d+) steps", output)
+            convexification = number(r"(\d+) convexification iterations", output)
+            active_set = number(r"(\d+) active set iterations", output)
+            per_step = number(r"Time per step ([0-9.e+-]+) ms", output)
+            ratio = number(r"ms = ([0-9.e+-]+) substitutions", output)
+            line = (f"| 1/{n} | {unknowns:.0f} | {steps:.0f} | {wall:.2f} | {per_step:.2f} "
+                    f"| {convexification / steps:.1f} | {active_set / steps:.1f} "
+                    f"| {memory:.0f} | {ratio:.2f} |")
+            lines.append(line)
+            print(line, flush=True)
+
+        output, wall, memory = run(contact,
+                                   os.path.join(ROOT, "prm", "barboteu2015_convergence.prm"),
+                                   ["Convergence study/Levels=7",
+                                    f"Output/Output directory={tmp}/figure4"])
+        line = (f"\nFigure 4 study, h = k = 1/2 ... 1/256 (prm/barboteu2015_convergence.prm "
+                f"with Levels = 7): {wall:.1f} s wall, peak memory {memory:.0f} MB.")
+        lines.append(line)
+        print(line)
+    with open(arguments.out, "w") as out:
+        out.write("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()
