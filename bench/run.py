@@ -14,6 +14,7 @@ taken down to 1/256). Everything printed is measured in this run; the
 table goes to --out as Markdown.
 """
 import argparse
+import math
 import os
 import platform
 import re
@@ -81,9 +82,11 @@ def main():
     prm = os.path.join(ROOT, "prm", "barboteu2015.prm")
 
     lines = [f"Machine: {machine()}", "",
-             "| h = k | unknowns | steps | wall [s] | per step [ms] | convexification it./step "
-             "| active set it./step | peak memory [MB] | step / substitution |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "| h = k | unknowns | factor nonzeros | steps | wall [s] | per step [ms] "
+             "| convexification it./step | active set it./step | peak memory [MB] "
+             "| step / substitution |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    growth = []
     print("\n".join(lines), flush=True)
     with tempfile.TemporaryDirectory() as tmp:
         for n in [int(s) for s in arguments.sizes.split(",")]:
@@ -97,9 +100,20 @@ def main():
             active_set = number(r"(\d+) active set iterations", output)
             per_step = number(r"Time per step ([0-9.e+-]+) ms", output)
             ratio = number(r"ms = ([0-9.e+-]+) substitutions", output)
-            line = (f"| 1/{n} | {unknowns:.0f} | {steps:.0f} | {wall:.2f} | {per_step:.2f} "
+            factor = number(r"Factor of K: (\d+) nonzeros", output)
+            growth.append((n, unknowns, factor, per_step))
+            line = (f"| 1/{n} | {unknowns:.0f} | {factor:.0f} | {steps:.0f} | {wall:.2f} "
+                    f"| {per_step:.2f} "
                     f"| {convexification / steps:.1f} | {active_set / steps:.1f} "
                     f"| {memory:.0f} | {ratio:.2f} |")
+            lines.append(line)
+            print(line, flush=True)
+
+        # Growth with the number of unknowns N between successive sizes:
+        # time per step ~ N^a against the factor's size ~ N^b.
+        for (n0, N0, f0, t0), (n1, N1, f1, t1) in zip(growth, growth[1:]):
+            line = (f"\n1/{n0} -> 1/{n1}: time per step ~ N^{math.log(t1 / t0) / math.log(N1 / N0):.2f}, "
+                    f"factor size ~ N^{math.log(f1 / f0) / math.log(N1 / N0):.2f}")
             lines.append(line)
             print(line, flush=True)
 

@@ -40,6 +40,13 @@ namespace Contact
     virtual void solve(std::vector<TrilinosWrappers::MPI::Vector>       &x,
                        const std::vector<TrilinosWrappers::MPI::Vector> &b);
 
+    /** Number of nonzeros of the factor, 0 where the solver does not
+     *  tell. */
+    virtual double factor_size() const
+    {
+      return 0;
+    }
+
     /** 'CHOLMOD' or an Amesos solver name ('Amesos_Klu', ...). */
     static std::unique_ptr<Factorization>
     create(const std::string &solver, const TrilinosWrappers::SparseMatrix &K);

@@ -122,6 +122,11 @@ namespace Contact
                                std::to_string(common.status) + ")."));
       }
 
+      double factor_size() const override
+      {
+        return common.lnz;
+      }
+
       ~CholmodFactorization() override
       {
         cholmod_free_dense(&solution, &common);

@@ -356,6 +356,10 @@ namespace Contact
         const double step_time = computing_timer.get_summary_data(
                                    TimerOutput::total_wall_time)["Time steps"] /
                                  n_time_steps;
+        if (factorization && factorization->factor_size() > 0)
+          pcout << "Factor of K: "
+                << static_cast<long long>(factorization->factor_size())
+                << " nonzeros" << std::endl;
         if (substitution_time > 0)
           pcout << "Time per step " << 1e3 * step_time
                 << " ms = " << step_time / substitution_time
