@@ -10,6 +10,7 @@
 
 #include <parameters.h>
 
+#include <functional>
 #include <vector>
 
 namespace Contact
@@ -123,6 +124,46 @@ namespace Contact
     stick,
     slip
   };
+
+  /**
+   * The linearisation of the complementarity function at one node: its
+   * state, the unit vector zhat along z_p = eta_p + c_p v_p (in the node's
+   * tangent basis), and beta_p. A node with g_p = 0 slips with eta_p = 0
+   * whatever v_p does; its direction is that of v_p (the first axis if
+   * v_p = 0) to keep it deterministic.
+   */
+  struct NodeLinearisation
+  {
+    NodeState           state = NodeState::stick;
+    std::vector<double> direction;
+    double              beta = 0;
+  };
+
+  /** The orthonormal basis of a node's tangent plane in which the Newton
+   *  step is diagonal: columns (zhat, zhat turned by 90 degrees) on slip
+   *  nodes, the identity on stick nodes. */
+  FullMatrix<double> local_basis(const NodeLinearisation &node);
+
+  /** v = v_free - D eta, however D is represented. */
+  using TrescaVelocity =
+    std::function<void(const Vector<double> &eta, Vector<double> &v)>;
+  /** One Newton step: the new (eta, v) for the given linearisation. */
+  using TrescaNewtonStep =
+    std::function<void(const std::vector<NodeLinearisation> &linearisation,
+                       Vector<double>                       &eta,
+                       Vector<double>                       &v)>;
+
+  /** The method with the linear algebra supplied by the caller (e.g. on the
+   *  whole body instead of on D). */
+  TrescaResult solve_tresca(const TrescaVelocity   &velocity,
+                            const TrescaNewtonStep &newton_step,
+                            const unsigned int      n_components,
+                            const Vector<double>   &g,
+                            const Vector<double>   &c,
+                            const unsigned int      max_iterations,
+                            Vector<double>         &eta,
+                            Vector<double>         &v,
+                            std::vector<NodeState> &state);
 
   TrescaResult solve_tresca(const FullMatrix<double> &D,
                             const unsigned int        n_components,

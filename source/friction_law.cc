@@ -151,13 +151,6 @@ namespace Contact
     // A node with g_p = 0 slips with eta_p = 0 whatever v_p does; its
     // direction is that of v_p (the first axis if v_p = 0) to keep it
     // deterministic.
-    struct NodeLinearisation
-    {
-      NodeState           state = NodeState::stick;
-      std::vector<double> direction;
-      double              beta = 0;
-    };
-
     std::vector<NodeLinearisation> linearise(const unsigned int    m,
                                              const Vector<double> &eta,
                                              const Vector<double> &v,
@@ -207,25 +200,6 @@ namespace Contact
                             node.direction[0] > 0          ? 1 :
                                                              -1);
       return signature;
-    }
-
-    // The orthonormal basis of one node's tangential plane in which the
-    // Newton step is diagonal: stick nodes keep the canonical basis; slip
-    // nodes take (zhat, zhat rotated by 90 degrees) for m = 2.
-    FullMatrix<double> local_basis(const NodeLinearisation &node)
-    {
-      const unsigned int m = node.direction.size();
-      FullMatrix<double> basis(m, m);
-      for (unsigned int i = 0; i < m; ++i)
-        basis(i, i) = 1;
-      if (node.state == NodeState::slip)
-        for (unsigned int i = 0; i < m; ++i)
-          {
-            basis(i, 0) = node.direction[i];
-            if (m == 2)
-              basis(i, 1) = (i == 0 ? -node.direction[1] : node.direction[0]);
-          }
-      return basis;
     }
 
     // One Newton step: in the rotated unknowns eta' = Q^T eta (Q block
@@ -338,27 +312,67 @@ namespace Contact
   } // namespace
 
 
+  // The orthonormal basis of one node's tangential plane in which the
+  // Newton step is diagonal: stick nodes keep the canonical basis; slip
+  // nodes take (zhat, zhat rotated by 90 degrees) for m = 2.
+  FullMatrix<double> local_basis(const NodeLinearisation &node)
+  {
+    const unsigned int m = node.direction.size();
+    FullMatrix<double> basis(m, m);
+    for (unsigned int i = 0; i < m; ++i)
+      basis(i, i) = 1;
+    if (node.state == NodeState::slip)
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          basis(i, 0) = node.direction[i];
+          if (m == 2)
+            basis(i, 1) = (i == 0 ? -node.direction[1] : node.direction[0]);
+        }
+    return basis;
+  }
+
   TrescaResult solve_tresca(const FullMatrix<double> &D,
                             const unsigned int        m,
                             const Vector<double>     &v_free,
                             const Vector<double>     &g,
-                            const Vector<double>     &c_initial,
+                            const Vector<double>     &c,
                             const unsigned int        max_iterations,
                             Vector<double>           &eta,
                             Vector<double>           &v,
                             std::vector<NodeState>   &state)
   {
     AssertDimension(D.m(), v_free.size());
-    AssertDimension(eta.size(), v_free.size());
-    AssertDimension(g.size() * m, v_free.size());
+    const auto velocity = [&](const Vector<double> &eta, Vector<double> &v) {
+      D.vmult(v, eta);
+      v.sadd(-1., 1., v_free);
+    };
+    const auto step = [&](const std::vector<NodeLinearisation> &linearisation,
+                          Vector<double>                       &eta,
+                          Vector<double>                       &v) {
+      newton_step(D, linearisation, v_free, g, eta, v);
+    };
+    return solve_tresca(velocity, step, m, g, c, max_iterations, eta, v, state);
+  }
+
+
+  TrescaResult solve_tresca(const TrescaVelocity   &velocity,
+                            const TrescaNewtonStep &newton_step,
+                            const unsigned int      m,
+                            const Vector<double>   &g,
+                            const Vector<double>   &c_initial,
+                            const unsigned int      max_iterations,
+                            Vector<double>         &eta,
+                            Vector<double>         &v,
+                            std::vector<NodeState> &state)
+  {
+    AssertDimension(eta.size(), g.size() * m);
     TrescaResult                  result;
     Vector<double>                c = c_initial;
     std::vector<std::vector<int>> history;
     const double                  tolerance =
       1e-12 * std::max(g.linfty_norm(), std::numeric_limits<double>::min());
 
-    D.vmult(v, eta);
-    v.sadd(-1., 1., v_free);
+    velocity(eta, v);
     auto linearisation = linearise(m, eta, v, g, c);
 
     // Progress test for m = 2, where the slip directions may keep turning
@@ -379,7 +393,7 @@ namespace Contact
     while (result.iterations < max_iterations)
       {
         ++result.iterations;
-        newton_step(D, linearisation, v_free, g, eta, v);
+        newton_step(linearisation, eta, v);
         history.push_back(set_signature(linearisation));
 
         linearisation                    = linearise(m, eta, v, g, c);
