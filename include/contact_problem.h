@@ -10,6 +10,7 @@
  *   setup.cc            make_grid, setup_system, constraints, Gamma_3 nodes
  *   assembly.cc         matrices, loads, initial values, energies
  *   contact_solver.cc   factorisation, Delassus operator, convexification
+ *   active_set_constraints.cc  the straightforward path (whole-body solves)
  *   output.cc           VTU/PVD, time_series.csv, console
  *   verification.cc     errors against a manufactured solution
  * Each file instantiates its own members for dim = 2 and 3.
@@ -173,6 +174,9 @@ namespace Contact
     unsigned int           get_step_number() const;
     const DoFHandler<dim> &get_dof_handler() const;
     const VectorType      &get_displacement() const;
+    const VectorType      &get_velocity() const;
+    /** The nodal friction forces eta on Gamma_3, node-major. */
+    const Vector<double> &get_friction_force() const;
 
     /** ||eps(v)||, the paper's V-norm, of a field on this problem's mesh. */
     double strain_norm(const VectorType &v) const;
@@ -204,16 +208,31 @@ namespace Contact
 
     // contact_solver.cc
     void           factorize_system_matrix();
+    void           setup_contact_solver();
     void           build_delassus_operator();
     StepStatistics do_time_step();
     StepStatistics
     solve_friction_problem(const Vector<double> &free_slip_velocity);
-    std::string    convexification_failure(const double residual) const;
-    void           add_contact_state(StepStatistics &statistics) const;
-    double         tangential_velocity(const ContactNode<dim> &node,
-                                       const unsigned int      direction,
-                                       const VectorType       &w) const;
+    TrescaResult solve_tresca_problem(const Vector<double> &free_slip_velocity,
+                                      const Vector<double> &bound,
+                                      Vector<double>       &eta,
+                                      Vector<double>       &v,
+                                      std::vector<NodeState> &state);
+    VectorType   friction_load(const Vector<double> &eta) const;
+    std::string  convexification_failure(const double residual) const;
+    void         add_contact_state(StepStatistics &statistics) const;
+    double       tangential_velocity(const ContactNode<dim> &node,
+                                     const unsigned int      direction,
+                                     const VectorType       &w) const;
     Vector<double> tangential_velocities(const VectorType &w) const;
+
+    // active_set_constraints.cc: the straightforward path.
+    void velocity_for_friction_force(const Vector<double> &eta, VectorType &w);
+    void newton_step_with_constraints(
+      const std::vector<NodeLinearisation> &linearisation,
+      const Vector<double>                 &bound,
+      Vector<double>                       &eta,
+      Vector<double>                       &v);
 
     // contact_problem.cc: Gauss rules of n points per direction on the
     // cells and faces of the mesh's shape.
@@ -300,10 +319,16 @@ namespace Contact
     // the last step for the right-hand side of the next.
     VectorType mass_times_velocity;
     VectorType elasticity_times_displacement;
+    // The right-hand side of the step without friction, condensed:
+    // K w_free = step_rhs.
+    VectorType step_rhs;
 
     // Gamma_3: its nodes, the columns Z = K^{-1} C^T and the Delassus
-    // operator D = C Z, and the nodal state of the last step.
+    // operator D = C Z (unless the active set is imposed as constraints on
+    // the whole body, 'Solver/Contact solver'), and the nodal state of the
+    // last step.
     std::vector<ContactNode<dim>> contact_nodes;
+    bool                          use_delassus_operator = true;
     std::vector<VectorType>       delassus_columns;
     FullMatrix<double>            delassus_operator;
     Vector<double>                active_set_parameter;

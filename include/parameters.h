@@ -125,6 +125,8 @@ namespace Contact
     double       active_set_parameter;
     unsigned int anderson_depth;
     std::string  direct_solver;
+    /** 'auto', 'Delassus' or 'constraints'. */
+    std::string contact_solver;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);

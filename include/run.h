@@ -7,10 +7,20 @@
 #ifndef contact_run_h
 #define contact_run_h
 
+#include <parameters.h>
+
+#include <string>
+#include <vector>
+
 namespace Contact
 {
   /** Runs the program; user errors are thrown as dealii::ExceptionBase. */
   void run_from_command_line(const int argc, const char *const *argv);
+
+  /** The parameters of `parameter_file` with overrides 'Section/Entry=value'
+   *  applied, read and checked as by the command line. */
+  Parameters read_parameters(const std::string              &parameter_file,
+                             const std::vector<std::string> &overrides);
 } // namespace Contact
 
 #endif

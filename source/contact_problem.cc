@@ -163,7 +163,7 @@ namespace Contact
       }
     set_initial_values();
     factorize_system_matrix();
-    build_delassus_operator();
+    setup_contact_solver();
     prepare_output_directory();
 
     if (exact_solution)
@@ -247,6 +247,19 @@ namespace Contact
   const VectorType &ContactProblem<dim>::get_displacement() const
   {
     return displacement;
+  }
+
+
+  template <int dim>
+  const VectorType &ContactProblem<dim>::get_velocity() const
+  {
+    return velocity;
+  }
+
+  template <int dim>
+  const Vector<double> &ContactProblem<dim>::get_friction_force() const
+  {
+    return friction_force;
   }
 
 

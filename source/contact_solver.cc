@@ -52,6 +52,79 @@ namespace Contact
   }
 
 
+  // @sect4{ContactProblem::friction_load}
+
+  // C^T eta: the nodal friction forces eta_p = sum_i eta_{p,i} t_i as a
+  // load on the body, condensed with the constraints like every load.
+  template <int dim>
+  VectorType ContactProblem<dim>::friction_load(const Vector<double> &eta) const
+  {
+    VectorType load(locally_owned_dofs, mpi_communicator);
+    std::vector<types::global_dof_index> node_dofs(dim);
+    Vector<double>                       node_force(dim);
+    for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+      {
+        const Tensor<1, dim> force = contact_nodes[p].tangential_vector(eta, p);
+        if (force.norm_square() == 0.)
+          continue;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            node_dofs[d]  = contact_nodes[p].dofs[d];
+            node_force[d] = force[d];
+          }
+        constraints.distribute_local_to_global(node_force, node_dofs, load);
+      }
+    load.compress(VectorOperation::add);
+    return load;
+  }
+
+
+  // @sect4{ContactProblem::setup_contact_solver}
+
+  // What every step's friction problem needs, whichever path solves it:
+  // the parameters c_p of the active set method (the 'Active set parameter'
+  // times the node's stiffness t^T K t, averaged over its tangents), and on
+  // the Delassus path Z and D. 'auto' takes the Delassus path while Z, a
+  // dense block of unknowns x tangential unknowns on Gamma_3, fits in 512
+  // MB: the paper's scene in 2D down to h = 1/256 and more, 3D boxes up to
+  // some 10^5 unknowns; larger 3D meshes take the constraints.
+  template <int dim>
+  void ContactProblem<dim>::setup_contact_solver()
+  {
+    const unsigned int n = contact_nodes.size(), m = dim - 1;
+    friction_force.reinit(n * m);
+    slip_velocity = tangential_velocities(velocity);
+    // Without friction Gamma_3 only carries the normal constraint: every
+    // node slips freely and nothing is needed beyond the free velocity.
+    node_state.assign(n,
+                      friction_law.is_frictionless() ? NodeState::slip :
+                                                       NodeState::stick);
+    if (friction_law.is_frictionless())
+      return;
+
+    active_set_parameter.reinit(n);
+    for (unsigned int q = 0; q < n; ++q)
+      for (const Tensor<1, dim> &tangent : contact_nodes[q].tangents)
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            if (!constraints.is_constrained(contact_nodes[q].dofs[a]) &&
+                !constraints.is_constrained(contact_nodes[q].dofs[b]))
+              active_set_parameter[q] +=
+                parameters.solver.active_set_parameter / m * tangent[a] *
+                system_matrix.el(contact_nodes[q].dofs[a],
+                                 contact_nodes[q].dofs[b]) *
+                tangent[b];
+
+    const std::string &choice  = parameters.solver.contact_solver;
+    const double       z_bytes = 8. * dof_handler.n_dofs() * n * m;
+    use_delassus_operator =
+      (choice == "Delassus" ||
+       (choice == "auto" && z_bytes <= 512. * 1024 * 1024));
+    if (use_delassus_operator)
+      build_delassus_operator();
+  }
+
+
   // @sect4{ContactProblem::build_delassus_operator}
 
   // The friction forces act on the body through C^T eta, where column p of
@@ -67,54 +140,17 @@ namespace Contact
   {
     TimerOutput::Scope t(computing_timer, "Delassus operator");
 
-    const unsigned int n = contact_nodes.size(), m = dim - 1;
-    friction_force.reinit(n * m);
-    slip_velocity = tangential_velocities(velocity);
-    // Without friction Gamma_3 only carries the normal constraint: every
-    // node slips freely and nothing is needed beyond the free velocity.
-    node_state.assign(n,
-                      friction_law.is_frictionless() ? NodeState::slip :
-                                                       NodeState::stick);
-    if (friction_law.is_frictionless())
-      return;
-
+    const unsigned int      n = contact_nodes.size(), m = dim - 1;
+    std::vector<VectorType> tangent_loads(n * m);
     delassus_columns.resize(n * m);
-    active_set_parameter.reinit(n);
-
-    // The columns of C^T (the tangents, condensed like every load) and
-    // the parameters c_q of the active set method: the parameter times the
-    // node's stiffness t^T K t, averaged over its tangents.
-    std::vector<VectorType>              tangent_loads(n * m);
-    std::vector<types::global_dof_index> node_dofs(dim);
-    Vector<double>                       node_tangent(dim);
-    for (unsigned int q = 0; q < n; ++q)
-      for (unsigned int j = 0; j < m; ++j)
-        {
-          const ContactNode<dim> &node = contact_nodes[q];
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              node_dofs[d]    = node.dofs[d];
-              node_tangent[d] = node.tangents[j][d];
-            }
-          VectorType &column = tangent_loads[q * m + j];
-          column.reinit(locally_owned_dofs, mpi_communicator);
-          constraints.distribute_local_to_global(node_tangent,
-                                                 node_dofs,
-                                                 column);
-          column.compress(VectorOperation::add);
-          delassus_columns[q * m + j].reinit(locally_owned_dofs,
-                                             mpi_communicator);
-
-          for (unsigned int a = 0; a < dim; ++a)
-            for (unsigned int b = 0; b < dim; ++b)
-              if (!constraints.is_constrained(node.dofs[a]) &&
-                  !constraints.is_constrained(node.dofs[b]))
-                active_set_parameter[q] +=
-                  parameters.solver.active_set_parameter / m *
-                  node.tangents[j][a] *
-                  system_matrix.el(node.dofs[a], node.dofs[b]) *
-                  node.tangents[j][b];
-        }
+    Vector<double> unit(n * m);
+    for (unsigned int s = 0; s < n * m; ++s)
+      {
+        unit[s]          = 1.;
+        tangent_loads[s] = friction_load(unit);
+        unit[s]          = 0.;
+        delassus_columns[s].reinit(locally_owned_dofs, mpi_communicator);
+      }
     // Z = K^{-1} C^T: one block solve.
     factorization->solve(delassus_columns, tangent_loads);
     for (VectorType &column : delassus_columns)
@@ -167,13 +203,13 @@ namespace Contact
       load += constant_body_load;
 
     TimerOutput::Scope t(computing_timer, "Time steps");
-    VectorType         rhs(load);
-    rhs.add(1. / time_step, mass_times_velocity);
-    rhs.add(-1., elasticity_times_displacement);
-    constraints.set_zero(rhs);
+    step_rhs = load;
+    step_rhs.add(1. / time_step, mass_times_velocity);
+    step_rhs.add(-1., elasticity_times_displacement);
+    constraints.set_zero(step_rhs);
 
     Timer substitution;
-    factorization->solve(velocity, rhs);
+    factorization->solve(velocity, step_rhs);
     substitution_time += substitution.wall_time() / n_time_steps;
     constraints.distribute(velocity);
 
@@ -186,9 +222,14 @@ namespace Contact
     else if (!contact_nodes.empty())
       {
         statistics = solve_friction_problem(tangential_velocities(velocity));
-        for (unsigned int r = 0; r < friction_force.size(); ++r)
-          if (friction_force[r] != 0.)
-            velocity.add(-friction_force[r], delassus_columns[r]);
+        if (use_delassus_operator)
+          {
+            for (unsigned int r = 0; r < friction_force.size(); ++r)
+              if (friction_force[r] != 0.)
+                velocity.add(-friction_force[r], delassus_columns[r]);
+          }
+        else
+          velocity_for_friction_force(friction_force, velocity);
       }
 
     displacement = old_displacement;
@@ -240,8 +281,11 @@ namespace Contact
     bool                   converged       = false;
 
     const auto energy_on_gamma3 = [&]() {
-      // E(v) with v = v_free - D eta: the quadratic term is eta^T D eta / 2.
-      double value = 0.5 * delassus_operator.matrix_norm_square(eta);
+      // E(v) with v = v_free - D eta: the quadratic term is
+      // eta^T D eta / 2 = eta . (v_free - v) / 2.
+      Vector<double> velocity_change(free_slip_velocity);
+      velocity_change -= v;
+      double value = 0.5 * (eta * velocity_change);
       for (unsigned int p = 0; p < n; ++p)
         value += contact_nodes[p].weight *
                  friction_law.potential(
@@ -259,15 +303,7 @@ namespace Contact
                        contact_nodes[p].weight * friction_law.bound(rate[p]);
 
         const TrescaResult tresca =
-          solve_tresca(delassus_operator,
-                       dim - 1,
-                       free_slip_velocity,
-                       bound,
-                       active_set_parameter,
-                       solver.max_active_set_iterations,
-                       eta,
-                       v,
-                       state);
+          solve_tresca_problem(free_slip_velocity, bound, eta, v, state);
         statistics.active_set_iterations += tresca.iterations;
         statistics.cycles_cured += tresca.cycles_cured;
         AssertThrow(
@@ -324,6 +360,56 @@ namespace Contact
     AssertThrow(converged, ExcMessage(convexification_failure(residual)));
     add_contact_state(statistics);
     return statistics;
+  }
+
+
+  // @sect4{ContactProblem::solve_tresca_problem}
+
+  // The Tresca problem of one convexification iteration, on D or on the
+  // whole body (active_set_constraints.cc): the same semismooth Newton
+  // method with the same iterates, only the linear algebra differs.
+  template <int dim>
+  TrescaResult ContactProblem<dim>::solve_tresca_problem(
+    const Vector<double>   &free_slip_velocity,
+    const Vector<double>   &bound,
+    Vector<double>         &eta,
+    Vector<double>         &v,
+    std::vector<NodeState> &state)
+  {
+    const unsigned int max_iterations =
+      parameters.solver.max_active_set_iterations;
+    if (use_delassus_operator)
+      return solve_tresca(delassus_operator,
+                          dim - 1,
+                          free_slip_velocity,
+                          bound,
+                          active_set_parameter,
+                          max_iterations,
+                          eta,
+                          v,
+                          state);
+
+    VectorType           w;
+    const TrescaVelocity velocity_of_force = [&](const Vector<double> &eta,
+                                                 Vector<double>       &v) {
+      velocity_for_friction_force(eta, w);
+      v = tangential_velocities(w);
+    };
+    const TrescaNewtonStep newton_step =
+      [&](const std::vector<NodeLinearisation> &linearisation,
+          Vector<double>                       &eta,
+          Vector<double>                       &v) {
+        newton_step_with_constraints(linearisation, bound, eta, v);
+      };
+    return solve_tresca(velocity_of_force,
+                        newton_step,
+                        dim - 1,
+                        bound,
+                        active_set_parameter,
+                        max_iterations,
+                        eta,
+                        v,
+                        state);
   }
 
 
@@ -384,7 +470,16 @@ namespace Contact
     const ContactNode<dim> &, const unsigned int, const VectorType &) const; \
   template Vector<double> ContactProblem<dim>::tangential_velocities(        \
     const VectorType &) const;                                               \
-  template void           ContactProblem<dim>::build_delassus_operator();    \
+  template void       ContactProblem<dim>::build_delassus_operator();        \
+  template void       ContactProblem<dim>::setup_contact_solver();           \
+  template VectorType ContactProblem<dim>::friction_load(                    \
+    const Vector<double> &) const;                                           \
+  template TrescaResult ContactProblem<dim>::solve_tresca_problem(           \
+    const Vector<double> &,                                                  \
+    const Vector<double> &,                                                  \
+    Vector<double> &,                                                        \
+    Vector<double> &,                                                        \
+    std::vector<NodeState> &);                                               \
   template StepStatistics ContactProblem<dim>::do_time_step();               \
   template std::string    ContactProblem<dim>::convexification_failure(      \
     const double) const;                                                  \

@@ -356,6 +356,15 @@ namespace Contact
         const double step_time = computing_timer.get_summary_data(
                                    TimerOutput::total_wall_time)["Time steps"] /
                                  n_time_steps;
+        if (!friction_law.is_frictionless())
+          pcout << "Contact solver: "
+                << (use_delassus_operator ?
+                      "Delassus operator on the " +
+                        std::to_string(friction_force.size()) +
+                        " tangential unknowns of Gamma_3" :
+                      std::string("active set as constraints, one "
+                                  "factorisation per Newton step"))
+                << std::endl;
         if (factorization && factorization->factor_size() > 0)
           pcout << "Factor of K: "
                 << static_cast<long long>(factorization->factor_size())

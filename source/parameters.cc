@@ -535,6 +535,20 @@ namespace Contact
         "The direct solver that factorises K = (rho/k) M + A + k B once per "
         "run: CHOLMOD (SuiteSparse's supernodal Cholesky, one process) or a "
         "Trilinos Amesos solver.");
+      prm.declare_entry(
+        "Contact solver",
+        "auto",
+        Patterns::Selection("auto|Delassus|constraints"),
+        "How the friction problem of a step is solved. Delassus: on the "
+        "tangential unknowns of Gamma_3 alone, with the dense Delassus "
+        "operator D = C K^{-1} C^T built once per run from the columns "
+        "Z = K^{-1} C^T (memory: unknowns times tangential unknowns on "
+        "Gamma_3); a step then costs two substitutions with the factor of K "
+        "and dense work on Gamma_3. constraints: the straightforward path; "
+        "every Newton step of the active set method solves on the whole "
+        "body with the sticking nodes held fixed as constraints, and "
+        "refactorises; no Z, no D. auto: Delassus while Z needs at most "
+        "512 MB, constraints beyond.");
     }
     prm.leave_subsection();
   }
@@ -550,6 +564,7 @@ namespace Contact
       active_set_parameter      = prm.get_double("Active set parameter");
       anderson_depth            = prm.get_integer("Anderson depth");
       direct_solver             = prm.get("Direct solver");
+      contact_solver            = prm.get("Contact solver");
     }
     prm.leave_subsection();
 

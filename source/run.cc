@@ -195,6 +195,21 @@ namespace Contact
       return prm.get_integer("Dimension");
     }
 
+    // The whole .prm file, checked, with the --set overrides applied.
+    Parameters read_parameters(const CommandLine &command_line,
+                               ParameterHandler  &prm)
+    {
+      const unsigned int dimension = read_dimension(command_line);
+      parse_parameter_file(prm, command_line.parameter_file, false);
+      for (const auto &[path, value] : command_line.overrides)
+        apply_override(prm, path, value);
+
+      Parameters parameters;
+      parameters.parse_parameters(prm);
+      AssertThrow(parameters.dimension == dimension, ExcInternalError());
+      return parameters;
+    }
+
     // @sect4{The convergence study}
 
     // One level of a convergence study: its run, and (without an exact
@@ -428,15 +443,8 @@ namespace Contact
         return;
       }
 
-    const unsigned int dimension = read_dimension(command_line);
-    parse_parameter_file(prm, command_line.parameter_file, false);
-    for (const auto &[path, value] : command_line.overrides)
-      apply_override(prm, path, value);
-
-    Parameters parameters;
-    parameters.parse_parameters(prm);
-    AssertThrow(parameters.dimension == dimension, ExcInternalError());
-
+    const Parameters   parameters = read_parameters(command_line, prm);
+    const unsigned int dimension  = parameters.dimension;
     if (parameters.convergence_study.levels > 0 && dimension == 2)
       run_convergence_study<2>(prm, parameters);
     else if (parameters.convergence_study.levels > 0)
@@ -445,5 +453,25 @@ namespace Contact
       ContactProblem<2>(parameters).run();
     else
       ContactProblem<3>(parameters).run();
+  }
+
+
+  Parameters read_parameters(const std::string              &parameter_file,
+                             const std::vector<std::string> &overrides)
+  {
+    std::vector<std::string> arguments = {"contact"};
+    for (const std::string &assignment : overrides)
+      {
+        arguments.push_back("--set");
+        arguments.push_back(assignment);
+      }
+    arguments.push_back(parameter_file);
+    std::vector<const char *> argv;
+    for (const std::string &argument : arguments)
+      argv.push_back(argument.c_str());
+
+    ParameterHandler prm;
+    Parameters::declare_parameters(prm);
+    return read_parameters(read_command_line(argv.size(), argv.data()), prm);
   }
 } // namespace Contact

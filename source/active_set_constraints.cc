@@ -1,0 +1,154 @@
+/* The straightforward path of 'Solver/Contact solver = constraints': every
+   Newton step of the active set method for the Tresca problem is a solve on
+   the whole body, with the sticking nodes held fixed as constraints and the
+   matrix refactorised. It needs neither Z = K^{-1} C^T nor the Delassus
+   operator, so its memory is that of K and one factor; it is the reference
+   the Delassus path is tested against (tests/verification/
+   contact_solver_paths) and the path for meshes where Z does not fit. */
+
+#include <contact_problem.h>
+
+namespace Contact
+{
+  // @sect4{ContactProblem::velocity_for_friction_force}
+
+  // The velocity of the step for given nodal friction forces: (5.2) with
+  // the friction term C^T eta moved to the right-hand side,
+  //   K w = step_rhs - C^T eta.
+  template <int dim>
+  void
+  ContactProblem<dim>::velocity_for_friction_force(const Vector<double> &eta,
+                                                   VectorType           &w)
+  {
+    VectorType rhs(step_rhs);
+    rhs.add(-1., friction_load(eta));
+    w.reinit(locally_owned_dofs, mpi_communicator);
+    factorization->solve(w, rhs);
+    constraints.distribute(w);
+  }
+
+
+  // @sect4{ContactProblem::newton_step_with_constraints}
+
+  // One Newton step of the method of friction.h on the whole body, for the
+  // linearisation of every node:
+  // - a sticking node has v_p = 0; with w.n = 0 from the bilateral
+  //   constraint that is w_p = 0, imposed by zeroing the rows and columns
+  //   of the node's free dofs (keeping the diagonal, so K stays SPD);
+  // - a slipping node carries the fixed force g_p zhat_p as a load, and in
+  //   3D the condition v.t = beta eta.t along the other tangent
+  //   t = zhat turned by 90 degrees, i.e. eta.t = (v.t) / beta: a spring
+  //   (1 / beta) t t^T added to K at the node.
+  // This is the system (D + beta)_FF eta_F = ... of the Delassus path
+  // before the body's unknowns are eliminated, so both give the same
+  // iterates. The friction force of a sticking node is then its reaction,
+  // the residual of the unconstrained equations at the node projected on
+  // its tangents (the residual is C^T eta there and nothing else, since
+  // only the node's own column of C^T has support at it).
+  template <int dim>
+  void ContactProblem<dim>::newton_step_with_constraints(
+    const std::vector<NodeLinearisation> &linearisation,
+    const Vector<double>                 &bound,
+    Vector<double>                       &eta,
+    Vector<double>                       &v)
+  {
+    const unsigned int n = contact_nodes.size(), m = dim - 1;
+    MatrixType         matrix;
+    matrix.copy_from(system_matrix);
+    Vector<double>                       slip_force(n * m);
+    std::vector<types::global_dof_index> stick_dofs, node_dofs(dim);
+    for (unsigned int p = 0; p < n; ++p)
+      {
+        const ContactNode<dim> &node = contact_nodes[p];
+        if (linearisation[p].state == NodeState::stick)
+          {
+            for (const types::global_dof_index dof : node.dofs)
+              if (!constraints.is_constrained(dof))
+                stick_dofs.push_back(dof);
+            continue;
+          }
+        const FullMatrix<double> basis = local_basis(linearisation[p]);
+        for (unsigned int i = 0; i < m; ++i)
+          slip_force[p * m + i] = bound[p] * basis(i, 0);
+        if (m == 2 && bound[p] > 0)
+          {
+            Tensor<1, dim> t;
+            for (unsigned int i = 0; i < m; ++i)
+              t += basis(i, 1) * node.tangents[i];
+            FullMatrix<double> spring(dim, dim);
+            for (unsigned int a = 0; a < dim; ++a)
+              for (unsigned int b = 0; b < dim; ++b)
+                spring(a, b) = t[a] * t[b] / linearisation[p].beta;
+            std::copy(node.dofs.begin(), node.dofs.end(), node_dofs.begin());
+            constraints.distribute_local_to_global(spring, node_dofs, matrix);
+          }
+      }
+    matrix.compress(VectorOperation::add);
+
+    VectorType rhs(step_rhs);
+    rhs.add(-1., friction_load(slip_force));
+    for (const types::global_dof_index row : stick_dofs)
+      {
+        std::vector<types::global_dof_index> columns;
+        for (auto entry = matrix.begin(row); entry != matrix.end(row); ++entry)
+          if (entry->column() != row)
+            columns.push_back(entry->column());
+        for (const types::global_dof_index column : columns)
+          {
+            matrix.set(row, column, 0.);
+            matrix.set(column, row, 0.);
+          }
+        rhs[row] = 0.;
+      }
+    matrix.compress(VectorOperation::insert);
+
+    VectorType w(locally_owned_dofs, mpi_communicator);
+    Factorization::create(parameters.solver.direct_solver, matrix)
+      ->solve(w, rhs);
+    constraints.distribute(w);
+    v = tangential_velocities(w);
+
+    VectorType residual(step_rhs);
+    VectorType product(locally_owned_dofs, mpi_communicator);
+    system_matrix.vmult(product, w);
+    residual -= product;
+    constraints.set_zero(residual);
+    eta = tangential_velocities(residual);
+
+    // On slip nodes eta is set from the linearisation, exactly as on the
+    // Delassus path, rather than read back from the residual.
+    for (unsigned int p = 0; p < n; ++p)
+      if (linearisation[p].state == NodeState::slip)
+        {
+          const FullMatrix<double> basis = local_basis(linearisation[p]);
+          for (unsigned int i = 0; i < m; ++i)
+            {
+              eta[p * m + i] = slip_force[p * m + i];
+              if (m == 2 && bound[p] > 0)
+                {
+                  double v_t = 0;
+                  for (unsigned int j = 0; j < m; ++j)
+                    v_t += basis(j, 1) * v[p * m + j];
+                  eta[p * m + i] += basis(i, 1) * v_t / linearisation[p].beta;
+                }
+            }
+        }
+      else
+        for (unsigned int i = 0; i < m; ++i)
+          v[p * m + i] = 0.;
+  }
+
+
+#define INSTANTIATE(dim)                                           \
+  template void ContactProblem<dim>::velocity_for_friction_force(  \
+    const Vector<double> &, VectorType &);                         \
+  template void ContactProblem<dim>::newton_step_with_constraints( \
+    const std::vector<NodeLinearisation> &,                        \
+    const Vector<double> &,                                        \
+    Vector<double> &,                                              \
+    Vector<double> &);
+
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace Contact
