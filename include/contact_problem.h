@@ -34,6 +34,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -329,7 +330,7 @@ namespace Contact
     // last step.
     std::vector<ContactNode<dim>> contact_nodes;
     bool                          use_delassus_operator = true;
-    std::vector<VectorType>       delassus_columns;
+    LAPACKFullMatrix<double>      delassus_columns;
     FullMatrix<double>            delassus_operator;
     Vector<double>                active_set_parameter;
     Vector<double>                friction_force;

@@ -198,11 +198,14 @@ namespace Contact
              0;
     };
 
+    // The surface loads alone (every step, when the body force is constant)
+    // touch the boundary cells only.
     load_vector = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() && (with_body_force || cell->at_boundary()))
         {
-          cell_rhs = 0;
+          cell_rhs    = 0;
+          bool loaded = with_body_force;
           if (with_body_force)
             {
               fe_values.reinit(cell);
@@ -219,14 +222,18 @@ namespace Contact
                   {
                     fe_face_values.reinit(cell, f);
                     add_force(fe_face_values, exact_traction);
+                    loaded = true;
                   }
                 else if (!exact_solution && tractions.count(id) != 0)
                   {
                     fe_face_values.reinit(cell, f);
                     add_force(fe_face_values,
                               parsed(fe_face_values, *tractions.at(id)));
+                    loaded = true;
                   }
               }
+          if (!loaded)
+            continue;
           cell->get_dof_indices(dof_indices);
           constraints.distribute_local_to_global(cell_rhs,
                                                  dof_indices,
