@@ -34,7 +34,9 @@
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -324,13 +326,14 @@ namespace Contact
     // K w_free = step_rhs.
     VectorType step_rhs;
 
-    // Gamma_3: its nodes, the columns Z = K^{-1} C^T and the Delassus
-    // operator D = C Z (unless the active set is imposed as constraints on
-    // the whole body, 'Solver/Contact solver'), and the nodal state of the
-    // last step.
+    // Gamma_3: its nodes, Y^T = (L^{-1} P C^T)^T and the Delassus
+    // operator D = Y^T Y (unless the active set is imposed as constraints
+    // on the whole body, 'Solver/Contact solver'), and the nodal state of
+    // the last step.
     std::vector<ContactNode<dim>> contact_nodes;
-    bool                          use_delassus_operator = true;
-    LAPACKFullMatrix<double>      delassus_columns;
+    bool                          use_delassus_operator = false;
+    SparsityPattern               delassus_factor_pattern;
+    SparseMatrix<double>          delassus_factor;
     FullMatrix<double>            delassus_operator;
     Vector<double>                active_set_parameter;
     Vector<double>                friction_force;

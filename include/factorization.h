@@ -18,6 +18,7 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <memory>
 #include <string>
@@ -39,6 +40,26 @@ namespace Contact
     /** x_i = K^{-1} b_i for a block of right-hand sides. */
     virtual void solve(std::vector<TrilinosWrappers::MPI::Vector>       &x,
                        const std::vector<TrilinosWrappers::MPI::Vector> &b);
+
+    /**
+     * Whether the factorisation is K = P^T L L^T P with its triangular
+     * factor L at hand (CHOLMOD). A solve is then a forward substitution
+     * y = L^{-1} P b followed by a backward one, x = P^T L^{-T} y, and the
+     * Delassus path works between the two halves (contact_solver.cc).
+     */
+    virtual bool has_triangular_factor() const
+    {
+      return false;
+    }
+
+    /** y_i = L^{-1} P b_i for a block of right-hand sides. */
+    virtual void
+    forward_substitution(std::vector<Vector<double>>                      &y,
+                         const std::vector<TrilinosWrappers::MPI::Vector> &b);
+
+    /** x = P^T L^{-T} y. */
+    virtual void backward_substitution(TrilinosWrappers::MPI::Vector &x,
+                                       const Vector<double>          &y);
 
     /** Number of nonzeros of the factor, 0 where the solver does not
      *  tell. */

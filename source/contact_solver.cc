@@ -84,10 +84,11 @@ namespace Contact
   // What every step's friction problem needs, whichever path solves it:
   // the parameters c_p of the active set method (the 'Active set parameter'
   // times the node's stiffness t^T K t, averaged over its tangents), and on
-  // the Delassus path Z and D. 'auto' takes the Delassus path while Z, a
-  // dense block of unknowns x tangential unknowns on Gamma_3, fits in 512
-  // MB: the paper's scene in 2D down to h = 1/256 and more, 3D boxes up to
-  // some 10^5 unknowns; larger 3D meshes take the constraints.
+  // the Delassus path Y and D. 'auto' takes the Delassus path when CHOLMOD
+  // factorises K and Gamma_3 has at most 2000 tangential unknowns (every
+  // Newton step factorises a dense block of D, O(n^3)): the paper's scene
+  // in 2D down to h = 1/1024, 3D boxes like prm/barboteu2015_3d.prm down
+  // to h = 1/32. Larger contact zones take the constraints.
   template <int dim>
   void ContactProblem<dim>::setup_contact_solver()
   {
@@ -99,6 +100,7 @@ namespace Contact
     node_state.assign(n,
                       friction_law.is_frictionless() ? NodeState::slip :
                                                        NodeState::stick);
+    use_delassus_operator = false;
     if (friction_law.is_frictionless())
       return;
 
@@ -115,11 +117,11 @@ namespace Contact
                                  contact_nodes[q].dofs[b]) *
                 tangent[b];
 
-    const std::string &choice  = parameters.solver.contact_solver;
-    const double       z_bytes = 8. * dof_handler.n_dofs() * n * m;
+    const std::string &choice = parameters.solver.contact_solver;
     use_delassus_operator =
       (choice == "Delassus" ||
-       (choice == "auto" && z_bytes <= 512. * 1024 * 1024));
+       (choice == "auto" && factorization->has_triangular_factor() &&
+        n * m <= 2000));
     if (use_delassus_operator)
       build_delassus_operator();
   }
@@ -129,77 +131,88 @@ namespace Contact
 
   // The friction forces act on the body through C^T eta, where column p of
   // C^T is the unit tangent at node p (condensed with the constraints like
-  // every load). With Z = K^{-1} C^T the velocity of a step is
-  //   w_n = w_free - Z eta,   w_free = K^{-1} (F_n + (1/k) M w_{n-1} - B
-  //   u_{n-1}),
+  // every load). The velocity of a step is
+  //   w_n = K^{-1} (step_rhs - C^T eta),
+  //   step_rhs = F_n + (1/k) M w_{n-1} - B u_{n-1},
   // and on Gamma_3 v = C w_n = v_free - D eta with the Delassus operator
-  // D = C Z, symmetric positive definite. So the nonsmooth part of every
-  // step lives on the few unknowns of Gamma_3 (DESIGN.md section 4).
+  // D = C K^{-1} C^T, symmetric positive definite: the nonsmooth part of
+  // every step lives on the few unknowns of Gamma_3 (DESIGN.md section 4).
+  //
+  // With CHOLMOD's K = P^T L L^T P and Y = L^{-1} P C^T,
+  //   D = Y^T Y,  v_free = Y^T y,  w_n = P^T L^{-T} (y - Y eta),
+  // where y = L^{-1} P step_rhs: a step is one forward substitution, the
+  // friction problem, and one backward substitution, i.e. one solve. Y is
+  // sparse (column p is nonzero only on the elimination tree path from
+  // node p's dofs to the root, a few separators), unlike K^{-1} C^T, which
+  // is dense; it is stored transposed, as a sparse matrix with one row per
+  // tangential unknown of Gamma_3.
   template <int dim>
   void ContactProblem<dim>::build_delassus_operator()
   {
     TimerOutput::Scope t(computing_timer, "Delassus operator");
 
-    // Z is computed in blocks of columns, each block one block solve, and
-    // kept as one dense column-major matrix over the locally owned dofs:
-    // w_free - Z eta is then a single BLAS gemv that reads Z once per step.
     const unsigned int n_columns = contact_nodes.size() * (dim - 1);
     const unsigned int block     = 64;
-    delassus_columns.reinit(locally_owned_dofs.n_elements(), n_columns);
-    delassus_operator.reinit(n_columns, n_columns);
+    std::vector<std::vector<std::pair<unsigned int, double>>> columns_of_Y(
+      n_columns);
     Vector<double> unit(n_columns);
     for (unsigned int first = 0; first < n_columns; first += block)
       {
-        const unsigned int      size = std::min(block, n_columns - first);
-        std::vector<VectorType> loads(size), columns(size);
+        const unsigned int          size = std::min(block, n_columns - first);
+        std::vector<VectorType>     loads(size);
+        std::vector<Vector<double>> columns;
         for (unsigned int c = 0; c < size; ++c)
           {
             unit[first + c] = 1.;
             loads[c]        = friction_load(unit);
             unit[first + c] = 0.;
-            columns[c].reinit(locally_owned_dofs, mpi_communicator);
           }
-        factorization->solve(columns, loads);
+        factorization->forward_substitution(columns, loads);
         for (unsigned int c = 0; c < size; ++c)
-          {
-            constraints.distribute(columns[c]);
-            const Vector<double> v = tangential_velocities(columns[c]);
-            for (unsigned int r = 0; r < n_columns; ++r)
-              delassus_operator(r, first + c) = v[r];
-            unsigned int row = 0;
-            for (const double value : columns[c])
-              delassus_columns(row++, first + c) = value;
-          }
+          for (unsigned int row = 0; row < columns[c].size(); ++row)
+            if (columns[c][row] != 0.)
+              columns_of_Y[first + c].emplace_back(row, columns[c][row]);
       }
 
-    // D is symmetric up to the round-off of the solves; the active set
-    // method relies on it (Cholesky on the stick set), so it is made exactly
-    // symmetric after checking that nothing more than round-off is removed.
-    double asymmetry = 0, largest = 0;
-    for (unsigned int r = 0; r < n_columns; ++r)
-      for (unsigned int s = 0; s < r; ++s)
-        {
-          const double mean =
-            0.5 * (delassus_operator(r, s) + delassus_operator(s, r));
-          asymmetry =
-            std::max(asymmetry, std::abs(delassus_operator(r, s) - mean));
-          delassus_operator(r, s) = delassus_operator(s, r) = mean;
-        }
-    for (unsigned int r = 0; r < n_columns; ++r)
-      largest = std::max(largest, delassus_operator(r, r));
-    AssertThrow(asymmetry <= 1e-8 * largest,
-                ExcMessage("The Delassus operator C K^{-1} C^T is not "
-                           "symmetric (relative asymmetry " +
-                           std::to_string(asymmetry / largest) +
-                           "): the factorisation of K is inaccurate."));
+    const unsigned int n_rows = locally_owned_dofs.n_elements();
+    {
+      DynamicSparsityPattern pattern(n_columns, n_rows);
+      for (unsigned int s = 0; s < n_columns; ++s)
+        for (const auto &entry : columns_of_Y[s])
+          pattern.add(s, entry.first);
+      delassus_factor_pattern.copy_from(pattern);
+    }
+    delassus_factor.reinit(delassus_factor_pattern);
+    for (unsigned int s = 0; s < n_columns; ++s)
+      for (const auto &[row, value] : columns_of_Y[s])
+        delassus_factor.set(s, row, value);
+
+    // D = Y^T Y, each entry once, so D is exactly symmetric.
+    delassus_operator.reinit(n_columns, n_columns);
+    Vector<double> column(n_rows);
+    for (unsigned int s = 0; s < n_columns; ++s)
+      {
+        for (const auto &[row, value] : columns_of_Y[s])
+          column[row] = value;
+        for (unsigned int r = 0; r <= s; ++r)
+          {
+            double entry = 0;
+            for (const auto &[row, value] : columns_of_Y[r])
+              entry += value * column[row];
+            delassus_operator(r, s) = delassus_operator(s, r) = entry;
+          }
+        for (const auto &[row, value] : columns_of_Y[s])
+          column[row] = 0.;
+      }
   }
 
 
   // @sect4{ContactProblem::do_time_step}
 
   // One step of (5.2)-(5.5): the free velocity from the factorised K, the
-  // friction forces from the problem on Gamma_3, then w_n = w_free - Z eta
-  // and u_n = u_{n-1} + k w_n.
+  // friction forces from the problem on Gamma_3, then w_n and
+  // u_n = u_{n-1} + k w_n. On the Delassus path the friction problem sits
+  // between the forward and the backward substitution of one solve.
   template <int dim>
   StepStatistics ContactProblem<dim>::do_time_step()
   {
@@ -215,30 +228,43 @@ namespace Contact
     step_rhs.add(-1., elasticity_times_displacement);
     constraints.set_zero(step_rhs);
 
-    Timer substitution;
-    factorization->solve(velocity, step_rhs);
-    substitution_time += substitution.wall_time() / n_time_steps;
-    constraints.distribute(velocity);
-
     StepStatistics statistics;
-    if (friction_law.is_frictionless())
+    Timer          substitution;
+    if (use_delassus_operator)
       {
-        slip_velocity = tangential_velocities(velocity);
-        add_contact_state(statistics);
+        std::vector<Vector<double>> y;
+        factorization->forward_substitution(y, {step_rhs});
+        double substitution_seconds = substitution.wall_time();
+
+        Vector<double> free_slip_velocity(friction_force.size());
+        delassus_factor.vmult(free_slip_velocity, y[0]);
+        statistics = solve_friction_problem(free_slip_velocity);
+
+        Vector<double> minus_eta(friction_force);
+        minus_eta *= -1.;
+        delassus_factor.Tvmult_add(y[0], minus_eta);
+        substitution.restart();
+        factorization->backward_substitution(velocity, y[0]);
+        substitution_seconds += substitution.wall_time();
+        substitution_time += substitution_seconds / n_time_steps;
+        constraints.distribute(velocity);
       }
-    else if (!contact_nodes.empty())
+    else
       {
-        statistics = solve_friction_problem(tangential_velocities(velocity));
-        if (use_delassus_operator)
+        factorization->solve(velocity, step_rhs);
+        substitution_time += substitution.wall_time() / n_time_steps;
+        constraints.distribute(velocity);
+        if (friction_law.is_frictionless())
           {
-            Vector<double> correction(locally_owned_dofs.n_elements());
-            delassus_columns.vmult(correction, friction_force);
-            auto value = velocity.begin();
-            for (const double c : correction)
-              *value++ -= c;
+            slip_velocity = tangential_velocities(velocity);
+            add_contact_state(statistics);
           }
-        else
-          velocity_for_friction_force(friction_force, velocity);
+        else if (!contact_nodes.empty())
+          {
+            statistics =
+              solve_friction_problem(tangential_velocities(velocity));
+            velocity_for_friction_force(friction_force, velocity);
+          }
       }
 
     displacement = old_displacement;

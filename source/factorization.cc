@@ -22,6 +22,24 @@ namespace Contact
   }
 
 
+  void Factorization::forward_substitution(
+    std::vector<Vector<double>> &,
+    const std::vector<TrilinosWrappers::MPI::Vector> &)
+  {
+    AssertThrow(false,
+                ExcMessage("This factorisation does not expose its "
+                           "triangular factor."));
+  }
+
+  void Factorization::backward_substitution(TrilinosWrappers::MPI::Vector &,
+                                            const Vector<double> &)
+  {
+    AssertThrow(false,
+                ExcMessage("This factorisation does not expose its "
+                           "triangular factor."));
+  }
+
+
   namespace
   {
     // @sect3{Amesos}
@@ -112,11 +130,16 @@ namespace Contact
           }
         column_start[n] = position;
 
-        factor = cholmod_analyze(A, &common);
+        // L L^T also where CHOLMOD chooses a simplicial factor, whose
+        // default is L D L^T: the forward and backward substitutions are
+        // then the two halves of a solve.
+        common.final_ll = 1;
+        factor          = cholmod_analyze(A, &common);
         cholmod_factorize(A, factor, &common);
         cholmod_free_sparse(&A, &common);
         AssertThrow(common.status == CHOLMOD_OK &&
-                      factor->minor == static_cast<std::size_t>(n),
+                      factor->minor == static_cast<std::size_t>(n) &&
+                      factor->is_ll,
                     ExcMessage("CHOLMOD could not factorise K = (1/k) M + A + "
                                "k B: it is not positive definite (status " +
                                std::to_string(common.status) + ")."));
@@ -140,6 +163,7 @@ namespace Contact
                  const TrilinosWrappers::MPI::Vector &b) override
       {
         solve_block(
+          CHOLMOD_A,
           1,
           [&](double *column, unsigned int) {
             std::memcpy(column, b.begin(), sizeof(double) * b.size());
@@ -160,6 +184,7 @@ namespace Contact
             const unsigned int n_columns =
               std::min<unsigned int>(block, b.size() - first);
             solve_block(
+              CHOLMOD_A,
               n_columns,
               [&](double *column, unsigned int j) {
                 std::memcpy(column,
@@ -174,9 +199,56 @@ namespace Contact
           }
       }
 
+      bool has_triangular_factor() const override
+      {
+        return true;
+      }
+
+      // CHOLMOD's CHOLMOD_L and CHOLMOD_Lt systems do not permute; P b is
+      // (P b)_k = b_{Perm[k]}.
+      void forward_substitution(
+        std::vector<Vector<double>>                      &y,
+        const std::vector<TrilinosWrappers::MPI::Vector> &b) override
+      {
+        const auto       *permutation = static_cast<const int *>(factor->Perm);
+        const std::size_t n           = factor->n;
+        y.resize(b.size());
+        solve_block(
+          CHOLMOD_L,
+          b.size(),
+          [&](double *column, unsigned int j) {
+            const double *values = b[j].begin();
+            for (std::size_t k = 0; k < n; ++k)
+              column[k] = values[permutation[k]];
+          },
+          [&](const double *column, unsigned int j) {
+            y[j].reinit(n, true);
+            std::copy(column, column + n, y[j].begin());
+          });
+      }
+
+      void backward_substitution(TrilinosWrappers::MPI::Vector &x,
+                                 const Vector<double>          &y) override
+      {
+        const auto       *permutation = static_cast<const int *>(factor->Perm);
+        const std::size_t n           = factor->n;
+        solve_block(
+          CHOLMOD_Lt,
+          1,
+          [&](double *column, unsigned int) {
+            std::copy(y.begin(), y.end(), column);
+          },
+          [&](const double *column, unsigned int) {
+            double *values = x.begin();
+            for (std::size_t k = 0; k < n; ++k)
+              values[permutation[k]] = column[k];
+          });
+      }
+
     private:
       template <typename Fill, typename Take>
-      void solve_block(const unsigned int n_columns,
+      void solve_block(const int          system,
+                       const unsigned int n_columns,
                        const Fill        &fill,
                        const Take        &take)
       {
@@ -185,7 +257,7 @@ namespace Contact
           cholmod_allocate_dense(n, n_columns, n, CHOLMOD_REAL, &common);
         for (unsigned int j = 0; j < n_columns; ++j)
           fill(static_cast<double *>(B->x) + j * n, j);
-        cholmod_solve2(CHOLMOD_A,
+        cholmod_solve2(system,
                        factor,
                        B,
                        nullptr,

@@ -541,14 +541,15 @@ namespace Contact
         Patterns::Selection("auto|Delassus|constraints"),
         "How the friction problem of a step is solved. Delassus: on the "
         "tangential unknowns of Gamma_3 alone, with the dense Delassus "
-        "operator D = C K^{-1} C^T built once per run from the columns "
-        "Z = K^{-1} C^T (memory: unknowns times tangential unknowns on "
-        "Gamma_3); a step then costs two substitutions with the factor of K "
-        "and dense work on Gamma_3. constraints: the straightforward path; "
-        "every Newton step of the active set method solves on the whole "
-        "body with the sticking nodes held fixed as constraints, and "
-        "refactorises; no Z, no D. auto: Delassus while Z needs at most "
-        "512 MB, constraints beyond.");
+        "operator D = C K^{-1} C^T = Y^T Y built once per run from "
+        "Y = L^{-1} P C^T (sparse; K = P^T L L^T P by CHOLMOD); a step then "
+        "costs one forward and one backward substitution and dense work on "
+        "Gamma_3. constraints: the straightforward path; every Newton step "
+        "of the active set method solves on the whole body with the "
+        "sticking nodes held fixed as constraints, and refactorises; no D. "
+        "auto: Delassus with CHOLMOD while Gamma_3 has at most 2000 "
+        "tangential unknowns (the dense Newton steps cost O(n^3) in their "
+        "number n), constraints otherwise.");
     }
     prm.leave_subsection();
   }
@@ -576,6 +577,15 @@ namespace Contact
                 "Solver/Active set parameter",
                 active_set_parameter,
                 "a value > 0");
+    AssertThrow(contact_solver != "Delassus" || direct_solver == "CHOLMOD",
+                ExcMessage("'Solver/Contact solver = Delassus' works between "
+                           "the forward and backward substitutions with the "
+                           "triangular factor of K, which only CHOLMOD "
+                           "exposes: it needs 'Solver/Direct solver = "
+                           "CHOLMOD' (here " +
+                           direct_solver +
+                           "). 'constraints' and 'auto' work with every "
+                           "direct solver."));
   }
 
 
