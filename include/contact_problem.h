@@ -12,6 +12,7 @@
  *   contact_solver.cc   factorisation, Delassus operator, convexification
  *   active_set_constraints.cc  the straightforward path (whole-body solves)
  *   output.cc           VTU/PVD, time_series.csv, console
+ *   checkpoint.cc       checkpoint and restart
  *   verification.cc     errors against a manufactured solution
  * Each file instantiates its own members for dim = 2 and 3.
  */
@@ -246,9 +247,18 @@ namespace Contact
     void       check_manufactured_setup() const;
     ErrorNorms compute_errors() const;
 
+    // checkpoint.cc
+    std::string checkpoint_name() const;
+    bool        checkpoint_due() const;
+    void        require_checkpoint() const;
+    void        save_checkpoint();
+    void        load_checkpoint();
+    void        cut_output_back_to_checkpoint() const;
+
     // output.cc
     void           prepare_output_directory();
     void           write_vtu();
+    void           write_pvd() const;
     void           write_time_series_row(const StepStatistics &statistics);
     Tensor<1, dim> probe_displacement(const unsigned int probe) const;
     void           print_progress(const StepStatistics &statistics) const;
@@ -359,6 +369,8 @@ namespace Contact
     ErrorNorms                                       max_errors;
     std::function<void(const ContactProblem<dim> &)> step_observer;
     Timer                                            run_timer;
+    // Wall time since the last checkpoint, for 'Output/Checkpoint minutes'.
+    Timer checkpoint_timer;
   };
 } // namespace Contact
 

@@ -170,6 +170,11 @@ namespace Contact
     std::vector<std::vector<double>> probe_points;
     unsigned int                     progress_interval;
     bool                             print_timings;
+    /** Write a checkpoint every this many steps / minutes; 0: never. */
+    unsigned int checkpoint_interval;
+    double       checkpoint_minutes;
+    /** Continue from the checkpoint in the output directory. */
+    bool resume;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm, const unsigned int dim);

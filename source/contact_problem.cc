@@ -151,6 +151,8 @@ namespace Contact
   RunSummary ContactProblem<dim>::run()
   {
     run_timer.restart();
+    if (parameters.output.resume)
+      require_checkpoint();
     make_grid();
     if (exact_solution)
       check_manufactured_setup();
@@ -164,16 +166,22 @@ namespace Contact
     set_initial_values();
     factorize_system_matrix();
     setup_contact_solver();
-    prepare_output_directory();
 
-    if (exact_solution)
-      current_errors = compute_errors();
-    write_time_series_row(StepStatistics());
     const unsigned int vtu_interval = parameters.output.vtu_interval;
-    if (vtu_interval > 0)
-      write_vtu();
+    step_number                     = 0;
+    if (parameters.output.resume)
+      load_checkpoint();
+    prepare_output_directory();
+    if (!parameters.output.resume)
+      {
+        if (exact_solution)
+          current_errors = compute_errors();
+        write_time_series_row(StepStatistics());
+        if (vtu_interval > 0)
+          write_vtu();
+      }
 
-    for (step_number = 1; step_number <= n_time_steps; ++step_number)
+    for (++step_number; step_number <= n_time_steps; ++step_number)
       {
         time                            = step_number * time_step;
         const StepStatistics statistics = do_time_step();
@@ -209,6 +217,8 @@ namespace Contact
         report_contact_state();
         if (step_observer)
           step_observer(*this);
+        if (checkpoint_due())
+          save_checkpoint();
       }
     step_number = n_time_steps;
     print_summary();

@@ -29,11 +29,18 @@ namespace Contact
                 ExcMessage("Cannot create the directory '" + directory +
                            "' of the entry 'Output/Output directory': " +
                            error.message()));
+    // VTU pieces are written here first and renamed into the directory
+    // when complete (write_vtu).
+    std::filesystem::create_directories(directory + "/.partial", error);
     std::ofstream used(directory + "/parameters.prm");
     used << parameters.used_parameters;
     AssertThrow(used, ExcMessage("Cannot write into '" + directory + "'."));
 
-    if (parameters.output.write_time_series)
+    // On resume, load_checkpoint has cut the series back to the
+    // checkpoint's step; rows are appended from there.
+    if (parameters.output.write_time_series && parameters.output.resume)
+      time_series.open(directory + "/time_series.csv", std::ios::app);
+    else if (parameters.output.write_time_series)
       {
         time_series.open(directory + "/time_series.csv");
         time_series
@@ -235,19 +242,51 @@ namespace Contact
     flags.cycle             = step_number;
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
-    const std::string record =
-      data_out.write_vtu_with_pvtu_record(parameters.output.directory + "/",
-                                          "solution",
-                                          step_number,
-                                          mpi_communicator,
-                                          5);
-
+    // Atomic output: the pieces and the .pvtu record go to .partial/ and
+    // are renamed into the output directory once all processes have
+    // written them, the record last; the PVD is rewritten by rename. A run
+    // killed at any point leaves only complete files, and the PVD lists
+    // only files that exist.
+    const std::string &directory = parameters.output.directory;
+    const std::string  record    = data_out.write_vtu_with_pvtu_record(
+      directory + "/.partial/", "solution", step_number, mpi_communicator, 5);
+    const int ierr = MPI_Barrier(mpi_communicator);
+    AssertThrowMPI(ierr);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
+        const std::string prefix =
+          "solution_" + Utilities::int_to_string(step_number, 5) + ".";
+        for (const auto &entry :
+             std::filesystem::directory_iterator(directory + "/.partial"))
+          {
+            const std::string name = entry.path().filename().string();
+            if (name.rfind(prefix, 0) == 0 &&
+                entry.path().extension() == ".vtu")
+              std::filesystem::rename(entry.path(), directory + "/" + name);
+          }
+        std::filesystem::rename(directory + "/.partial/" + record,
+                                directory + "/" + record);
         pvd_records.emplace_back(time, record);
-        std::ofstream pvd(parameters.output.directory + "/solution.pvd");
-        DataOutBase::write_pvd_record(pvd, pvd_records);
+        write_pvd();
       }
+  }
+
+
+  // @sect4{ContactProblem::write_pvd}
+
+  template <int dim>
+  void ContactProblem<dim>::write_pvd() const
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    const std::string name = parameters.output.directory + "/solution.pvd";
+    {
+      std::ofstream pvd(name + ".tmp");
+      DataOutBase::write_pvd_record(pvd, pvd_records);
+      pvd.flush();
+      AssertThrow(pvd, ExcMessage("Cannot write '" + name + ".tmp'."));
+    }
+    std::filesystem::rename(name + ".tmp", name);
   }
 
 
@@ -384,6 +423,7 @@ namespace Contact
   template void ContactProblem<dim>::write_time_series_row(                 \
     const StepStatistics &);                                                \
   template void ContactProblem<dim>::write_vtu();                           \
+  template void ContactProblem<dim>::write_pvd() const;                     \
   template void ContactProblem<dim>::print_progress(const StepStatistics &) \
     const;                                                                  \
   template void           ContactProblem<dim>::report_contact_state();      \

@@ -711,6 +711,27 @@ namespace Contact
                         Patterns::Bool(),
                         "Print the wall time summary at the end (switch off "
                         "for tests).");
+      prm.declare_entry("Checkpoint interval",
+                        "0",
+                        Patterns::Integer(0),
+                        "Write a checkpoint (output directory/checkpoint) "
+                        "every this many steps, and at the end; 0: by steps "
+                        "never.");
+      prm.declare_entry("Checkpoint minutes",
+                        "0",
+                        Patterns::Double(0),
+                        "Write a checkpoint when this many minutes of wall "
+                        "time have passed since the last one, and at the "
+                        "end; 0: by time never.");
+      prm.declare_entry(
+        "Resume",
+        "false",
+        Patterns::Bool(),
+        "Continue the run from the checkpoint in the output directory "
+        "(the command line option --resume sets this). The scene must be the "
+        "same; a later 'Time/End time' with the same time step extends a "
+        "finished run. time_series.csv and solution.pvd are cut back to the "
+        "checkpoint's step.");
     }
     prm.leave_subsection();
   }
@@ -727,8 +748,11 @@ namespace Contact
         Utilities::split_string_list(prm.get("Report times")));
       probe_points =
         parse_points(prm.get("Probe points"), dim, "Output/Probe points");
-      progress_interval = prm.get_integer("Progress interval");
-      print_timings     = prm.get_bool("Print timings");
+      progress_interval   = prm.get_integer("Progress interval");
+      print_timings       = prm.get_bool("Print timings");
+      checkpoint_interval = prm.get_integer("Checkpoint interval");
+      checkpoint_minutes  = prm.get_double("Checkpoint minutes");
+      resume              = prm.get_bool("Resume");
     }
     prm.leave_subsection();
 
@@ -785,6 +809,11 @@ namespace Contact
                            "the V-norm); allowed with friction in 3D are "
                            "degree 1 on simplices or any degree on "
                            "hexahedra."));
+
+    AssertThrow(!(output.resume && convergence_study.levels > 0),
+                ExcMessage("Entry 'Output/Resume' (--resume): a convergence "
+                           "study ('Convergence study/Levels' > 0) cannot be "
+                           "resumed; allowed is Resume = false there."));
 
     std::ostringstream text;
     prm.print_parameters(text,

@@ -28,8 +28,10 @@ namespace Contact
   namespace
   {
     const char *usage =
-      "Usage: contact [--set 'Section/Entry=value']... scene.prm\n"
+      "Usage: contact [--set 'Section/Entry=value']... [--resume] "
+      "scene.prm\n"
       "       contact --print-parameters\n"
+      "  --resume continues from the checkpoint in the output directory\n"
       "  --set overrides an entry of the .prm file, e.g.\n"
       "  --set 'Friction/Friction bound S=2.5'\n"
       "  --print-parameters prints every entry with its default, range and "
@@ -50,6 +52,8 @@ namespace Contact
           const std::string argument = argv[i];
           if (argument == "--print-parameters")
             command_line.print_parameters = true;
+          else if (argument == "--resume")
+            command_line.overrides.emplace_back("Output/Resume", "true");
           else if (argument == "--set" && i + 1 < argc)
             {
               const std::string assignment = argv[++i];

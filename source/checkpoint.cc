@@ -1,0 +1,331 @@
+/* Checkpoint and restart: everything a time step reads from the past, in
+   one binary file per process (Boost serialization), written to a temporary
+   name and renamed, so a run killed at any moment leaves either the
+   previous checkpoint or the new one, never half of one.
+
+   The mesh, the matrices and the factorisation are not stored: they follow
+   from the .prm deterministically and are rebuilt on --resume, which then
+   continues with bitwise the same numbers as the uninterrupted run
+   (tests/verification/kill_and_resume). */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <contact_problem.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace Contact
+{
+  namespace
+  {
+    const std::string checkpoint_format = "contact checkpoint 1";
+
+    // The quantities that identify the discrete problem a checkpoint
+    // belongs to.
+    struct ProblemShape
+    {
+      unsigned int            dim          = 0;
+      types::global_dof_index n_dofs       = 0;
+      unsigned int            n_contact    = 0;
+      unsigned int            n_processes  = 0;
+      double                  time_step    = 0;
+      unsigned int            n_probes     = 0;
+      bool                    manufactured = false;
+      bool                    operator==(const ProblemShape &other) const
+      {
+        return dim == other.dim && n_dofs == other.n_dofs &&
+               n_contact == other.n_contact &&
+               n_processes == other.n_processes &&
+               time_step == other.time_step && n_probes == other.n_probes &&
+               manufactured == other.manufactured;
+      }
+      std::string describe() const
+      {
+        std::ostringstream text;
+        text << dim << "D, " << n_dofs << " unknowns, " << n_contact
+             << " nodes on Gamma_3, " << n_processes
+             << " process(es), k = " << time_step << ", " << n_probes
+             << " probe(s)" << (manufactured ? ", manufactured solution" : "");
+        return text.str();
+      }
+      template <class Archive>
+      void serialize(Archive &archive, const unsigned int)
+      {
+        archive &dim &n_dofs &n_contact &n_processes &time_step &n_probes
+          &manufactured;
+      }
+    };
+
+    template <class Archive>
+    void serialize_vector(Archive &archive, VectorType &vector)
+    {
+      std::vector<double> values(vector.begin(), vector.end());
+      archive            &values;
+      AssertThrow(values.size() == vector.locally_owned_size(),
+                  ExcInternalError());
+      std::copy(values.begin(), values.end(), vector.begin());
+    }
+
+    // Boost archives have no const/non-const split for these members:
+    // one function that reads or writes, used by both directions.
+    template <class Archive>
+    void serialize_state(Archive                  &archive,
+                         unsigned int             &step_number,
+                         double                   &time,
+                         std::vector<VectorType *> vectors,
+                         Vector<double>           &friction_force,
+                         Vector<double>           &slip_velocity,
+                         std::vector<int>         &node_state,
+                         EnergyBalance            &energy,
+                         StepStatistics           &totals,
+                         double                   &max_residual,
+                         ErrorNorms               &current_errors,
+                         ErrorNorms               &max_errors,
+                         std::vector<std::pair<double, std::string>> &pvd,
+                         std::vector<double> &report_times)
+    {
+      archive &step_number &time;
+      for (VectorType *vector : vectors)
+        serialize_vector(archive, *vector);
+      archive &friction_force &slip_velocity &node_state;
+      archive &energy.kinetic &energy.elastic &energy.initial &energy
+        .external_work &energy.viscous_dissipation &energy
+        .friction_dissipation &energy.numerical_dissipation;
+      archive &totals.convexification_iterations &totals
+        .active_set_iterations                   &totals.rejected_accelerations;
+      archive                                    &max_residual;
+      for (ErrorNorms *errors : {&current_errors, &max_errors})
+        archive & errors->displacement_V & errors->velocity_L2 &
+          errors->displacement_L2;
+      archive &pvd &report_times;
+    }
+  } // namespace
+
+
+  // @sect4{ContactProblem::checkpoint_name}
+
+  template <int dim>
+  std::string ContactProblem<dim>::checkpoint_name() const
+  {
+    std::string name = parameters.output.directory + "/checkpoint";
+    if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+      name += "." + Utilities::int_to_string(
+                      Utilities::MPI::this_mpi_process(mpi_communicator));
+    return name;
+  }
+
+
+  // @sect4{ContactProblem::require_checkpoint}
+
+  // Checked before anything is computed or written.
+  template <int dim>
+  void ContactProblem<dim>::require_checkpoint() const
+  {
+    AssertThrow(std::filesystem::exists(checkpoint_name()),
+                ExcMessage("'Output/Resume' (--resume): there is no "
+                           "checkpoint '" +
+                           checkpoint_name() +
+                           "'. Checkpoints are written with 'Output/"
+                           "Checkpoint interval' or 'Output/Checkpoint "
+                           "minutes' into the output directory."));
+  }
+
+
+  // @sect4{ContactProblem::checkpoint_due}
+
+  // Every 'Checkpoint interval' steps, when 'Checkpoint minutes' have
+  // passed, and at the end (so that a finished run can be extended). The
+  // processes agree on the wall time criterion through a reduction.
+  template <int dim>
+  bool ContactProblem<dim>::checkpoint_due() const
+  {
+    const auto &output = parameters.output;
+    if (output.checkpoint_interval == 0 && output.checkpoint_minutes == 0)
+      return false;
+    const bool late =
+      output.checkpoint_minutes > 0 &&
+      checkpoint_timer.wall_time() >= 60. * output.checkpoint_minutes;
+    return step_number == n_time_steps ||
+           (output.checkpoint_interval > 0 &&
+            step_number % output.checkpoint_interval == 0) ||
+           Utilities::MPI::max(late ? 1 : 0, mpi_communicator) == 1;
+  }
+
+
+  // @sect4{ContactProblem::save_checkpoint}
+
+  template <int dim>
+  void ContactProblem<dim>::save_checkpoint()
+  {
+    TimerOutput::Scope t(computing_timer, "Checkpoint");
+    const ProblemShape shape = {dim,
+                                dof_handler.n_dofs(),
+                                static_cast<unsigned int>(contact_nodes.size()),
+                                Utilities::MPI::n_mpi_processes(
+                                  mpi_communicator),
+                                time_step,
+                                static_cast<unsigned int>(probes.size()),
+                                exact_solution != nullptr};
+    std::vector<int>   states;
+    for (const NodeState state : node_state)
+      states.push_back(static_cast<int>(state));
+    const std::string name = checkpoint_name();
+    {
+      std::ofstream                   file(name + ".tmp", std::ios::binary);
+      boost::archive::binary_oarchive archive(file);
+      std::string                     format  = checkpoint_format;
+      ProblemShape                    written = shape;
+      archive &format                &written;
+      serialize_state(archive,
+                      step_number,
+                      time,
+                      {&displacement,
+                       &velocity,
+                       &mass_times_velocity,
+                       &elasticity_times_displacement},
+                      friction_force,
+                      slip_velocity,
+                      states,
+                      energy,
+                      totals,
+                      max_relative_energy_residual,
+                      current_errors,
+                      max_errors,
+                      pvd_records,
+                      pending_report_times);
+      file.flush();
+      AssertThrow(file,
+                  ExcMessage("Cannot write the checkpoint '" + name +
+                             ".tmp' (disk full?)."));
+    }
+    std::filesystem::rename(name + ".tmp", name);
+    checkpoint_timer.restart();
+  }
+
+
+  // @sect4{ContactProblem::load_checkpoint}
+
+  template <int dim>
+  void ContactProblem<dim>::load_checkpoint()
+  {
+    const std::string name = checkpoint_name();
+    std::ifstream     file(name, std::ios::binary);
+    AssertThrow(file, ExcMessage("Cannot read the checkpoint '" + name + "'."));
+    boost::archive::binary_iarchive archive(file);
+    std::string                     format;
+    ProblemShape                    stored;
+    archive                        &format;
+    AssertThrow(format == checkpoint_format,
+                ExcMessage("'" + name +
+                           "' is not a checkpoint of this "
+                           "program."));
+    archive           &stored;
+    const ProblemShape shape = {dim,
+                                dof_handler.n_dofs(),
+                                static_cast<unsigned int>(contact_nodes.size()),
+                                Utilities::MPI::n_mpi_processes(
+                                  mpi_communicator),
+                                time_step,
+                                static_cast<unsigned int>(probes.size()),
+                                exact_solution != nullptr};
+    AssertThrow(stored == shape,
+                ExcMessage("The checkpoint '" + name +
+                           "' belongs to another "
+                           "discrete problem (" +
+                           stored.describe() + ") than this .prm gives (" +
+                           shape.describe() +
+                           "): resume with the scene, mesh, time step and "
+                           "number of processes of the checkpointed run."));
+
+    std::vector<int> states;
+    serialize_state(archive,
+                    step_number,
+                    time,
+                    {&displacement,
+                     &velocity,
+                     &mass_times_velocity,
+                     &elasticity_times_displacement},
+                    friction_force,
+                    slip_velocity,
+                    states,
+                    energy,
+                    totals,
+                    max_relative_energy_residual,
+                    current_errors,
+                    max_errors,
+                    pvd_records,
+                    pending_report_times);
+    node_state.assign(states.size(), NodeState::stick);
+    for (unsigned int p = 0; p < states.size(); ++p)
+      node_state[p] = static_cast<NodeState>(states[p]);
+    AssertThrow(step_number <= n_time_steps,
+                ExcMessage("The checkpoint is at step " +
+                           std::to_string(step_number) +
+                           ", beyond the end of this run (" +
+                           std::to_string(n_time_steps) +
+                           " steps): 'Time/End time' is too small."));
+    pcout << "Resumed from the checkpoint at step " << step_number
+          << " (t = " << time << ")." << std::endl;
+    cut_output_back_to_checkpoint();
+    checkpoint_timer.restart();
+  }
+
+
+  // @sect4{ContactProblem::cut_output_back_to_checkpoint}
+
+  // The killed run may have written rows and VTU records after its last
+  // checkpoint; the resumed run recomputes those steps, so the time series
+  // keeps the rows up to the checkpoint's step and the PVD the records
+  // stored with it. Both are rewritten atomically.
+  template <int dim>
+  void ContactProblem<dim>::cut_output_back_to_checkpoint() const
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    const std::string &directory = parameters.output.directory;
+    if (parameters.output.write_time_series)
+      {
+        const std::string name = directory + "/time_series.csv";
+        std::ifstream     in(name);
+        std::ofstream     out(name + ".tmp");
+        std::string       line;
+        if (std::getline(in, line))
+          out << line << '\n';
+        while (std::getline(in, line) && in.good() && !line.empty())
+          {
+            const unsigned int step =
+              std::stoul(line.substr(0, line.find(',')));
+            if (step > step_number)
+              break;
+            out << line << '\n';
+          }
+        out.flush();
+        AssertThrow(out, ExcMessage("Cannot write '" + name + ".tmp'."));
+        std::filesystem::rename(name + ".tmp", name);
+      }
+    write_pvd();
+  }
+
+
+#define INSTANTIATE(dim)                                                \
+  template std::string ContactProblem<dim>::checkpoint_name() const;    \
+  template bool        ContactProblem<dim>::checkpoint_due() const;     \
+  template void        ContactProblem<dim>::require_checkpoint() const; \
+  template void        ContactProblem<dim>::save_checkpoint();          \
+  template void        ContactProblem<dim>::load_checkpoint();          \
+  template void ContactProblem<dim>::cut_output_back_to_checkpoint() const;
+
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace Contact
