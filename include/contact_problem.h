@@ -52,6 +52,7 @@
 #include <array>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -213,6 +214,7 @@ namespace Contact
     // contact_solver.cc
     void           factorize_system_matrix();
     void           setup_contact_solver();
+    double         largest_weighted_delassus_eigenvalue();
     void           build_delassus_operator();
     StepStatistics do_time_step();
     StepStatistics
@@ -349,6 +351,9 @@ namespace Contact
     Vector<double>                friction_force;
     Vector<double>                slip_velocity;
     std::vector<NodeState>        node_state;
+    // A step's friction problem is convex while S (a - b) alpha is below
+    // this (largest_weighted_delassus_eigenvalue).
+    double convexity_limit = std::numeric_limits<double>::infinity();
 
     EnergyBalance energy;
 

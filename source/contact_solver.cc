@@ -6,6 +6,7 @@
 #include <contact_problem.h>
 
 #include <algorithm>
+#include <iomanip>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -124,6 +125,69 @@ namespace Contact
         n * m <= 2000));
     if (use_delassus_operator)
       build_delassus_operator();
+
+    if (!friction_law.is_rate_independent())
+      {
+        convexity_limit = 1. / largest_weighted_delassus_eigenvalue();
+        pcout << "Gamma_3: the friction problem of a step is convex while "
+              << "S (a - b) alpha < " << std::setprecision(3) << convexity_limit
+              << "; here S (a - b) alpha = "
+              << parameters.friction.bound_S *
+                   friction_law.one_sided_lipschitz_constant()
+              << std::setprecision(6) << std::endl;
+      }
+  }
+
+
+  // @sect4{ContactProblem::largest_weighted_delassus_eigenvalue}
+
+  // On Gamma_3 a step minimises
+  //   E(v) = 1/2 (v - v_free)^T D^{-1} (v - v_free) + sum_p m_p j(v_p),
+  // and j(v) = S int_0^|v| mu is concave along |v| with curvature down to
+  // -S (a - b) alpha. E is convex, and the step's solution unique, while
+  //   D^{-1} - S (a - b) alpha M >= 0,  i.e.
+  //   S (a - b) alpha < 1 / lambda_max(M^{1/2} D M^{1/2}),
+  // M = diag(m_p): the discrete, per-step counterpart of the paper's
+  // condition (3.22), m_A > S lambda C_0^2, in which (rho/k) M + A + k B
+  // takes the place of the viscosity and the trace constant is that of V_h.
+  // lambda_max by the power method (M^{1/2} D M^{1/2} is symmetric positive
+  // semidefinite), D applied as D or as C K^{-1} C^T.
+  template <int dim>
+  double ContactProblem<dim>::largest_weighted_delassus_eigenvalue()
+  {
+    const unsigned int n = contact_nodes.size(), m = dim - 1;
+    Vector<double>     x(n * m), y(n * m), root_weight(n * m);
+    for (unsigned int p = 0; p < n; ++p)
+      for (unsigned int i = 0; i < m; ++i)
+        root_weight[p * m + i] = std::sqrt(contact_nodes[p].weight);
+    const auto apply = [&](const Vector<double> &in, Vector<double> &out) {
+      Vector<double> scaled(in);
+      scaled.scale(root_weight);
+      if (use_delassus_operator)
+        delassus_operator.vmult(out, scaled);
+      else
+        {
+          VectorType w(locally_owned_dofs, mpi_communicator);
+          factorization->solve(w, friction_load(scaled));
+          constraints.distribute(w);
+          out = tangential_velocities(w);
+        }
+      out.scale(root_weight);
+    };
+
+    x               = 1.;
+    double estimate = 0;
+    for (unsigned int iteration = 0; iteration < 200; ++iteration)
+      {
+        x /= x.l2_norm();
+        apply(x, y);
+        const double rayleigh_quotient = x * y;
+        x.swap(y);
+        if (std::abs(rayleigh_quotient - estimate) <= 1e-8 * rayleigh_quotient)
+          return rayleigh_quotient;
+        estimate = rayleigh_quotient;
+      }
+    return estimate;
   }
 
 
@@ -471,6 +535,8 @@ namespace Contact
             << "Gamma_3; here S = " << friction.bound_S << ", (a - b) alpha = "
             << friction_law.one_sided_lipschitz_constant()
             << ", k = " << time_step
+            << " (a step's problem is convex while S (a - b) alpha < "
+            << convexity_limit << ")"
             << ". More iterations, a larger 'Solver/Anderson depth', a "
             << "smaller 'Time/Time step' or a smaller 'Friction/Friction bound "
             << "S' help.";
