@@ -186,6 +186,15 @@ namespace Contact
         time                            = step_number * time_step;
         const StepStatistics statistics = do_time_step();
         update_energy_balance();
+        AssertThrow(std::isfinite(velocity.linfty_norm()) &&
+                      std::isfinite(energy.residual()),
+                    ExcMessage("Step " + std::to_string(step_number) +
+                               " (t = " + std::to_string(time) +
+                               ") produced a velocity or energy that is not "
+                               "a finite number; the results up to step " +
+                               std::to_string(step_number - 1) +
+                               " are written. Check the loads and material "
+                               "data for values that overflow."));
         max_relative_energy_residual =
           std::max(max_relative_energy_residual,
                    std::abs(energy.residual()) /

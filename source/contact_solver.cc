@@ -411,9 +411,19 @@ namespace Contact
             "The active set method for the Tresca problem did not converge "
             "in step " +
             std::to_string(step_number) + " (t = " + std::to_string(time) +
+            ", convexification iteration " +
+            std::to_string(statistics.convexification_iterations) +
             ") within " + std::to_string(solver.max_active_set_iterations) +
-            " iterations ('Solver/Max active set iterations'); a smaller "
-            "'Solver/Active set parameter' damps it."));
+            " iterations ('Solver/Max active set iterations'); its "
+            "parameter c was halved " +
+            std::to_string(tresca.cycles_cured) +
+            " times against cycling. The sets cycle when D = C K^{-1} C^T "
+            "is ill-conditioned, e.g. for a nearly incompressible material "
+            "('Material/Poisson ratio' = " +
+            std::to_string(parameters.material.poisson_ratio) +
+            "). More iterations help (each halving damps the cycling), as "
+            "may a different 'Solver/Active set parameter' (here " +
+            std::to_string(solver.active_set_parameter) + ")."));
 
         const double energy_now = energy_on_gamma3();
         if (anderson.last_step_was_accelerated() &&
