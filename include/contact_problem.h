@@ -101,6 +101,7 @@ namespace Contact
     unsigned int active_set_iterations      = 0;
     unsigned int rejected_accelerations     = 0;
     unsigned int cycles_cured               = 0;
+    unsigned int step_cuts                  = 0;
     unsigned int n_stick                    = 0;
     unsigned int n_slip                     = 0;
     double       max_slip_rate              = 0;
@@ -200,6 +201,7 @@ namespace Contact
 
     // assembly.cc
     void           assemble_matrices();
+    void           form_system_matrix();
     void           assemble_load(const double time,
                                  VectorType  &load_vector,
                                  const bool   with_body_force,
@@ -214,6 +216,9 @@ namespace Contact
     // contact_solver.cc
     void           factorize_system_matrix();
     void           setup_contact_solver();
+    void           initialise_contact_state();
+    void           change_time_step(const double k);
+    StepStatistics advance(const unsigned int cuts_left);
     double         largest_weighted_delassus_eigenvalue();
     void           build_delassus_operator();
     StepStatistics do_time_step();
@@ -271,7 +276,9 @@ namespace Contact
     const Parameters   parameters;
     const FrictionLaw  friction_law;
     const unsigned int n_time_steps;
-    const double       time_step;
+    // The time step k: constant, except while a step is cut
+    // ('Solver/Step cuts').
+    double time_step;
 
     MPI_Comm            mpi_communicator;
     ConditionalOStream  pcout;

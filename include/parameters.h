@@ -125,6 +125,8 @@ namespace Contact
     double       active_set_parameter;
     unsigned int anderson_depth;
     std::string  direct_solver;
+    /** Halvings of k allowed for a step that does not converge. */
+    unsigned int step_cuts;
     /** 'auto', 'Delassus' or 'constraints'. */
     std::string contact_solver;
 

@@ -116,7 +116,16 @@ namespace Contact
     for (MatrixType *matrix :
          {&mass_matrix, &viscosity_matrix, &elasticity_matrix})
       matrix->compress(VectorOperation::add);
+    form_system_matrix();
+  }
 
+
+  // @sect4{ContactProblem::form_system_matrix}
+
+  // K = (1/k) M + A_h + k B_h of (5.2), for the current k.
+  template <int dim>
+  void ContactProblem<dim>::form_system_matrix()
+  {
     system_matrix.copy_from(mass_matrix);
     system_matrix *= 1. / time_step;
     system_matrix.add(1., viscosity_matrix);
@@ -370,6 +379,7 @@ namespace Contact
 
 #define INSTANTIATE(dim)                                                    \
   template void ContactProblem<dim>::assemble_matrices();                   \
+  template void ContactProblem<dim>::form_system_matrix();                  \
   template void ContactProblem<dim>::assemble_load(const double,            \
                                                    VectorType &,            \
                                                    const bool,              \

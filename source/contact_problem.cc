@@ -166,6 +166,7 @@ namespace Contact
     set_initial_values();
     factorize_system_matrix();
     setup_contact_solver();
+    initialise_contact_state();
 
     const unsigned int vtu_interval = parameters.output.vtu_interval;
     step_number                     = 0;
@@ -184,8 +185,7 @@ namespace Contact
     for (++step_number; step_number <= n_time_steps; ++step_number)
       {
         time                            = step_number * time_step;
-        const StepStatistics statistics = do_time_step();
-        update_energy_balance();
+        const StepStatistics statistics = advance(parameters.solver.step_cuts);
         AssertThrow(std::isfinite(velocity.linfty_norm()) &&
                       std::isfinite(energy.residual()),
                     ExcMessage("Step " + std::to_string(step_number) +

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 namespace Contact
 {
@@ -94,13 +95,6 @@ namespace Contact
   void ContactProblem<dim>::setup_contact_solver()
   {
     const unsigned int n = contact_nodes.size(), m = dim - 1;
-    friction_force.reinit(n * m);
-    slip_velocity = tangential_velocities(velocity);
-    // Without friction Gamma_3 only carries the normal constraint: every
-    // node slips freely and nothing is needed beyond the free velocity.
-    node_state.assign(n,
-                      friction_law.is_frictionless() ? NodeState::slip :
-                                                       NodeState::stick);
     use_delassus_operator = false;
     if (friction_law.is_frictionless())
       return;
@@ -136,6 +130,100 @@ namespace Contact
                    friction_law.one_sided_lipschitz_constant()
               << std::setprecision(6) << std::endl;
       }
+  }
+
+
+  // @sect4{ContactProblem::initialise_contact_state}
+
+  // No friction force yet, the initial slip velocity, and every node
+  // sticking (without friction Gamma_3 only carries the normal constraint:
+  // every node slips freely).
+  template <int dim>
+  void ContactProblem<dim>::initialise_contact_state()
+  {
+    friction_force.reinit(contact_nodes.size() * (dim - 1));
+    slip_velocity = tangential_velocities(velocity);
+    node_state.assign(contact_nodes.size(),
+                      friction_law.is_frictionless() ? NodeState::slip :
+                                                       NodeState::stick);
+  }
+
+
+  // @sect4{ContactProblem::change_time_step}
+
+  // For a step cut: K = (1/k) M + A + k B for the new k, its factorisation
+  // and everything built from it.
+  template <int dim>
+  void ContactProblem<dim>::change_time_step(const double k)
+  {
+    time_step = k;
+    form_system_matrix();
+    factorize_system_matrix();
+    setup_contact_solver();
+  }
+
+
+  // @sect4{ContactProblem::advance}
+
+  // The step from time - k to time. With 'Solver/Step cuts' > 0 a step
+  // whose convexification or active set method fails is taken again as two
+  // steps of k/2 (each of which may be cut again, up to the limit), from the
+  // state before the failed attempt; then k is restored. Without cuts left
+  // the failure ends the run with its diagnostic.
+  template <int dim>
+  StepStatistics ContactProblem<dim>::advance(const unsigned int cuts_left)
+  {
+    if (cuts_left == 0)
+      {
+        const StepStatistics statistics = do_time_step();
+        update_energy_balance();
+        return statistics;
+      }
+
+    const auto saved = std::make_tuple(velocity,
+                                       displacement,
+                                       mass_times_velocity,
+                                       elasticity_times_displacement,
+                                       friction_force,
+                                       slip_velocity,
+                                       node_state,
+                                       energy);
+    try
+      {
+        const StepStatistics statistics = do_time_step();
+        update_energy_balance();
+        return statistics;
+      }
+    catch (const ExceptionBase &failure)
+      {
+        std::tie(velocity,
+                 displacement,
+                 mass_times_velocity,
+                 elasticity_times_displacement,
+                 friction_force,
+                 slip_velocity,
+                 node_state,
+                 energy) = saved;
+        pcout << "Step " << step_number << " (t = " << time
+              << ") did not converge with k = " << time_step
+              << "; cutting it into two steps of k/2 ('Solver/Step cuts', "
+              << cuts_left - 1 << " more allowed)." << std::endl;
+      }
+
+    const double k = time_step, end = time;
+    change_time_step(k / 2);
+    time                  = end - k / 2;
+    StepStatistics first  = advance(cuts_left - 1);
+    time                  = end;
+    StepStatistics second = advance(cuts_left - 1);
+    change_time_step(k);
+
+    second.convexification_iterations += first.convexification_iterations;
+    second.active_set_iterations += first.active_set_iterations;
+    second.rejected_accelerations += first.rejected_accelerations;
+    second.cycles_cured += first.cycles_cured;
+    second.step_cuts += first.step_cuts + 1;
+    return second;
   }
 
 
@@ -575,28 +663,31 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                                     \
-  template void   ContactProblem<dim>::factorize_system_matrix();            \
-  template double ContactProblem<dim>::tangential_velocity(                  \
-    const ContactNode<dim> &, const unsigned int, const VectorType &) const; \
-  template Vector<double> ContactProblem<dim>::tangential_velocities(        \
-    const VectorType &) const;                                               \
-  template void       ContactProblem<dim>::build_delassus_operator();        \
-  template void       ContactProblem<dim>::setup_contact_solver();           \
-  template VectorType ContactProblem<dim>::friction_load(                    \
-    const Vector<double> &) const;                                           \
-  template TrescaResult ContactProblem<dim>::solve_tresca_problem(           \
-    const Vector<double> &,                                                  \
-    const Vector<double> &,                                                  \
-    Vector<double> &,                                                        \
-    Vector<double> &,                                                        \
-    std::vector<NodeState> &);                                               \
-  template StepStatistics ContactProblem<dim>::do_time_step();               \
-  template std::string    ContactProblem<dim>::convexification_failure(      \
-    const double) const;                                                  \
-  template void ContactProblem<dim>::add_contact_state(StepStatistics &)     \
-    const;                                                                   \
-  template StepStatistics ContactProblem<dim>::solve_friction_problem(       \
+#define INSTANTIATE(dim)                                                       \
+  template void   ContactProblem<dim>::factorize_system_matrix();              \
+  template double ContactProblem<dim>::tangential_velocity(                    \
+    const ContactNode<dim> &, const unsigned int, const VectorType &) const;   \
+  template Vector<double> ContactProblem<dim>::tangential_velocities(          \
+    const VectorType &) const;                                                 \
+  template void           ContactProblem<dim>::build_delassus_operator();      \
+  template void           ContactProblem<dim>::setup_contact_solver();         \
+  template void           ContactProblem<dim>::initialise_contact_state();     \
+  template void           ContactProblem<dim>::change_time_step(const double); \
+  template StepStatistics ContactProblem<dim>::advance(const unsigned int);    \
+  template VectorType     ContactProblem<dim>::friction_load(                  \
+    const Vector<double> &) const;                                         \
+  template TrescaResult ContactProblem<dim>::solve_tresca_problem(             \
+    const Vector<double> &,                                                    \
+    const Vector<double> &,                                                    \
+    Vector<double> &,                                                          \
+    Vector<double> &,                                                          \
+    std::vector<NodeState> &);                                                 \
+  template StepStatistics ContactProblem<dim>::do_time_step();                 \
+  template std::string    ContactProblem<dim>::convexification_failure(        \
+    const double) const;                                                    \
+  template void ContactProblem<dim>::add_contact_state(StepStatistics &)       \
+    const;                                                                     \
+  template StepStatistics ContactProblem<dim>::solve_friction_problem(         \
     const Vector<double> &);
 
   INSTANTIATE(2)

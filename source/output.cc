@@ -45,7 +45,7 @@ namespace Contact
         time_series.open(directory + "/time_series.csv");
         time_series
           << "step,time,convexification_iterations,active_set_iterations,"
-             "rejected_accelerations,active_set_cycles,n_stick,n_slip,max_slip_rate,friction_force,"
+             "rejected_accelerations,active_set_cycles,step_cuts,n_stick,n_slip,max_slip_rate,friction_force,"
              "kinetic_energy,elastic_energy,external_work,viscous_dissipation,"
              "friction_dissipation,numerical_dissipation,energy_residual,momentum_x,"
              "momentum_y"
@@ -95,12 +95,12 @@ namespace Contact
                 << statistics.convexification_iterations << ','
                 << statistics.active_set_iterations << ','
                 << statistics.rejected_accelerations << ','
-                << statistics.cycles_cured << ',' << statistics.n_stick << ','
-                << statistics.n_slip << ',' << statistics.max_slip_rate << ','
-                << statistics.friction_force << ',' << energy.kinetic << ','
-                << energy.elastic << ',' << energy.external_work << ','
-                << energy.viscous_dissipation << ','
-                << energy.friction_dissipation << ','
+                << statistics.cycles_cured << ',' << statistics.step_cuts << ','
+                << statistics.n_stick << ',' << statistics.n_slip << ','
+                << statistics.max_slip_rate << ',' << statistics.friction_force
+                << ',' << energy.kinetic << ',' << energy.elastic << ','
+                << energy.external_work << ',' << energy.viscous_dissipation
+                << ',' << energy.friction_dissipation << ','
                 << energy.numerical_dissipation << ',' << energy.residual();
     const Tensor<1, dim> p = momentum();
     for (unsigned int d = 0; d < dim; ++d)

@@ -539,6 +539,16 @@ namespace Contact
         "run: CHOLMOD (SuiteSparse's supernodal Cholesky, one process) or a "
         "Trilinos Amesos solver.");
       prm.declare_entry(
+        "Step cuts",
+        "0",
+        Patterns::Integer(0, 20),
+        "When the convexification or the active set method of a step does "
+        "not converge, take the step again as two steps of k/2 (refactorising "
+        "K), each of which may be cut again, at most this many times in a "
+        "row; then k is restored. 0: a step that does not converge ends the "
+        "run with its diagnostic. The console reports every cut and "
+        "time_series.csv counts them (column step_cuts).");
+      prm.declare_entry(
         "Contact solver",
         "auto",
         Patterns::Selection("auto|Delassus|constraints"),
@@ -569,6 +579,7 @@ namespace Contact
       anderson_depth            = prm.get_integer("Anderson depth");
       direct_solver             = prm.get("Direct solver");
       contact_solver            = prm.get("Contact solver");
+      step_cuts                 = prm.get_integer("Step cuts");
     }
     prm.leave_subsection();
 
