@@ -2,6 +2,7 @@
    otherwise. */
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 
 #include <factorization.h>
 #include <suitesparse/cholmod.h>
@@ -10,6 +11,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iomanip>
+#include <sstream>
 
 namespace Contact
 {
@@ -143,6 +146,21 @@ namespace Contact
                     ExcMessage("CHOLMOD could not factorise K = (1/k) M + A + "
                                "k B: it is not positive definite (status " +
                                std::to_string(common.status) + ")."));
+        // A matrix that is singular in exact arithmetic (a body free to
+        // move rigidly) may still factorise in floating point; CHOLMOD's
+        // estimate of the reciprocal condition number tells.
+        const double       rcond = cholmod_rcond(factor, &common);
+        std::ostringstream rcond_text;
+        rcond_text << std::setprecision(2) << rcond;
+        AssertThrow(rcond > 1e-14,
+                    ExcMessage("K = (1/k) M + A + k B is singular to working "
+                               "precision (CHOLMOD's reciprocal condition "
+                               "estimate " +
+                               rcond_text.str() +
+                               "): the body is not fixed against a rigid "
+                               "motion. Clamp a boundary ('Boundary "
+                               "conditions/Clamped boundary ids') or give it "
+                               "mass ('Material/Density' > 0)."));
       }
 
       double factor_size() const override

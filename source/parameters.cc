@@ -824,6 +824,13 @@ namespace Contact
                            "degree 1 on simplices or any degree on "
                            "hexahedra."));
 
+    AssertThrow(material.density > 0 || !boundary.clamped_ids.empty(),
+                ExcMessage("Entry 'Boundary conditions/Clamped boundary ids' "
+                           "is empty while 'Material/Density' = 0: the "
+                           "quasi-static problem has no inertia and nothing "
+                           "that holds the body against rigid motions. "
+                           "Allowed: at least one clamped boundary id, or a "
+                           "density > 0."));
     AssertThrow(!(output.resume && convergence_study.levels > 0),
                 ExcMessage("Entry 'Output/Resume' (--resume): a convergence "
                            "study ('Convergence study/Levels' > 0) cannot be "
