@@ -628,16 +628,23 @@ namespace Contact
             << "slip rates still change by " << residual
             << " relative to the velocity (tolerance "
             << solver.convexification_tolerance
-            << ", 'Solver/Convexification tolerance'). It contracts fast when "
+            << ", 'Solver/Convexification tolerance'); the last iterate has "
+            << std::count(node_state.begin(),
+                          node_state.end(),
+                          NodeState::stick)
+            << " stick and "
+            << std::count(node_state.begin(), node_state.end(), NodeState::slip)
+            << " slip nodes on Gamma_3. It contracts fast when "
             << "S (a - b) alpha is small against the stiffness of K on "
             << "Gamma_3; here S = " << friction.bound_S << ", (a - b) alpha = "
             << friction_law.one_sided_lipschitz_constant()
             << ", k = " << time_step
             << " (a step's problem is convex while S (a - b) alpha < "
             << convexity_limit << ")"
-            << ". More iterations, a larger 'Solver/Anderson depth', a "
-            << "smaller 'Time/Time step' or a smaller 'Friction/Friction bound "
-            << "S' help.";
+            << ". More iterations or a larger 'Solver/Anderson depth' help "
+            << "most (doc/stability.md); a smaller 'Time/Time step' (or "
+            << "'Solver/Step cuts') and a smaller 'Friction/Friction bound S' "
+            << "make the step's problem more convex.";
     return message.str();
   }
 
