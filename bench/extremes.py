@@ -29,6 +29,8 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run import machine  # noqa: E402  (bench/run.py)
 PRM = os.path.join(ROOT, "prm", "barboteu2015.prm")
 BASE = ["Geometry/Cell size=0.0625", "Time/Time step=0.0625", "Output/VTU interval=0",
         "Output/Progress interval=0", "Output/Print timings=false", "Output/Report times="]
@@ -89,15 +91,6 @@ SS = [0.1, 1, 10, 100, 1000, 1e4, 1e5]
 KS = [0.1, 0.03, 0.01, 0.001]
 
 
-def machine():
-    model = "unknown CPU"
-    for line in open("/proc/cpuinfo"):
-        if line.startswith("model name"):
-            model = line.split(":", 1)[1].strip()
-            break
-    return f"{model}, {os.cpu_count()} cores"
-
-
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--contact", default=os.path.join(ROOT, "build", "contact"))
@@ -105,7 +98,7 @@ def main():
     contact = os.path.abspath(arguments.contact)
     lines = ["# Extremes and the stability map", "",
              "Measured by `python3 bench/extremes.py` (paper's scene, h = 1/16, k = 1/16 unless "
-             f"changed; {machine()}). 'nan' means 'nan' or 'inf' appears in the console or in "
+             f"changed; {machine().split(', load average')[0]}). 'nan' means 'nan' or 'inf' appears in the console or in "
              "time_series.csv.", "",
              "| case | converged | steps | stick / slip nodes at the end "
              "| convexification it. mean / max | active set it. mean / max "

@@ -261,6 +261,8 @@ namespace Contact
     void        save_checkpoint();
     void        load_checkpoint();
     void        cut_output_back_to_checkpoint() const;
+    template <class Archive>
+    void serialize_checkpoint_state(Archive &archive);
 
     // output.cc
     void           prepare_output_directory();

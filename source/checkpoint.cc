@@ -75,41 +75,41 @@ namespace Contact
                   ExcInternalError());
       std::copy(values.begin(), values.end(), vector.begin());
     }
-
-    // Boost archives have no const/non-const split for these members:
-    // one function that reads or writes, used by both directions.
-    template <class Archive>
-    void serialize_state(Archive                  &archive,
-                         unsigned int             &step_number,
-                         double                   &time,
-                         std::vector<VectorType *> vectors,
-                         Vector<double>           &friction_force,
-                         Vector<double>           &slip_velocity,
-                         std::vector<int>         &node_state,
-                         EnergyBalance            &energy,
-                         StepStatistics           &totals,
-                         double                   &max_residual,
-                         ErrorNorms               &current_errors,
-                         ErrorNorms               &max_errors,
-                         std::vector<std::pair<double, std::string>> &pvd,
-                         std::vector<double> &report_times)
-    {
-      archive &step_number &time;
-      for (VectorType *vector : vectors)
-        serialize_vector(archive, *vector);
-      archive &friction_force &slip_velocity &node_state;
-      archive &energy.kinetic &energy.elastic &energy.initial &energy
-        .external_work &energy.viscous_dissipation &energy
-        .friction_dissipation &energy.numerical_dissipation;
-      archive &totals.convexification_iterations &totals
-        .active_set_iterations                   &totals.rejected_accelerations;
-      archive                                    &max_residual;
-      for (ErrorNorms *errors : {&current_errors, &max_errors})
-        archive & errors->displacement_V & errors->velocity_L2 &
-          errors->displacement_L2;
-      archive &pvd &report_times;
-    }
   } // namespace
+
+
+  // @sect4{ContactProblem::serialize_checkpoint_state}
+
+  // Everything a step reads from the past, in one function that reads or
+  // writes depending on the archive, so the two directions cannot differ.
+  template <int dim>
+  template <class Archive>
+  void ContactProblem<dim>::serialize_checkpoint_state(Archive &archive)
+  {
+    std::vector<int> states;
+    for (const NodeState state : node_state)
+      states.push_back(static_cast<int>(state));
+    archive &step_number &time;
+    for (VectorType *vector : {&displacement,
+                               &velocity,
+                               &mass_times_velocity,
+                               &elasticity_times_displacement})
+      serialize_vector(archive, *vector);
+    archive &friction_force &slip_velocity &states;
+    node_state.clear();
+    for (const int state : states)
+      node_state.push_back(static_cast<NodeState>(state));
+    archive &energy.kinetic &energy.elastic &energy.initial &energy
+      .external_work &energy.viscous_dissipation &energy
+      .friction_dissipation                      &energy.numerical_dissipation;
+    archive &totals.convexification_iterations &totals
+      .active_set_iterations                   &totals.rejected_accelerations;
+    archive                                    &max_relative_energy_residual;
+    for (ErrorNorms *errors : {&current_errors, &max_errors})
+      archive & errors->displacement_V & errors->velocity_L2 &
+        errors->displacement_L2;
+    archive &pvd_records &pending_report_times;
+  }
 
 
   // @sect4{ContactProblem::checkpoint_name}
@@ -176,33 +176,14 @@ namespace Contact
                                 time_step,
                                 static_cast<unsigned int>(probes.size()),
                                 exact_solution != nullptr};
-    std::vector<int>   states;
-    for (const NodeState state : node_state)
-      states.push_back(static_cast<int>(state));
-    const std::string name = checkpoint_name();
+    const std::string  name  = checkpoint_name();
     {
       std::ofstream                   file(name + ".tmp", std::ios::binary);
       boost::archive::binary_oarchive archive(file);
       std::string                     format  = checkpoint_format;
       ProblemShape                    written = shape;
       archive &format                &written;
-      serialize_state(archive,
-                      step_number,
-                      time,
-                      {&displacement,
-                       &velocity,
-                       &mass_times_velocity,
-                       &elasticity_times_displacement},
-                      friction_force,
-                      slip_velocity,
-                      states,
-                      energy,
-                      totals,
-                      max_relative_energy_residual,
-                      current_errors,
-                      max_errors,
-                      pvd_records,
-                      pending_report_times);
+      serialize_checkpoint_state(archive);
       file.flush();
       AssertThrow(file,
                   ExcMessage("Cannot write the checkpoint '" + name +
@@ -247,27 +228,7 @@ namespace Contact
                            "): resume with the scene, mesh, time step and "
                            "number of processes of the checkpointed run."));
 
-    std::vector<int> states;
-    serialize_state(archive,
-                    step_number,
-                    time,
-                    {&displacement,
-                     &velocity,
-                     &mass_times_velocity,
-                     &elasticity_times_displacement},
-                    friction_force,
-                    slip_velocity,
-                    states,
-                    energy,
-                    totals,
-                    max_relative_energy_residual,
-                    current_errors,
-                    max_errors,
-                    pvd_records,
-                    pending_report_times);
-    node_state.assign(states.size(), NodeState::stick);
-    for (unsigned int p = 0; p < states.size(); ++p)
-      node_state[p] = static_cast<NodeState>(states[p]);
+    serialize_checkpoint_state(archive);
     AssertThrow(step_number <= n_time_steps,
                 ExcMessage("The checkpoint is at step " +
                            std::to_string(step_number) +

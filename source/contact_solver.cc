@@ -173,12 +173,13 @@ namespace Contact
   template <int dim>
   StepStatistics ContactProblem<dim>::advance(const unsigned int cuts_left)
   {
+    const auto step = [this]() {
+      const StepStatistics statistics = do_time_step();
+      update_energy_balance();
+      return statistics;
+    };
     if (cuts_left == 0)
-      {
-        const StepStatistics statistics = do_time_step();
-        update_energy_balance();
-        return statistics;
-      }
+      return step();
 
     const auto saved = std::make_tuple(velocity,
                                        displacement,
@@ -190,9 +191,7 @@ namespace Contact
                                        energy);
     try
       {
-        const StepStatistics statistics = do_time_step();
-        update_energy_balance();
-        return statistics;
+        return step();
       }
     catch (const ExceptionBase &failure)
       {
