@@ -221,7 +221,13 @@ namespace Contact
       std::vector<FullMatrix<double>> Q;
       for (const NodeLinearisation &node : linearisation)
         Q.push_back(local_basis(node));
+      // For m = 1 the rotation is a sign per node.
+      std::vector<double> sign(n);
+      for (unsigned int p = 0; p < n; ++p)
+        sign[p] = Q[p](0, 0);
       const auto rotated_D = [&](const unsigned int r, const unsigned int s) {
+        if (m == 1)
+          return sign[r] * D(r, s) * sign[s];
         const unsigned int p = r / m, a = r % m, q = s / m, b = s % m;
         double             entry = 0;
         for (unsigned int i = 0; i < m; ++i)
