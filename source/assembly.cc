@@ -355,6 +355,7 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::update_energy_balance()
   {
+    TimerOutput::Scope t(computing_timer, "Energy balance");
     const double k = time_step;
     VectorType   M_w(velocity), A_w(velocity), B_w(velocity);
     // The three products only read w and write their own vector: they run

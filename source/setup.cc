@@ -34,6 +34,7 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::make_grid()
   {
+    TimerOutput::Scope t(computing_timer, "Grid");
     const auto        &geometry = parameters.geometry;
     const unsigned int n_refinements =
       geometry.mesh_file.empty() ? make_box() : read_mesh_file();
