@@ -256,6 +256,7 @@ namespace Contact
 
     // checkpoint.cc
     std::string checkpoint_name() const;
+    std::string checkpoint_shape() const;
     bool        checkpoint_due() const;
     void        require_checkpoint() const;
     void        save_checkpoint();

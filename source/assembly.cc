@@ -356,8 +356,8 @@ namespace Contact
   void ContactProblem<dim>::update_energy_balance()
   {
     TimerOutput::Scope t(computing_timer, "Energy balance");
-    const double k = time_step;
-    VectorType   M_w(velocity), A_w(velocity), B_w(velocity);
+    const double       k = time_step;
+    VectorType         M_w(velocity), A_w(velocity), B_w(velocity);
     // The three products only read w and write their own vector: they run
     // as concurrent tasks (memory bound, so the second core helps).
     Threads::TaskGroup<void> products;

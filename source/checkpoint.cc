@@ -22,49 +22,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 namespace Contact
 {
   namespace
   {
-    const std::string checkpoint_format = "contact checkpoint 1";
-
-    // The quantities that identify the discrete problem a checkpoint
-    // belongs to.
-    struct ProblemShape
-    {
-      unsigned int            dim          = 0;
-      types::global_dof_index n_dofs       = 0;
-      unsigned int            n_contact    = 0;
-      unsigned int            n_processes  = 0;
-      double                  time_step    = 0;
-      unsigned int            n_probes     = 0;
-      bool                    manufactured = false;
-      bool                    operator==(const ProblemShape &other) const
-      {
-        return dim == other.dim && n_dofs == other.n_dofs &&
-               n_contact == other.n_contact &&
-               n_processes == other.n_processes &&
-               time_step == other.time_step && n_probes == other.n_probes &&
-               manufactured == other.manufactured;
-      }
-      std::string describe() const
-      {
-        std::ostringstream text;
-        text << dim << "D, " << n_dofs << " unknowns, " << n_contact
-             << " nodes on Gamma_3, " << n_processes
-             << " process(es), k = " << time_step << ", " << n_probes
-             << " probe(s)" << (manufactured ? ", manufactured solution" : "");
-        return text.str();
-      }
-      template <class Archive>
-      void serialize(Archive &archive, const unsigned int)
-      {
-        archive &dim &n_dofs &n_contact &n_processes &time_step &n_probes
-          &manufactured;
-      }
-    };
+    const std::string checkpoint_format = "contact checkpoint 2";
 
     template <class Archive>
     void serialize_vector(Archive &archive, VectorType &vector)
@@ -109,6 +74,24 @@ namespace Contact
       archive & errors->displacement_V & errors->velocity_L2 &
         errors->displacement_L2;
     archive &pvd_records &pending_report_times;
+  }
+
+
+  // @sect4{ContactProblem::checkpoint_shape}
+
+  // What identifies the discrete problem a checkpoint belongs to (k to all
+  // digits), as stored in it and shown when it does not match.
+  template <int dim>
+  std::string ContactProblem<dim>::checkpoint_shape() const
+  {
+    std::ostringstream text;
+    text << dim << "D, " << dof_handler.n_dofs() << " unknowns, "
+         << contact_nodes.size() << " nodes on Gamma_3, "
+         << Utilities::MPI::n_mpi_processes(mpi_communicator)
+         << " process(es), k = " << std::setprecision(17) << time_step << ", "
+         << probes.size() << " probe(s)"
+         << (exact_solution ? ", manufactured solution" : "");
+    return text.str();
   }
 
 
@@ -168,20 +151,13 @@ namespace Contact
   void ContactProblem<dim>::save_checkpoint()
   {
     TimerOutput::Scope t(computing_timer, "Checkpoint");
-    const ProblemShape shape = {dim,
-                                dof_handler.n_dofs(),
-                                static_cast<unsigned int>(contact_nodes.size()),
-                                Utilities::MPI::n_mpi_processes(
-                                  mpi_communicator),
-                                time_step,
-                                static_cast<unsigned int>(probes.size()),
-                                exact_solution != nullptr};
+    const std::string  shape = checkpoint_shape();
     const std::string  name  = checkpoint_name();
     {
       std::ofstream                   file(name + ".tmp", std::ios::binary);
       boost::archive::binary_oarchive archive(file);
       std::string                     format  = checkpoint_format;
-      ProblemShape                    written = shape;
+      std::string                     written = shape;
       archive &format                &written;
       serialize_checkpoint_state(archive);
       file.flush();
@@ -204,27 +180,19 @@ namespace Contact
     AssertThrow(file, ExcMessage("Cannot read the checkpoint '" + name + "'."));
     boost::archive::binary_iarchive archive(file);
     std::string                     format;
-    ProblemShape                    stored;
+    std::string                     stored;
     archive                        &format;
     AssertThrow(format == checkpoint_format,
-                ExcMessage("'" + name +
-                           "' is not a checkpoint of this "
-                           "program."));
-    archive           &stored;
-    const ProblemShape shape = {dim,
-                                dof_handler.n_dofs(),
-                                static_cast<unsigned int>(contact_nodes.size()),
-                                Utilities::MPI::n_mpi_processes(
-                                  mpi_communicator),
-                                time_step,
-                                static_cast<unsigned int>(probes.size()),
-                                exact_solution != nullptr};
+                ExcMessage("'" + name + "' is a checkpoint of format '" +
+                           format + "', this program reads '" +
+                           checkpoint_format + "'."));
+    archive          &stored;
+    const std::string shape = checkpoint_shape();
     AssertThrow(stored == shape,
                 ExcMessage("The checkpoint '" + name +
                            "' belongs to another "
                            "discrete problem (" +
-                           stored.describe() + ") than this .prm gives (" +
-                           shape.describe() +
+                           stored + ") than this .prm gives (" + shape +
                            "): resume with the scene, mesh, time step and "
                            "number of processes of the checkpointed run."));
 
@@ -280,6 +248,7 @@ namespace Contact
 
 #define INSTANTIATE(dim)                                                \
   template std::string ContactProblem<dim>::checkpoint_name() const;    \
+  template std::string ContactProblem<dim>::checkpoint_shape() const;   \
   template bool        ContactProblem<dim>::checkpoint_due() const;     \
   template void        ContactProblem<dim>::require_checkpoint() const; \
   template void        ContactProblem<dim>::save_checkpoint();          \
