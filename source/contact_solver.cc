@@ -181,28 +181,27 @@ namespace Contact
     if (cuts_left == 0)
       return step();
 
-    const auto saved = std::make_tuple(velocity,
-                                       displacement,
-                                       mass_times_velocity,
-                                       elasticity_times_displacement,
-                                       friction_force,
-                                       slip_velocity,
-                                       node_state,
-                                       energy);
+    // Everything a step changes, kept to retake the step from it.
+    const auto step_state = [this]() {
+      return std::tie(velocity,
+                      displacement,
+                      mass_times_velocity,
+                      elasticity_times_displacement,
+                      friction_force,
+                      slip_velocity,
+                      node_state,
+                      energy);
+    };
+    const auto saved = std::apply(
+      [](const auto &...values) { return std::make_tuple(values...); },
+      step_state());
     try
       {
         return step();
       }
     catch (const ExceptionBase &failure)
       {
-        std::tie(velocity,
-                 displacement,
-                 mass_times_velocity,
-                 elasticity_times_displacement,
-                 friction_force,
-                 slip_velocity,
-                 node_state,
-                 energy) = saved;
+        step_state() = saved;
         pcout << "Step " << step_number << " (t = " << time
               << ") did not converge with k = " << time_step
               << "; cutting it into two steps of k/2 ('Solver/Step cuts', "
