@@ -5,9 +5,9 @@
  *
  * - CHOLMOD (SuiteSparse): supernodal sparse Cholesky with BLAS-3 kernels,
  *   for one process. K is symmetric positive definite (the constraints are
- *   condensed symmetrically), so Cholesky applies; a block of right-hand
- *   sides is solved in one call, which is how the columns of Z = K^{-1} C^T
- *   are computed.
+ *   condensed symmetrically), so Cholesky applies. It exposes the halves
+ *   of a solve with its factor L, and the forward one runs on blocks of
+ *   right-hand sides, which is how Y = L^{-1} P C^T is computed.
  * - Trilinos Amesos (KLU, MUMPS, LAPACK) through deal.II's SolverDirect,
  *   for distributed matrices.
  */
@@ -36,10 +36,6 @@ namespace Contact
     /** x = K^{-1} b. */
     virtual void solve(TrilinosWrappers::MPI::Vector       &x,
                        const TrilinosWrappers::MPI::Vector &b) = 0;
-
-    /** x_i = K^{-1} b_i for a block of right-hand sides. */
-    virtual void solve(std::vector<TrilinosWrappers::MPI::Vector>       &x,
-                       const std::vector<TrilinosWrappers::MPI::Vector> &b);
 
     /**
      * Whether the factorisation is K = P^T L L^T P with its triangular

@@ -16,15 +16,6 @@
 
 namespace Contact
 {
-  void Factorization::solve(std::vector<TrilinosWrappers::MPI::Vector>       &x,
-                            const std::vector<TrilinosWrappers::MPI::Vector> &b)
-  {
-    AssertDimension(x.size(), b.size());
-    for (unsigned int i = 0; i < b.size(); ++i)
-      solve(x[i], b[i]);
-  }
-
-
   void Factorization::forward_substitution(
     std::vector<Vector<double>> &,
     const std::vector<TrilinosWrappers::MPI::Vector> &)
@@ -64,8 +55,6 @@ namespace Contact
       {
         solver.solve(x, b);
       }
-
-      using Factorization::solve;
 
     private:
       SolverControl                  control;
@@ -189,32 +178,6 @@ namespace Contact
           [&](const double *column, unsigned int) {
             std::memcpy(x.begin(), column, sizeof(double) * x.size());
           });
-      }
-
-      void solve(std::vector<TrilinosWrappers::MPI::Vector>       &x,
-                 const std::vector<TrilinosWrappers::MPI::Vector> &b) override
-      {
-        // Blocks of 64 columns: BLAS-3 speed without a dense copy of all
-        // of Z at once.
-        const unsigned int block = 64;
-        for (unsigned int first = 0; first < b.size(); first += block)
-          {
-            const unsigned int n_columns =
-              std::min<unsigned int>(block, b.size() - first);
-            solve_block(
-              CHOLMOD_A,
-              n_columns,
-              [&](double *column, unsigned int j) {
-                std::memcpy(column,
-                            b[first + j].begin(),
-                            sizeof(double) * b[first + j].size());
-              },
-              [&](const double *column, unsigned int j) {
-                std::memcpy(x[first + j].begin(),
-                            column,
-                            sizeof(double) * x[first + j].size());
-              });
-          }
       }
 
       bool has_triangular_factor() const override
