@@ -96,7 +96,7 @@ namespace Contact
   {
     const unsigned int n = contact_nodes.size(), m = dim - 1;
     use_delassus_operator = false;
-    if (friction_law.is_frictionless())
+    if (friction_law.is_frictionless() || contact_nodes.empty())
       return;
 
     active_set_parameter.reinit(n);
