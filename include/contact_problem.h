@@ -53,6 +53,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -82,6 +83,10 @@ namespace Contact
     Tensor<1, dim>                      normal;
     std::array<Tensor<1, dim>, dim - 1> tangents;
     double                              weight = 0;
+    // Whether this process owns the node's dofs (all dofs of a vertex have
+    // one owner). Every process keeps all nodes of Gamma_3; what a node
+    // contributes to a distributed vector the owner adds.
+    bool locally_owned = false;
 
     /** sum_i a_{p,i} t_i: node p's tangential components as a vector. */
     Tensor<1, dim> tangential_vector(const Vector<double> &a,
@@ -197,7 +202,9 @@ namespace Contact
     void         setup_system();
     void         make_constraints();
     void         setup_contact_nodes();
-    void         setup_probes();
+    std::map<types::global_dof_index, ContactNode<dim>>
+         integrate_contact_faces() const;
+    void setup_probes();
 
     // assembly.cc
     void           assemble_matrices();
@@ -236,6 +243,10 @@ namespace Contact
                                      const unsigned int      direction,
                                      const VectorType       &w) const;
     Vector<double> tangential_velocities(const VectorType &w) const;
+    Vector<double> sum_over_processes(const Vector<double> &part) const;
+    // A copy of a distributed vector with this process's ghost entries, for
+    // FEValues and DataOut.
+    VectorType ghosted(const VectorType &v) const;
 
     // active_set_constraints.cc: the straightforward path.
     void velocity_for_friction_force(const Vector<double> &eta, VectorType &w);
@@ -368,10 +379,14 @@ namespace Contact
     EnergyBalance energy;
 
     // Output state. A probe is the cell around an 'Output/Probe points'
-    // entry and the point in its reference cell.
+    // entry and the point in its reference cell; of the processes that own
+    // a cell around the point, the first evaluates it, the others keep an
+    // invalid cell.
     std::vector<
       std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>>
-                                                probes;
+      probes;
+    // The displacement with ghost entries, for the probes.
+    VectorType                                  ghosted_displacement;
     std::ofstream                               time_series;
     std::vector<std::pair<double, std::string>> pvd_records;
     std::vector<double>                         pending_report_times;

@@ -1,7 +1,7 @@
 /**
  * The factorisation of K = (1/k) M + A_h + k B_h, computed once per run,
  * and its forward/back substitutions (DESIGN.md section 4). Two
- * implementations behind one interface, chosen by 'Solver/Direct solver':
+ * implementations behind one interface, chosen by 'Solver/Linear solver':
  *
  * - CHOLMOD (SuiteSparse): supernodal sparse Cholesky with BLAS-3 kernels,
  *   for one process. K is symmetric positive definite (the constraints are
@@ -10,6 +10,9 @@
  *   right-hand sides, which is how Y = L^{-1} P C^T is computed.
  * - Trilinos Amesos (KLU, MUMPS, LAPACK) through deal.II's SolverDirect,
  *   for distributed matrices.
+ * - CG preconditioned by Trilinos ML's algebraic multigrid (CG-AMG): not a
+ *   factorisation but the same interface, for meshes whose factor does not
+ *   fit; the AMG hierarchy of K is built once per run.
  */
 #ifndef contact_factorization_h
 #define contact_factorization_h
@@ -64,9 +67,30 @@ namespace Contact
       return 0;
     }
 
-    /** 'CHOLMOD' or an Amesos solver name ('Amesos_Klu', ...). */
+    /**
+     * The solver of the same kind for a matrix K' that differs from K near
+     * Gamma_3 only (the Newton steps of the constraints path): a direct
+     * solver factorises K', CG-AMG keeps the AMG hierarchy of K.
+     */
+    virtual std::unique_ptr<Factorization>
+    for_variant(const TrilinosWrappers::SparseMatrix &variant) const = 0;
+
+    /** Iterations of the iterative solver (CG-AMG) so far, summed over
+     *  this solver and its variants; 0 for direct solvers. */
+    virtual unsigned long int iterations() const
+    {
+      return 0;
+    }
+
+    /**
+     * 'CHOLMOD', an Amesos solver name ('Amesos_Klu', ...) or 'CG-AMG';
+     * the constant modes (one per displacement component) tell AMG the
+     * near null space of elasticity.
+     */
     static std::unique_ptr<Factorization>
-    create(const std::string &solver, const TrilinosWrappers::SparseMatrix &K);
+    create(const std::string                    &solver,
+           const TrilinosWrappers::SparseMatrix &K,
+           const std::vector<std::vector<bool>> &constant_modes = {});
   };
 } // namespace Contact
 

@@ -124,7 +124,7 @@ namespace Contact
     unsigned int max_active_set_iterations;
     double       active_set_parameter;
     unsigned int anderson_depth;
-    std::string  direct_solver;
+    std::string  linear_solver;
     /** Halvings of k allowed for a step that does not converge. */
     unsigned int step_cuts;
     /** 'auto', 'Delassus' or 'constraints'. */

@@ -28,6 +28,35 @@ namespace Contact
   }
 
 
+  // @sect4{zero_rows_and_columns}
+
+  // The sticking dofs held at zero, symmetrically: their rows and columns
+  // of the matrix are zeroed except the diagonal, their right-hand side
+  // entries too. Each process edits the rows it owns (the columns of a
+  // sticking dof lie in other processes' rows as well).
+  namespace
+  {
+    void zero_rows_and_columns(const std::vector<bool> &fixed,
+                               MatrixType              &matrix,
+                               VectorType              &rhs)
+    {
+      const auto range = matrix.local_range();
+      for (auto row = range.first; row < range.second; ++row)
+        {
+          for (auto entry = matrix.begin(row); entry != matrix.end(row);
+               ++entry)
+            if (entry->column() != row &&
+                (fixed[row] || fixed[entry->column()]))
+              entry->value() = 0.;
+          if (fixed[row])
+            rhs[row] = 0.;
+        }
+      matrix.compress(VectorOperation::insert);
+      rhs.compress(VectorOperation::insert);
+    }
+  } // namespace
+
+
   // @sect4{ContactProblem::newton_step_with_constraints}
 
   // One Newton step of the method of friction.h on the whole body, for the
@@ -56,21 +85,23 @@ namespace Contact
     MatrixType         matrix;
     matrix.copy_from(system_matrix);
     Vector<double>                       slip_force(n * m);
-    std::vector<types::global_dof_index> stick_dofs, node_dofs(dim);
+    std::vector<bool>                    stick_dof(dof_handler.n_dofs());
+    std::vector<types::global_dof_index> node_dofs(dim);
     for (unsigned int p = 0; p < n; ++p)
       {
         const ContactNode<dim> &node = contact_nodes[p];
         if (linearisation[p].state == NodeState::stick)
           {
+            // Its constrained (normal) dof has a trivial row and column in
+            // the condensed K already, so all its dofs can be marked.
             for (const types::global_dof_index dof : node.dofs)
-              if (!constraints.is_constrained(dof))
-                stick_dofs.push_back(dof);
+              stick_dof[dof] = true;
             continue;
           }
         const FullMatrix<double> basis = local_basis(linearisation[p]);
         for (unsigned int i = 0; i < m; ++i)
           slip_force[p * m + i] = bound[p] * basis(i, 0);
-        if (m == 2 && bound[p] > 0)
+        if (m == 2 && bound[p] > 0 && node.locally_owned)
           {
             Tensor<1, dim> t;
             for (unsigned int i = 0; i < m; ++i)
@@ -87,24 +118,10 @@ namespace Contact
 
     VectorType rhs(step_rhs);
     rhs.add(-1., friction_load(slip_force));
-    for (const types::global_dof_index row : stick_dofs)
-      {
-        std::vector<types::global_dof_index> columns;
-        for (auto entry = matrix.begin(row); entry != matrix.end(row); ++entry)
-          if (entry->column() != row)
-            columns.push_back(entry->column());
-        for (const types::global_dof_index column : columns)
-          {
-            matrix.set(row, column, 0.);
-            matrix.set(column, row, 0.);
-          }
-        rhs[row] = 0.;
-      }
-    matrix.compress(VectorOperation::insert);
+    zero_rows_and_columns(stick_dof, matrix, rhs);
 
     VectorType w(locally_owned_dofs, mpi_communicator);
-    Factorization::create(parameters.solver.direct_solver, matrix)
-      ->solve(w, rhs);
+    factorization->for_variant(matrix)->solve(w, rhs);
     constraints.distribute(w);
     v = tangential_velocities(w);
 

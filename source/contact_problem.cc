@@ -116,12 +116,13 @@ namespace Contact
     , max_relative_energy_residual(0)
   {
     AssertThrow(parameters.dimension == dim, ExcInternalError());
-    // The data structures are the distributed ones of step-40/step-42, but
-    // the friction solver on Gamma_3 still reads every node's values
-    // directly; a parallel run would be wrong, so it is refused.
-    AssertThrow(Utilities::MPI::n_mpi_processes(mpi_communicator) == 1,
-                ExcMessage("This version runs on one MPI process only; "
-                           "start it without mpirun (or with -np 1)."));
+    // Simplices live on a plain (replicated) triangulation, which does not
+    // distribute the dofs.
+    AssertThrow(Utilities::MPI::n_mpi_processes(mpi_communicator) == 1 ||
+                  !parameters.geometry.simplex_cells,
+                ExcMessage("'Geometry/Cell shape = simplex' runs on one MPI "
+                           "process in this version; on several processes "
+                           "choose 'hypercube' cells."));
     body_force =
       parse_vector_function<dim>("Loads and initial values/Body force",
                                  parameters.loads.body_force,

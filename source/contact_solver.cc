@@ -3,6 +3,8 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <deal.II/dofs/dof_tools.h>
+
 #include <contact_problem.h>
 
 #include <algorithm>
@@ -22,9 +24,15 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::factorize_system_matrix()
   {
-    TimerOutput::Scope t(computing_timer, "Factorization");
-    factorization =
-      Factorization::create(parameters.solver.direct_solver, system_matrix);
+    TimerOutput::Scope             t(computing_timer, "Factorization");
+    std::vector<std::vector<bool>> constant_modes;
+    if (parameters.solver.linear_solver == "CG-AMG")
+      DoFTools::extract_constant_modes(dof_handler,
+                                       ComponentMask(),
+                                       constant_modes);
+    factorization = Factorization::create(parameters.solver.linear_solver,
+                                          system_matrix,
+                                          constant_modes);
   }
 
 
@@ -41,16 +49,34 @@ namespace Contact
     return v;
   }
 
-  // C w: all tangential components on Gamma_3, node-major.
+  // C w: all tangential components on Gamma_3, node-major, on every
+  // process (each fills in the nodes it owns).
   template <int dim>
   Vector<double>
   ContactProblem<dim>::tangential_velocities(const VectorType &w) const
   {
     Vector<double> v(contact_nodes.size() * (dim - 1));
     for (unsigned int p = 0; p < contact_nodes.size(); ++p)
-      for (unsigned int i = 0; i < dim - 1; ++i)
-        v[p * (dim - 1) + i] = tangential_velocity(contact_nodes[p], i, w);
-    return v;
+      if (contact_nodes[p].locally_owned)
+        for (unsigned int i = 0; i < dim - 1; ++i)
+          v[p * (dim - 1) + i] = tangential_velocity(contact_nodes[p], i, w);
+    return sum_over_processes(v);
+  }
+
+
+  // The sum of every process's part of a vector on Gamma_3; all processes
+  // get the sum.
+  template <int dim>
+  Vector<double>
+  ContactProblem<dim>::sum_over_processes(const Vector<double> &part) const
+  {
+    if (Utilities::MPI::n_mpi_processes(mpi_communicator) == 1)
+      return part;
+    Vector<double> sum(part.size());
+    Utilities::MPI::sum(make_array_view(part),
+                        mpi_communicator,
+                        make_array_view(sum));
+    return sum;
   }
 
 
@@ -67,7 +93,7 @@ namespace Contact
     for (unsigned int p = 0; p < contact_nodes.size(); ++p)
       {
         const Tensor<1, dim> force = contact_nodes[p].tangential_vector(eta, p);
-        if (force.norm_square() == 0.)
+        if (!contact_nodes[p].locally_owned || force.norm_square() == 0.)
           continue;
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -101,16 +127,18 @@ namespace Contact
 
     active_set_parameter.reinit(n);
     for (unsigned int q = 0; q < n; ++q)
-      for (const Tensor<1, dim> &tangent : contact_nodes[q].tangents)
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            if (!constraints.is_constrained(contact_nodes[q].dofs[a]) &&
-                !constraints.is_constrained(contact_nodes[q].dofs[b]))
-              active_set_parameter[q] +=
-                parameters.solver.active_set_parameter / m * tangent[a] *
-                system_matrix.el(contact_nodes[q].dofs[a],
-                                 contact_nodes[q].dofs[b]) *
-                tangent[b];
+      if (contact_nodes[q].locally_owned)
+        for (const Tensor<1, dim> &tangent : contact_nodes[q].tangents)
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              if (!constraints.is_constrained(contact_nodes[q].dofs[a]) &&
+                  !constraints.is_constrained(contact_nodes[q].dofs[b]))
+                active_set_parameter[q] +=
+                  parameters.solver.active_set_parameter / m * tangent[a] *
+                  system_matrix.el(contact_nodes[q].dofs[a],
+                                   contact_nodes[q].dofs[b]) *
+                  tangent[b];
+    active_set_parameter = sum_over_processes(active_set_parameter);
 
     const std::string &choice = parameters.solver.contact_solver;
     use_delassus_operator =
@@ -120,7 +148,15 @@ namespace Contact
     if (use_delassus_operator)
       build_delassus_operator();
 
-    if (!friction_law.is_rate_independent())
+    // The power method applies D up to 200 times: dense products on the
+    // Delassus path, solves with K otherwise, which CG-AMG makes too dear
+    // for a number that is only reported.
+    if (!friction_law.is_rate_independent() &&
+        parameters.solver.linear_solver == "CG-AMG")
+      pcout << "Gamma_3: the convexity limit of a step's friction problem is "
+            << "not estimated with CG-AMG (a few hundred solves with K)."
+            << std::endl;
+    else if (!friction_law.is_rate_independent())
       {
         convexity_limit = 1. / largest_weighted_delassus_eigenvalue();
         pcout << "Gamma_3: the friction problem of a step is convex while "
@@ -674,6 +710,8 @@ namespace Contact
     const ContactNode<dim> &, const unsigned int, const VectorType &) const;   \
   template Vector<double> ContactProblem<dim>::tangential_velocities(          \
     const VectorType &) const;                                                 \
+  template Vector<double> ContactProblem<dim>::sum_over_processes(             \
+    const Vector<double> &) const;                                             \
   template void           ContactProblem<dim>::build_delassus_operator();      \
   template void           ContactProblem<dim>::setup_contact_solver();         \
   template void           ContactProblem<dim>::initialise_contact_state();     \

@@ -67,17 +67,20 @@ namespace Contact
   ContactProblem<dim>::probe_displacement(const unsigned int probe) const
   {
     const auto &[cell, reference_point] = probes[probe];
-    FEValues<dim> fe_values(*mapping,
-                            fe,
-                            Quadrature<dim>(reference_point),
-                            update_values);
-    fe_values.reinit(cell);
-    std::vector<Vector<double>> values(1, Vector<double>(dim));
-    fe_values.get_function_values(displacement, values);
     Tensor<1, dim> u;
-    for (unsigned int d = 0; d < dim; ++d)
-      u[d] = values[0][d];
-    return u;
+    if (cell.state() == IteratorState::valid)
+      {
+        FEValues<dim>               fe_values(*mapping,
+                                fe,
+                                Quadrature<dim>(reference_point),
+                                update_values);
+        std::vector<Vector<double>> values(1, Vector<double>(dim));
+        fe_values.reinit(cell);
+        fe_values.get_function_values(ghosted_displacement, values);
+        for (unsigned int d = 0; d < dim; ++d)
+          u[d] = values[0][d];
+      }
+    return Utilities::MPI::sum(u, mpi_communicator);
   }
 
 
@@ -89,6 +92,16 @@ namespace Contact
   void
   ContactProblem<dim>::write_time_series_row(const StepStatistics &statistics)
   {
+    if (!parameters.output.write_time_series)
+      return;
+    // Collective: every process takes part in the momentum and the probes,
+    // the first one writes.
+    const Tensor<1, dim> p = momentum();
+    if (!probes.empty())
+      ghosted_displacement = ghosted(displacement);
+    std::vector<Tensor<1, dim>> probe_values;
+    for (unsigned int i = 0; i < probes.size(); ++i)
+      probe_values.push_back(probe_displacement(i));
     if (!time_series.is_open())
       return;
     time_series << step_number << ',' << std::setprecision(12) << time << ','
@@ -102,12 +115,11 @@ namespace Contact
                 << energy.external_work << ',' << energy.viscous_dissipation
                 << ',' << energy.friction_dissipation << ','
                 << energy.numerical_dissipation << ',' << energy.residual();
-    const Tensor<1, dim> p = momentum();
     for (unsigned int d = 0; d < dim; ++d)
       time_series << ',' << p[d];
-    for (unsigned int i = 0; i < probes.size(); ++i)
+    for (const Tensor<1, dim> &u : probe_values)
       for (unsigned int d = 0; d < dim; ++d)
-        time_series << ',' << probe_displacement(i)[d];
+        time_series << ',' << u[d];
     if (exact_solution)
       {
         time_series << ',' << current_errors.displacement_V << ','
@@ -142,12 +154,15 @@ namespace Contact
         status[node.scalar_dof] = (node_state[p] == NodeState::stick ? 1 : 2);
         slip_rate[node.scalar_dof]      = rate;
         friction_bound[node.scalar_dof] = friction_law.bound(rate);
-        if (node.weight > 0)
+        if (node.weight > 0 && node.locally_owned)
           for (unsigned int d = 0; d < dim; ++d)
             traction[node.dofs[d]] =
               -node.tangential_vector(friction_force, p)[d] / node.weight;
       }
     traction.compress(VectorOperation::insert);
+
+    const VectorType u = ghosted(displacement), w = ghosted(velocity),
+                     friction_traction = ghosted(traction);
 
     const auto  &material     = parameters.material;
     const double two_G        = material.two_G();
@@ -169,10 +184,8 @@ namespace Contact
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          fe_values[displacements].get_function_symmetric_gradients(
-            displacement, eps_u);
-          fe_values[displacements].get_function_symmetric_gradients(velocity,
-                                                                    eps_w);
+          fe_values[displacements].get_function_symmetric_gradients(u, eps_u);
+          fe_values[displacements].get_function_symmetric_gradients(w, eps_w);
           SymmetricTensor<2, dim> sigma;
           double                  sigma_zz = 0, volume = 0;
           for (const unsigned int q : fe_values.quadrature_point_indices())
@@ -212,9 +225,9 @@ namespace Contact
       vector_field(dim,
                    DataComponentInterpretation::component_is_part_of_vector);
     const std::vector<std::pair<const VectorType *, std::string>> fields = {
-      {&displacement, "displacement"},
-      {&velocity, "velocity"},
-      {&traction, "friction_traction"}};
+      {&u, "displacement"},
+      {&w, "velocity"},
+      {&friction_traction, "friction_traction"}};
     for (const auto &[vector, name] : fields)
       data_out.add_data_vector(*vector,
                                std::vector<std::string>(dim, name),
@@ -402,8 +415,14 @@ namespace Contact
                         std::to_string(friction_force.size()) +
                         " tangential unknowns of Gamma_3" :
                       std::string("active set as constraints, one "
-                                  "factorisation per Newton step"))
+                                  "solve with K per Newton step"))
                 << std::endl;
+        if (factorization && factorization->iterations() > 0)
+          pcout << "Linear solver: CG-AMG, "
+                << static_cast<double>(factorization->iterations()) /
+                     n_time_steps
+                << " iterations per step, " << factorization->iterations()
+                << " in all" << std::endl;
         if (factorization && factorization->factor_size() > 0)
           pcout << "Factor of K: "
                 << static_cast<long long>(factorization->factor_size())

@@ -1,6 +1,7 @@
 /* Declaration, parsing and checks of the .prm entries. */
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/lac/vector.h>
@@ -532,12 +533,17 @@ namespace Contact
         "accelerated iterate that does not lower the step's energy is "
         "rejected.");
       prm.declare_entry(
-        "Direct solver",
-        "CHOLMOD",
-        Patterns::Selection("CHOLMOD|Amesos_Klu|Amesos_Mumps|Amesos_Lapack"),
-        "The direct solver that factorises K = (rho/k) M + A + k B once per "
-        "run: CHOLMOD (SuiteSparse's supernodal Cholesky, one process) or a "
-        "Trilinos Amesos solver.");
+        "Linear solver",
+        "auto",
+        Patterns::Selection(
+          "auto|CHOLMOD|Amesos_Klu|Amesos_Mumps|Amesos_Lapack|CG-AMG"),
+        "How systems with K = (rho/k) M + A + k B are solved. CHOLMOD "
+        "(SuiteSparse's supernodal Cholesky, one process) or a Trilinos "
+        "Amesos solver (Amesos_Mumps: MUMPS, distributed over the processes) "
+        "factorise K once per run; CG-AMG: conjugate gradients with Trilinos "
+        "ML's algebraic multigrid (built once per run), for meshes whose "
+        "factor does not fit, relative residual 1e-12. auto: CHOLMOD on one "
+        "process, Amesos_Mumps on more.");
       prm.declare_entry(
         "Step cuts",
         "0",
@@ -577,9 +583,13 @@ namespace Contact
       max_active_set_iterations = prm.get_integer("Max active set iterations");
       active_set_parameter      = prm.get_double("Active set parameter");
       anderson_depth            = prm.get_integer("Anderson depth");
-      direct_solver             = prm.get("Direct solver");
-      contact_solver            = prm.get("Contact solver");
-      step_cuts                 = prm.get_integer("Step cuts");
+      linear_solver             = prm.get("Linear solver");
+      if (linear_solver == "auto")
+        linear_solver = (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ?
+                           "CHOLMOD" :
+                           "Amesos_Mumps");
+      contact_solver = prm.get("Contact solver");
+      step_cuts      = prm.get_integer("Step cuts");
     }
     prm.leave_subsection();
 
@@ -591,15 +601,23 @@ namespace Contact
                 "Solver/Active set parameter",
                 active_set_parameter,
                 "a value > 0");
-    AssertThrow(contact_solver != "Delassus" || direct_solver == "CHOLMOD",
+    AssertThrow(linear_solver != "CHOLMOD" ||
+                  Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
+                ExcMessage("'Solver/Linear solver = CHOLMOD' runs on one MPI "
+                           "process; on " +
+                           std::to_string(
+                             Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)) +
+                           " processes choose auto or an Amesos solver "
+                           "(Amesos_Mumps distributes the factor)."));
+    AssertThrow(contact_solver != "Delassus" || linear_solver == "CHOLMOD",
                 ExcMessage("'Solver/Contact solver = Delassus' works between "
                            "the forward and backward substitutions with the "
                            "triangular factor of K, which only CHOLMOD "
-                           "exposes: it needs 'Solver/Direct solver = "
+                           "exposes: it needs 'Solver/Linear solver = "
                            "CHOLMOD' (here " +
-                           direct_solver +
+                           linear_solver +
                            "). 'constraints' and 'auto' work with every "
-                           "direct solver."));
+                           "linear solver."));
   }
 
 

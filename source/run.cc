@@ -3,6 +3,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/convergence_table.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/fe/fe_tools.h>
@@ -449,6 +450,13 @@ namespace Contact
 
     const Parameters   parameters = read_parameters(command_line, prm);
     const unsigned int dimension  = parameters.dimension;
+    // The study interpolates every level onto the finest mesh, which needs
+    // the whole mesh on one process.
+    AssertThrow(parameters.convergence_study.levels == 0 ||
+                  Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
+                ExcMessage("'Convergence study/Levels' > 0 runs on one MPI "
+                           "process in this version; start the study "
+                           "without mpirun (or set Levels = 0)."));
     if (parameters.convergence_study.levels > 0 && dimension == 2)
       run_convergence_study<2>(prm, parameters);
     else if (parameters.convergence_study.levels > 0)

@@ -188,24 +188,32 @@ namespace Contact
           point[d] = coordinates[d];
         points.push_back(point);
       }
-    const double h = triangulation->begin_active()->extent_in_direction(0);
+    // The uniform size before grading (the first active cell of this
+    // process may be an artificial, coarser one).
+    double h = 0;
+    for (const auto &cell : triangulation->active_cell_iterators())
+      if (cell->is_locally_owned())
+        h = std::max(h, cell->extent_in_direction(0));
+    h = Utilities::MPI::max(h, mpi_communicator);
     for (bool flagged = true; flagged;)
       {
         flagged = false;
         for (const auto &cell : triangulation->active_cell_iterators())
-          {
-            double r = std::numeric_limits<double>::max();
-            for (const Point<dim> &point : points)
-              r = std::min(r, cell->center().distance(point));
-            const double target =
-              h * std::pow(std::min(r / geometry.refinement_radius, 1.),
-                           geometry.refinement_grading);
-            if (cell->extent_in_direction(0) > target * (1. + 1e-10))
-              {
-                cell->set_refine_flag();
-                flagged = true;
-              }
-          }
+          if (cell->is_locally_owned())
+            {
+              double r = std::numeric_limits<double>::max();
+              for (const Point<dim> &point : points)
+                r = std::min(r, cell->center().distance(point));
+              const double target =
+                h * std::pow(std::min(r / geometry.refinement_radius, 1.),
+                             geometry.refinement_grading);
+              if (cell->extent_in_direction(0) > target * (1. + 1e-10))
+                {
+                  cell->set_refine_flag();
+                  flagged = true;
+                }
+            }
+        flagged = Utilities::MPI::logical_or(flagged, mpi_communicator);
         if (flagged)
           triangulation->execute_coarsening_and_refinement();
       }
@@ -213,12 +221,19 @@ namespace Contact
     const std::set<types::boundary_id> contact_ids(
       parameters.boundary.contact_ids.begin(),
       parameters.boundary.contact_ids.end());
-    std::set<unsigned int> levels_on_gamma3;
+    unsigned int finest = 0, coarsest = numbers::invalid_unsigned_int;
     for (const auto &cell : triangulation->active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && contact_ids.count(face->boundary_id()) != 0)
-          levels_on_gamma3.insert(cell->level());
-    AssertThrow(levels_on_gamma3.size() <= 1,
+      if (cell->is_locally_owned())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              contact_ids.count(face->boundary_id()) != 0)
+            {
+              finest   = std::max<unsigned int>(finest, cell->level());
+              coarsest = std::min<unsigned int>(coarsest, cell->level());
+            }
+    finest   = Utilities::MPI::max(finest, mpi_communicator);
+    coarsest = Utilities::MPI::min(coarsest, mpi_communicator);
+    AssertThrow(finest <= coarsest,
                 ExcMessage("The local refinement of 'Geometry/Refinement "
                            "points' reaches Gamma_3, which is not supported "
                            "yet: choose points away from 'Boundary "
@@ -439,8 +454,94 @@ namespace Contact
   // the outward normal averaged over the faces around the node. A node all
   // of whose dofs are constrained (where Gamma_3 meets the clamp) has no
   // friction unknown and is left out.
+  //
+  // Every process keeps every node: the friction problem on Gamma_3 is
+  // small and solved redundantly, so that all processes take the same
+  // branches. Each process integrates over the faces of its own cells; the
+  // parts are exchanged (all_gather) and summed, and the constraint rows of
+  // a node (known where its dofs are locally relevant) travel with them.
   template <int dim>
   void ContactProblem<dim>::setup_contact_nodes()
+  {
+    // One record per (process, node) as doubles (dof indices are exact):
+    // dofs, scalar dof, location, weight, normal, number of constraint
+    // rows, the rows.
+    constexpr unsigned int record_size =
+      dim + 1 + dim + 1 + dim + 1 + dim * dim;
+    std::vector<double> records;
+    for (const auto &[key, node] : integrate_contact_faces())
+      {
+        const auto constrained =
+          constrained_directions<dim>(node.dofs, constraints);
+        records.insert(records.end(), node.dofs.begin(), node.dofs.end());
+        records.push_back(node.scalar_dof);
+        for (unsigned int d = 0; d < dim; ++d)
+          records.push_back(node.location[d]);
+        records.push_back(node.weight);
+        for (unsigned int d = 0; d < dim; ++d)
+          records.push_back(node.normal[d]);
+        records.push_back(constrained.size());
+        for (unsigned int r = 0; r < dim; ++r)
+          for (unsigned int d = 0; d < dim; ++d)
+            records.push_back(r < constrained.size() ? constrained[r][d] : 0.);
+      }
+
+    std::map<types::global_dof_index, ContactNode<dim>>            nodes;
+    std::map<types::global_dof_index, std::vector<Tensor<1, dim>>> rows;
+    for (const auto &part :
+         Utilities::MPI::all_gather(mpi_communicator, records))
+      for (auto r = part.begin(); r != part.end(); r += record_size)
+        {
+          const auto        key  = static_cast<types::global_dof_index>(r[0]);
+          ContactNode<dim> &node = nodes[key];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              node.dofs[d]     = static_cast<types::global_dof_index>(r[d]);
+              node.location[d] = r[dim + 1 + d];
+              node.normal[d] += r[2 * dim + 2 + d];
+            }
+          node.scalar_dof = static_cast<types::global_dof_index>(r[dim]);
+          node.weight += r[2 * dim + 1];
+          std::vector<Tensor<1, dim>> &directions = rows[key];
+          directions.resize(static_cast<unsigned int>(r[3 * dim + 2]));
+          for (unsigned int i = 0; i < directions.size(); ++i)
+            for (unsigned int d = 0; d < dim; ++d)
+              directions[i][d] = r[3 * dim + 3 + i * dim + d];
+        }
+
+    contact_nodes.clear();
+    for (auto &[key, node] : nodes)
+      {
+        const std::vector<Tensor<1, dim>> &constrained = rows[key];
+        AssertThrow(!constrained.empty(),
+                    ExcInternalError("A node of Gamma_3 without its normal "
+                                     "constraint."));
+        if (constrained.size() == dim)
+          continue;
+        node.normal /= node.normal.norm();
+        node.tangents      = free_tangents(constrained, node.normal);
+        node.locally_owned = locally_owned_dofs.is_element(node.dofs[0]);
+        contact_nodes.push_back(node);
+      }
+    // Order along Gamma_3, so that output and reports read left to right.
+    std::sort(contact_nodes.begin(),
+              contact_nodes.end(),
+              [](const ContactNode<dim> &a, const ContactNode<dim> &b) {
+                for (unsigned int d = 0; d < dim; ++d)
+                  if (a.location[d] != b.location[d])
+                    return a.location[d] < b.location[d];
+                return false;
+              });
+  }
+
+
+  // @sect4{ContactProblem::integrate_contact_faces}
+
+  // This process's part of the nodes of Gamma_3: the faces of its own
+  // cells, keyed by the node's first dof.
+  template <int dim>
+  std::map<types::global_dof_index, ContactNode<dim>>
+  ContactProblem<dim>::integrate_contact_faces() const
   {
     const std::set<types::boundary_id> contact_ids(
       parameters.boundary.contact_ids.begin(),
@@ -497,30 +598,7 @@ namespace Contact
                 }
             }
       }
-
-    contact_nodes.clear();
-    for (auto &[key, node] : nodes)
-      {
-        const auto constrained =
-          constrained_directions<dim>(node.dofs, constraints);
-        AssertThrow(!constrained.empty(),
-                    ExcInternalError("A node of Gamma_3 without its normal "
-                                     "constraint."));
-        if (constrained.size() == dim)
-          continue;
-        node.normal /= node.normal.norm();
-        node.tangents = free_tangents(constrained, node.normal);
-        contact_nodes.push_back(node);
-      }
-    // Order along Gamma_3, so that output and reports read left to right.
-    std::sort(contact_nodes.begin(),
-              contact_nodes.end(),
-              [](const ContactNode<dim> &a, const ContactNode<dim> &b) {
-                for (unsigned int d = 0; d < dim; ++d)
-                  if (a.location[d] != b.location[d])
-                    return a.location[d] < b.location[d];
-                return false;
-              });
+    return nodes;
   }
 
 
@@ -529,44 +607,79 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::setup_probes()
   {
+    const unsigned int this_process =
+                         Utilities::MPI::this_mpi_process(mpi_communicator),
+                       n_processes =
+                         Utilities::MPI::n_mpi_processes(mpi_communicator);
     probes.clear();
     for (const auto &coordinates : parameters.output.probe_points)
       {
         Point<dim> point;
         for (unsigned int d = 0; d < dim; ++d)
           point[d] = coordinates[d];
-        // Depending on the triangulation, a point outside the mesh either
-        // throws or gives an invalid cell.
-        bool found = false;
+        // The cells of this process around the point (a point outside the
+        // mesh gives none, or an exception, depending on the triangulation).
+        std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
+          probe;
         try
           {
-            probes.push_back(GridTools::find_active_cell_around_point(
-              *mapping, dof_handler, point));
-            found = (probes.back().first.state() == IteratorState::valid);
+            for (const auto &candidate :
+                 GridTools::find_all_active_cells_around_point(*mapping,
+                                                               dof_handler,
+                                                               point))
+              if (candidate.first->is_locally_owned())
+                {
+                  probe = candidate;
+                  break;
+                }
           }
         catch (const ExceptionBase &)
           {}
+        const unsigned int evaluating_process =
+          Utilities::MPI::min(probe.first.state() == IteratorState::valid ?
+                                this_process :
+                                n_processes,
+                              mpi_communicator);
         std::ostringstream text;
         text << point;
-        AssertThrow(found,
+        AssertThrow(evaluating_process < n_processes,
                     ExcMessage("Entry 'Output/Probe points': the point " +
                                text.str() +
                                " is not in the mesh; allowed are points of "
                                "the body."));
+        if (evaluating_process != this_process)
+          probe.first = typename DoFHandler<dim>::active_cell_iterator();
+        probes.push_back(probe);
       }
   }
 
 
-#define INSTANTIATE(dim)                                                 \
-  template void         ContactProblem<dim>::make_grid();                \
-  template unsigned int ContactProblem<dim>::make_box();                 \
-  template unsigned int ContactProblem<dim>::read_mesh_file();           \
-  template void         ContactProblem<dim>::grade_towards_points();     \
-  template void         ContactProblem<dim>::check_boundary_ids() const; \
-  template void         ContactProblem<dim>::setup_system();             \
-  template void         ContactProblem<dim>::make_constraints();         \
-  template void         ContactProblem<dim>::setup_contact_nodes();      \
-  template void         ContactProblem<dim>::setup_probes();
+  // @sect4{ContactProblem::ghosted}
+
+  template <int dim>
+  VectorType ContactProblem<dim>::ghosted(const VectorType &v) const
+  {
+    VectorType result(locally_owned_dofs,
+                      locally_relevant_dofs,
+                      mpi_communicator);
+    result = v;
+    return result;
+  }
+
+
+#define INSTANTIATE(dim)                                                    \
+  template void         ContactProblem<dim>::make_grid();                   \
+  template unsigned int ContactProblem<dim>::make_box();                    \
+  template unsigned int ContactProblem<dim>::read_mesh_file();              \
+  template void         ContactProblem<dim>::grade_towards_points();        \
+  template void         ContactProblem<dim>::check_boundary_ids() const;    \
+  template void         ContactProblem<dim>::setup_system();                \
+  template void         ContactProblem<dim>::make_constraints();            \
+  template void         ContactProblem<dim>::setup_contact_nodes();         \
+  template std::map<types::global_dof_index, ContactNode<dim>>              \
+                      ContactProblem<dim>::integrate_contact_faces() const; \
+  template void       ContactProblem<dim>::setup_probes();                  \
+  template VectorType ContactProblem<dim>::ghosted(const VectorType &) const;
 
   INSTANTIATE(2)
   INSTANTIATE(3)

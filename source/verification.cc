@@ -63,15 +63,15 @@ namespace Contact
     std::vector<Tensor<1, dim>>          u_h(n_q), w_h(n_q);
     std::vector<SymmetricTensor<2, dim>> eps_h(n_q);
 
-    double e_V = 0, e_w = 0, e_u = 0;
+    const VectorType u = ghosted(displacement), w = ghosted(velocity);
+    double           e_V = 0, e_w = 0, e_u = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          fe_values[displacements].get_function_values(displacement, u_h);
-          fe_values[displacements].get_function_values(velocity, w_h);
-          fe_values[displacements].get_function_symmetric_gradients(
-            displacement, eps_h);
+          fe_values[displacements].get_function_values(u, u_h);
+          fe_values[displacements].get_function_values(w, w_h);
+          fe_values[displacements].get_function_symmetric_gradients(u, eps_h);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               const Point<dim>             &p   = fe_values.quadrature_point(q);
