@@ -37,8 +37,9 @@ def build():
 
 
 def run(contact, prm, sets):
-    """Runs contact, returns (stdout, wall seconds, peak memory in MB)."""
-    command = [contact]
+    """Runs contact (a path, or a command list such as mpirun ... contact),
+    returns (stdout, wall seconds, peak memory in MB)."""
+    command = list(contact) if isinstance(contact, list) else [contact]
     for entry in sets:
         command += ["--set", entry]
     start = time.perf_counter()

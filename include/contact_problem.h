@@ -195,10 +195,11 @@ namespace Contact
   private:
     // setup.cc
     void         make_grid();
-    unsigned int make_box();
-    unsigned int read_mesh_file();
-    void         grade_towards_points();
-    void         check_boundary_ids() const;
+    void         build_mesh(Triangulation<dim> &mesh);
+    unsigned int make_box(Triangulation<dim> &mesh);
+    unsigned int read_mesh_file(Triangulation<dim> &mesh);
+    void         grade_towards_points(Triangulation<dim> &mesh);
+    void         check_boundary_ids(const Triangulation<dim> &mesh) const;
     void         setup_system();
     void         make_constraints();
     void         setup_contact_nodes();

@@ -8,6 +8,8 @@
 
 #include <contact_problem.h>
 
+#include <Epetra_CrsMatrix.h>
+
 namespace Contact
 {
   // @sect4{ContactProblem::velocity_for_friction_force}
@@ -40,18 +42,27 @@ namespace Contact
                                MatrixType              &matrix,
                                VectorType              &rhs)
     {
-      const auto range = matrix.local_range();
-      for (auto row = range.first; row < range.second; ++row)
+      // Epetra's views of the local rows: deal.II's entry iterator copies
+      // a row per access and is far too slow for a pass over all rows.
+      auto &epetra = const_cast<Epetra_CrsMatrix &>(matrix.trilinos_matrix());
+      for (int local_row = 0; local_row < epetra.NumMyRows(); ++local_row)
         {
-          for (auto entry = matrix.begin(row); entry != matrix.end(row);
-               ++entry)
-            if (entry->column() != row &&
-                (fixed[row] || fixed[entry->column()]))
-              entry->value() = 0.;
+          const auto row =
+            static_cast<types::global_dof_index>(epetra.GRID64(local_row));
+          int     length;
+          double *values;
+          int    *columns;
+          epetra.ExtractMyRowView(local_row, length, values, columns);
+          for (int k = 0; k < length; ++k)
+            {
+              const auto column = static_cast<types::global_dof_index>(
+                epetra.ColMap().GID64(columns[k]));
+              if (column != row && (fixed[row] || fixed[column]))
+                values[k] = 0.;
+            }
           if (fixed[row])
             rhs[row] = 0.;
         }
-      matrix.compress(VectorOperation::insert);
       rhs.compress(VectorOperation::insert);
     }
   } // namespace

@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 
+#include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/distributed/tria.h>
 
 #include <deal.II/fe/fe_q.h>
@@ -33,6 +34,10 @@ namespace Contact
     make_triangulation(const GeometryParameters &geometry,
                        const MPI_Comm            communicator)
     {
+      if (geometry.simplex_cells &&
+          Utilities::MPI::n_mpi_processes(communicator) > 1)
+        return std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
+          communicator);
       if (geometry.simplex_cells)
         return std::make_unique<Triangulation<dim>>();
       return std::make_unique<parallel::distributed::Triangulation<dim>>(
@@ -116,13 +121,6 @@ namespace Contact
     , max_relative_energy_residual(0)
   {
     AssertThrow(parameters.dimension == dim, ExcInternalError());
-    // Simplices live on a plain (replicated) triangulation, which does not
-    // distribute the dofs.
-    AssertThrow(Utilities::MPI::n_mpi_processes(mpi_communicator) == 1 ||
-                  !parameters.geometry.simplex_cells,
-                ExcMessage("'Geometry/Cell shape = simplex' runs on one MPI "
-                           "process in this version; on several processes "
-                           "choose 'hypercube' cells."));
     body_force =
       parse_vector_function<dim>("Loads and initial values/Body force",
                                  parameters.loads.body_force,

@@ -2,6 +2,7 @@
    and the console lines (DESIGN.md section 5). */
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 
 #include <deal.II/fe/fe_values.h>
 
@@ -430,8 +431,18 @@ namespace Contact
         if (substitution_time > 0)
           pcout << "Time per step " << 1e3 * step_time
                 << " ms = " << step_time / substitution_time
-                << " substitutions with the factor of K (one: "
+                << (factorization->iterations() > 0 ?
+                      " solves with K (one: " :
+                      " substitutions with the factor of K (one: ")
                 << 1e3 * substitution_time << " ms)" << std::endl;
+        Utilities::System::MemoryStats memory;
+        Utilities::System::get_memory_stats(memory);
+        const auto peak =
+          Utilities::MPI::min_max_avg(memory.VmHWM / 1024., mpi_communicator);
+        pcout << "Peak memory per process: " << std::setprecision(4) << peak.max
+              << " MB (smallest " << peak.min << " MB, "
+              << Utilities::MPI::n_mpi_processes(mpi_communicator)
+              << " processes)" << std::endl;
         computing_timer.print_summary();
       }
   }

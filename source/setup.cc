@@ -2,6 +2,8 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <deal.II/distributed/fully_distributed_tria.h>
+
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -9,6 +11,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria_description.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -29,30 +32,57 @@ namespace Contact
 {
   // @sect4{ContactProblem::make_grid}
 
-  // The coarse mesh (the box, or a gmsh file), turned by the 'Rotation
-  // angle', refined globally, then graded towards the 'Refinement points'.
+  // Hypercubes go to p4est's distributed triangulation, which refines its
+  // own part. p4est does not take simplices: on several processes the
+  // whole simplex mesh is built on every process, partitioned by METIS, and
+  // each process keeps its part in a fully distributed triangulation.
   template <int dim>
   void ContactProblem<dim>::make_grid()
   {
     TimerOutput::Scope t(computing_timer, "Grid");
+    auto              *fully_distributed =
+      dynamic_cast<parallel::fullydistributed::Triangulation<dim> *>(
+        triangulation.get());
+    if (fully_distributed == nullptr)
+      {
+        build_mesh(*triangulation);
+        return;
+      }
+    Triangulation<dim> whole;
+    build_mesh(whole);
+    GridTools::partition_triangulation(
+      Utilities::MPI::n_mpi_processes(mpi_communicator), whole);
+    fully_distributed->create_triangulation(
+      TriangulationDescription::Utilities::
+        create_description_from_triangulation(whole, mpi_communicator));
+  }
+
+
+  // @sect4{ContactProblem::build_mesh}
+
+  // The coarse mesh (the box, or a gmsh file), turned by the 'Rotation
+  // angle', refined globally, then graded towards the 'Refinement points'.
+  template <int dim>
+  void ContactProblem<dim>::build_mesh(Triangulation<dim> &mesh)
+  {
     const auto        &geometry = parameters.geometry;
     const unsigned int n_refinements =
-      geometry.mesh_file.empty() ? make_box() : read_mesh_file();
+      geometry.mesh_file.empty() ? make_box(mesh) : read_mesh_file(mesh);
     const double angle = geometry.rotation_angle * numbers::PI / 180.;
     if (angle != 0.)
       {
         if constexpr (dim == 2)
-          GridTools::rotate(angle, *triangulation);
+          GridTools::rotate(angle, mesh);
         else
           GridTools::rotate(Tensor<1, 3>({geometry.rotation_axis[0],
                                           geometry.rotation_axis[1],
                                           geometry.rotation_axis[2]}),
                             angle,
-                            *triangulation);
+                            mesh);
       }
-    triangulation->refine_global(n_refinements);
-    grade_towards_points();
-    check_boundary_ids();
+    mesh.refine_global(n_refinements);
+    grade_towards_points(mesh);
+    check_boundary_ids(mesh);
   }
 
 
@@ -70,7 +100,7 @@ namespace Contact
   // meshes against 0.99, 1.00 on generated ones, measured), so a
   // tetrahedral box is generated at the requested cell size.
   template <int dim>
-  unsigned int ContactProblem<dim>::make_box()
+  unsigned int ContactProblem<dim>::make_box(Triangulation<dim> &mesh)
   {
     const auto               &geometry = parameters.geometry;
     Point<dim>                lower, upper;
@@ -95,11 +125,11 @@ namespace Contact
     if (geometry.simplex_cells)
       {
         // deal.II 9.4 cannot colorize the simplex box itself.
-        GridGenerator::subdivided_hyper_rectangle_with_simplices(*triangulation,
+        GridGenerator::subdivided_hyper_rectangle_with_simplices(mesh,
                                                                  subdivisions,
                                                                  lower,
                                                                  upper);
-        for (const auto &face : triangulation->active_face_iterators())
+        for (const auto &face : mesh.active_face_iterators())
           if (face->at_boundary())
             for (unsigned int d = 0; d < dim; ++d)
               for (const unsigned int side : {0u, 1u})
@@ -109,7 +139,7 @@ namespace Contact
       }
     else
       GridGenerator::subdivided_hyper_rectangle(
-        *triangulation, subdivisions, lower, upper, /*colorize=*/true);
+        mesh, subdivisions, lower, upper, /*colorize=*/true);
     return n_refinements;
   }
 
@@ -121,7 +151,7 @@ namespace Contact
   // 'Cell shape' (p4est would fail on simplices with a less clear message),
   // then into the triangulation of the run.
   template <int dim>
-  unsigned int ContactProblem<dim>::read_mesh_file()
+  unsigned int ContactProblem<dim>::read_mesh_file(Triangulation<dim> &mesh)
   {
     const std::string &file = parameters.geometry.mesh_file;
     const auto         read = [&](Triangulation<dim> &target) {
@@ -157,7 +187,7 @@ namespace Contact
                            "; allowed is 'Cell shape = " +
                            (simplices ? "simplex" : "hypercube") +
                            "' for it (meshes of one cell shape only)."));
-    read(*triangulation);
+    read(mesh);
     return parameters.geometry.mesh_refinements;
   }
 
@@ -175,7 +205,7 @@ namespace Contact
   // Hanging nodes on Gamma_3 would need the nodal friction weights of the
   // constrained basis; they are excluded for now.
   template <int dim>
-  void ContactProblem<dim>::grade_towards_points()
+  void ContactProblem<dim>::grade_towards_points(Triangulation<dim> &mesh)
   {
     const auto &geometry = parameters.geometry;
     if (geometry.refinement_points.empty() || geometry.refinement_radius == 0.)
@@ -191,14 +221,14 @@ namespace Contact
     // The uniform size before grading (the first active cell of this
     // process may be an artificial, coarser one).
     double h = 0;
-    for (const auto &cell : triangulation->active_cell_iterators())
+    for (const auto &cell : mesh.active_cell_iterators())
       if (cell->is_locally_owned())
         h = std::max(h, cell->extent_in_direction(0));
     h = Utilities::MPI::max(h, mpi_communicator);
     for (bool flagged = true; flagged;)
       {
         flagged = false;
-        for (const auto &cell : triangulation->active_cell_iterators())
+        for (const auto &cell : mesh.active_cell_iterators())
           if (cell->is_locally_owned())
             {
               double r = std::numeric_limits<double>::max();
@@ -215,14 +245,14 @@ namespace Contact
             }
         flagged = Utilities::MPI::logical_or(flagged, mpi_communicator);
         if (flagged)
-          triangulation->execute_coarsening_and_refinement();
+          mesh.execute_coarsening_and_refinement();
       }
 
     const std::set<types::boundary_id> contact_ids(
       parameters.boundary.contact_ids.begin(),
       parameters.boundary.contact_ids.end());
     unsigned int finest = 0, coarsest = numbers::invalid_unsigned_int;
-    for (const auto &cell : triangulation->active_cell_iterators())
+    for (const auto &cell : mesh.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary() &&
@@ -248,11 +278,11 @@ namespace Contact
   // leave a part of the boundary free; a boundary part in two roles is a
   // contradiction. Both are user errors that name the entry.
   template <int dim>
-  void ContactProblem<dim>::check_boundary_ids() const
+  void
+  ContactProblem<dim>::check_boundary_ids(const Triangulation<dim> &mesh) const
   {
-    const std::vector<types::boundary_id> mesh_ids =
-      triangulation->get_boundary_ids();
-    std::string available;
+    const std::vector<types::boundary_id> mesh_ids = mesh.get_boundary_ids();
+    std::string                           available;
     for (const auto id : mesh_ids)
       available += (available.empty() ? "" : ", ") + std::to_string(id);
 
@@ -667,18 +697,22 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                                    \
-  template void         ContactProblem<dim>::make_grid();                   \
-  template unsigned int ContactProblem<dim>::make_box();                    \
-  template unsigned int ContactProblem<dim>::read_mesh_file();              \
-  template void         ContactProblem<dim>::grade_towards_points();        \
-  template void         ContactProblem<dim>::check_boundary_ids() const;    \
-  template void         ContactProblem<dim>::setup_system();                \
-  template void         ContactProblem<dim>::make_constraints();            \
-  template void         ContactProblem<dim>::setup_contact_nodes();         \
-  template std::map<types::global_dof_index, ContactNode<dim>>              \
-                      ContactProblem<dim>::integrate_contact_faces() const; \
-  template void       ContactProblem<dim>::setup_probes();                  \
+#define INSTANTIATE(dim)                                                       \
+  template void         ContactProblem<dim>::make_grid();                      \
+  template void         ContactProblem<dim>::build_mesh(Triangulation<dim> &); \
+  template unsigned int ContactProblem<dim>::make_box(Triangulation<dim> &);   \
+  template unsigned int ContactProblem<dim>::read_mesh_file(                   \
+    Triangulation<dim> &);                                                     \
+  template void ContactProblem<dim>::grade_towards_points(                     \
+    Triangulation<dim> &);                                                     \
+  template void ContactProblem<dim>::check_boundary_ids(                       \
+    const Triangulation<dim> &) const;                                         \
+  template void ContactProblem<dim>::setup_system();                           \
+  template void ContactProblem<dim>::make_constraints();                       \
+  template void ContactProblem<dim>::setup_contact_nodes();                    \
+  template std::map<types::global_dof_index, ContactNode<dim>>                 \
+                      ContactProblem<dim>::integrate_contact_faces() const;    \
+  template void       ContactProblem<dim>::setup_probes();                     \
   template VectorType ContactProblem<dim>::ghosted(const VectorType &) const;
 
   INSTANTIATE(2)
