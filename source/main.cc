@@ -11,6 +11,8 @@
 #include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <sstream>
+#include <string>
 
 namespace
 {
@@ -47,6 +49,27 @@ namespace
   }
 } // namespace
 
+namespace
+{
+  // The message of a failure, and a non-zero exit. On several processes an
+  // error may hit one process only (a file rank 0 cannot write) while the
+  // others wait in a collective operation: MPI_Abort ends them all.
+  int fail(const std::string &message)
+  {
+    const unsigned int n_processes = dealii::Utilities::MPI::n_mpi_processes(
+                         MPI_COMM_WORLD),
+                       this_process = dealii::Utilities::MPI::this_mpi_process(
+                         MPI_COMM_WORLD);
+    std::cerr << std::endl << "Error";
+    if (n_processes > 1)
+      std::cerr << " (process " << this_process << " of " << n_processes << ")";
+    std::cerr << ": " << message << std::endl;
+    if (n_processes > 1)
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
+  }
+} // namespace
+
 int main(int argc, char *argv[])
 {
   use_one_blas_thread();
@@ -60,15 +83,13 @@ int main(int argc, char *argv[])
     {
       // Only the exception's own text: the user needs the message, not the
       // source location of the check.
-      std::cerr << std::endl << "Error: ";
-      exc.print_info(std::cerr);
-      std::cerr << std::endl;
-      return 1;
+      std::ostringstream message;
+      exc.print_info(message);
+      return fail(message.str());
     }
   catch (const std::exception &exc)
     {
-      std::cerr << std::endl << "Error: " << exc.what() << std::endl;
-      return 1;
+      return fail(exc.what());
     }
   return 0;
 }
