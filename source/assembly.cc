@@ -255,18 +255,19 @@ namespace Contact
         std::vector<types::global_dof_index> node_dofs(dim);
         Vector<double>                       node_load(dim);
         for (const ContactNode<dim> &node : contact_nodes)
-          {
-            const Tensor<1, dim> f3 =
-              exact_solution->contact_load(node.location, node.normal, time);
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                node_dofs[d] = node.dofs[d];
-                node_load[d] = node.weight * f3[d];
-              }
-            constraints.distribute_local_to_global(node_load,
-                                                   node_dofs,
-                                                   load_vector);
-          }
+          if (node.locally_owned)
+            {
+              const Tensor<1, dim> f3 =
+                exact_solution->contact_load(node.location, node.normal, time);
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  node_dofs[d] = node.dofs[d];
+                  node_load[d] = node.weight * f3[d];
+                }
+              constraints.distribute_local_to_global(node_load,
+                                                     node_dofs,
+                                                     load_vector);
+            }
       }
     load_vector.compress(VectorOperation::add);
   }

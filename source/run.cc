@@ -28,6 +28,16 @@ namespace Contact
 {
   namespace
   {
+    // The console of a convergence study: the first process's standard
+    // output (the stream of the others is never opened, so it drops what
+    // it is given).
+    std::ostream &console()
+    {
+      static std::ofstream dropped;
+      return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? std::cout :
+                                                                     dropped;
+    }
+
     const char *usage =
       "Usage: contact [--set 'Section/Entry=value']... [--resume] "
       "scene.prm\n"
@@ -281,7 +291,7 @@ namespace Contact
       apply_override(prm, "Convergence study/Levels", "0");
       Parameters parameters;
       parameters.parse_parameters(prm);
-      std::cout << "Convergence study, level " << level << ": h = " << h.str()
+      console() << "Convergence study, level " << level << ": h = " << h.str()
                 << ", k = " << k.str() << std::endl;
       return parameters;
     }
@@ -401,28 +411,32 @@ namespace Contact
           table.evaluate_convergence_rates(
             column, ConvergenceTable::reduction_rate_log2);
         }
-      std::cout << std::endl
+      console() << std::endl
                 << "Convergence study (refining "
                 << (study.refine == Refine::space ? "h" :
                     study.refine == Refine::time  ? "k" :
                                                     "h and k")
                 << "; rates log2(e_{l-1}/e_l)";
       if (!exact)
-        std::cout << "; reference: level " << L << std::setprecision(6)
+        console() << "; reference: level " << L << std::setprecision(6)
                   << ", h = " << results[L].run.cell_size
                   << ", k = " << results[L].run.time_step << ", "
                   << results[L].run.n_dofs << " unknowns";
-      std::cout << "):" << std::endl;
-      table.write_text(std::cout,
-                       TableHandler::TextOutputFormat::org_mode_table);
-      std::ofstream file(base.output.directory + "/convergence.txt");
-      table.write_text(file, TableHandler::TextOutputFormat::org_mode_table);
+      console() << "):" << std::endl;
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        {
+          table.write_text(std::cout,
+                           TableHandler::TextOutputFormat::org_mode_table);
+          std::ofstream file(base.output.directory + "/convergence.txt");
+          table.write_text(file,
+                           TableHandler::TextOutputFormat::org_mode_table);
+        }
 
       if (exact && L > 0)
         {
           const ErrorNorms &coarse = results[L - 1].run.max_errors;
           const ErrorNorms &fine   = results[L].run.max_errors;
-          std::cout << "Rates between the two finest levels: V-norm "
+          console() << "Rates between the two finest levels: V-norm "
                     << std::fixed << std::setprecision(2)
                     << std::log2(coarse.displacement_V / fine.displacement_V)
                     << ", velocity L2 "
@@ -471,13 +485,16 @@ namespace Contact
 
     const Parameters   parameters = read_parameters(command_line, prm);
     const unsigned int dimension  = parameters.dimension;
-    // The study interpolates every level onto the finest mesh, which needs
-    // the whole mesh on one process.
+    // Without an exact solution the study interpolates every level onto
+    // the finest mesh, which needs the whole mesh on one process.
     AssertThrow(parameters.convergence_study.levels == 0 ||
+                  parameters.verification.manufactured_solution ||
                   Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
-                ExcMessage("'Convergence study/Levels' > 0 runs on one MPI "
-                           "process in this version; start the study "
-                           "without mpirun (or set Levels = 0)."));
+                ExcMessage("'Convergence study/Levels' > 0 without "
+                           "'Verification/Manufactured solution' runs on one "
+                           "MPI process in this version (every level is "
+                           "compared with the finest); start the study "
+                           "without mpirun."));
     if (parameters.convergence_study.levels > 0 && dimension == 2)
       run_convergence_study<2>(prm, parameters);
     else if (parameters.convergence_study.levels > 0)
