@@ -238,6 +238,9 @@ namespace Contact
                                       Vector<double>       &v,
                                       std::vector<NodeState> &state);
     VectorType   friction_load(const Vector<double> &eta) const;
+    void         add_nodal_force(const ContactNode<dim> &node,
+                                 const Tensor<1, dim>   &force,
+                                 VectorType             &load) const;
     std::string  convexification_failure(const double residual) const;
     void         add_contact_state(StepStatistics &statistics) const;
     double       tangential_velocity(const ContactNode<dim> &node,
@@ -282,7 +285,8 @@ namespace Contact
     void           write_vtu();
     void           write_pvd() const;
     void           write_time_series_row(const StepStatistics &statistics);
-    Tensor<1, dim> probe_displacement(const unsigned int probe) const;
+    Tensor<1, dim> probe_displacement(const unsigned int probe,
+                                      const VectorType  &u_ghosted) const;
     void           print_progress(const StepStatistics &statistics) const;
     void           report_contact_state();
     void           print_summary() const;
@@ -385,9 +389,7 @@ namespace Contact
     // invalid cell.
     std::vector<
       std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>>
-      probes;
-    // The displacement with ghost entries, for the probes.
-    VectorType                                  ghosted_displacement;
+                                                probes;
     std::ofstream                               time_series;
     std::vector<std::pair<double, std::string>> pvd_records;
     std::vector<double>                         pending_report_times;

@@ -251,24 +251,11 @@ namespace Contact
         }
 
     if (exact_solution && with_surface_loads)
-      {
-        std::vector<types::global_dof_index> node_dofs(dim);
-        Vector<double>                       node_load(dim);
-        for (const ContactNode<dim> &node : contact_nodes)
-          if (node.locally_owned)
-            {
-              const Tensor<1, dim> f3 =
-                exact_solution->contact_load(node.location, node.normal, time);
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  node_dofs[d] = node.dofs[d];
-                  node_load[d] = node.weight * f3[d];
-                }
-              constraints.distribute_local_to_global(node_load,
-                                                     node_dofs,
-                                                     load_vector);
-            }
-      }
+      for (const ContactNode<dim> &node : contact_nodes)
+        add_nodal_force(node,
+                        node.weight * exact_solution->contact_load(
+                                        node.location, node.normal, time),
+                        load_vector);
     load_vector.compress(VectorOperation::add);
   }
 

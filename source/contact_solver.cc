@@ -88,22 +88,30 @@ namespace Contact
   VectorType ContactProblem<dim>::friction_load(const Vector<double> &eta) const
   {
     VectorType load(locally_owned_dofs, mpi_communicator);
-    std::vector<types::global_dof_index> node_dofs(dim);
-    Vector<double>                       node_force(dim);
     for (unsigned int p = 0; p < contact_nodes.size(); ++p)
-      {
-        const Tensor<1, dim> force = contact_nodes[p].tangential_vector(eta, p);
-        if (!contact_nodes[p].locally_owned || force.norm_square() == 0.)
-          continue;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            node_dofs[d]  = contact_nodes[p].dofs[d];
-            node_force[d] = force[d];
-          }
-        constraints.distribute_local_to_global(node_force, node_dofs, load);
-      }
+      add_nodal_force(contact_nodes[p],
+                      contact_nodes[p].tangential_vector(eta, p),
+                      load);
     load.compress(VectorOperation::add);
     return load;
+  }
+
+
+  // A force at a node of Gamma_3 added to a load vector (condensed), by the
+  // process that owns the node; compress(add) follows.
+  template <int dim>
+  void ContactProblem<dim>::add_nodal_force(const ContactNode<dim> &node,
+                                            const Tensor<1, dim>   &force,
+                                            VectorType             &load) const
+  {
+    if (!node.locally_owned || force.norm_square() == 0.)
+      return;
+    std::vector<types::global_dof_index> node_dofs(node.dofs.begin(),
+                                                   node.dofs.end());
+    Vector<double>                       node_force(dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      node_force[d] = force[d];
+    constraints.distribute_local_to_global(node_force, node_dofs, load);
   }
 
 
@@ -719,6 +727,9 @@ namespace Contact
   template StepStatistics ContactProblem<dim>::advance(const unsigned int);    \
   template VectorType     ContactProblem<dim>::friction_load(                  \
     const Vector<double> &) const;                                         \
+  template void ContactProblem<dim>::add_nodal_force(const ContactNode<dim> &, \
+                                                     const Tensor<1, dim> &,   \
+                                                     VectorType &) const;      \
   template TrescaResult ContactProblem<dim>::solve_tresca_problem(             \
     const Vector<double> &,                                                    \
     const Vector<double> &,                                                    \

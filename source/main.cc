@@ -47,14 +47,31 @@ namespace
     setenv("OMPI_MCA_pml", "ob1", 0);
     setenv("OMPI_MCA_btl", "self", 0);
   }
-} // namespace
+  // A failure's text, without the source location of the check (the user
+  // needs the message).
+  std::string message_of(const std::exception_ptr &failure)
+  {
+    try
+      {
+        std::rethrow_exception(failure);
+      }
+    catch (const dealii::ExceptionBase &exc)
+      {
+        std::ostringstream message;
+        exc.print_info(message);
+        return message.str();
+      }
+    catch (const std::exception &exc)
+      {
+        return exc.what();
+      }
+    catch (...)
+      {
+        return "an unknown exception";
+      }
+  }
 
-namespace
-{
-  // The message of a failure, and a non-zero exit. On several processes an
-  // error may hit one process only (a file rank 0 cannot write) while the
-  // others wait in a collective operation: MPI_Abort ends them all.
-  int fail(const std::string &message)
+  void report(const std::exception_ptr &failure)
   {
     const unsigned int n_processes = dealii::Utilities::MPI::n_mpi_processes(
                          MPI_COMM_WORLD),
@@ -63,10 +80,7 @@ namespace
     std::cerr << std::endl << "Error";
     if (n_processes > 1)
       std::cerr << " (process " << this_process << " of " << n_processes << ")";
-    std::cerr << ": " << message << std::endl;
-    if (n_processes > 1)
-      MPI_Abort(MPI_COMM_WORLD, 1);
-    return 1;
+    std::cerr << ": " << message_of(failure) << std::endl;
   }
 } // namespace
 
@@ -75,21 +89,31 @@ int main(int argc, char *argv[])
   use_one_blas_thread();
   quick_singleton_start();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    {
+      // On several processes a failure may hit one process only while the
+      // others wait in a collective operation, and the destructors of the
+      // distributed objects (MUMPS, Trilinos maps) communicate: unwinding
+      // the stack on that process alone waits forever (measured: an
+      // unwritable output directory hung a 2-process run). So nothing
+      // catches here: an uncaught exception ends in std::terminate before
+      // any unwinding, which reports it and ends all processes.
+      std::set_terminate([]() {
+        report(std::current_exception());
+        MPI_Abort(MPI_COMM_WORLD, 1);
+        std::abort();
+      });
+      Contact::run_from_command_line(argc, argv);
+      return 0;
+    }
   try
     {
       Contact::run_from_command_line(argc, argv);
     }
-  catch (const dealii::ExceptionBase &exc)
+  catch (...)
     {
-      // Only the exception's own text: the user needs the message, not the
-      // source location of the check.
-      std::ostringstream message;
-      exc.print_info(message);
-      return fail(message.str());
-    }
-  catch (const std::exception &exc)
-    {
-      return fail(exc.what());
+      report(std::current_exception());
+      return 1;
     }
   return 0;
 }

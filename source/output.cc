@@ -65,7 +65,8 @@ namespace Contact
 
   template <int dim>
   Tensor<1, dim>
-  ContactProblem<dim>::probe_displacement(const unsigned int probe) const
+  ContactProblem<dim>::probe_displacement(const unsigned int probe,
+                                          const VectorType  &u_ghosted) const
   {
     const auto &[cell, reference_point] = probes[probe];
     Tensor<1, dim> u;
@@ -77,7 +78,7 @@ namespace Contact
                                 update_values);
         std::vector<Vector<double>> values(1, Vector<double>(dim));
         fe_values.reinit(cell);
-        fe_values.get_function_values(ghosted_displacement, values);
+        fe_values.get_function_values(u_ghosted, values);
         for (unsigned int d = 0; d < dim; ++d)
           u[d] = values[0][d];
       }
@@ -97,12 +98,14 @@ namespace Contact
       return;
     // Collective: every process takes part in the momentum and the probes,
     // the first one writes.
-    const Tensor<1, dim> p = momentum();
-    if (!probes.empty())
-      ghosted_displacement = ghosted(displacement);
+    const Tensor<1, dim>        p = momentum();
     std::vector<Tensor<1, dim>> probe_values;
-    for (unsigned int i = 0; i < probes.size(); ++i)
-      probe_values.push_back(probe_displacement(i));
+    if (!probes.empty())
+      {
+        const VectorType u = ghosted(displacement);
+        for (unsigned int i = 0; i < probes.size(); ++i)
+          probe_values.push_back(probe_displacement(i, u));
+      }
     if (!time_series.is_open())
       return;
     time_series << step_number << ',' << std::setprecision(12) << time << ','
@@ -459,7 +462,7 @@ namespace Contact
   template void           ContactProblem<dim>::report_contact_state();      \
   template void           ContactProblem<dim>::print_summary() const;       \
   template Tensor<1, dim> ContactProblem<dim>::probe_displacement(          \
-    const unsigned int) const;
+    const unsigned int, const VectorType &) const;
 
   INSTANTIATE(2)
   INSTANTIATE(3)

@@ -447,26 +447,6 @@ namespace Contact
         }
     }
 
-    // One run. On several processes a failure may hit one process only,
-    // and the destructors of the distributed objects (MUMPS, Trilinos
-    // maps) communicate: unwinding them on that process alone would wait
-    // forever for the others. So there the problem is left undestroyed and
-    // the exception goes on to main, which reports it and calls MPI_Abort.
-    template <int dim>
-    void run_scene(const Parameters &parameters)
-    {
-      auto problem = std::make_unique<ContactProblem<dim>>(parameters);
-      try
-        {
-          problem->run();
-        }
-      catch (...)
-        {
-          if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
-            problem.release();
-          throw;
-        }
-    }
   } // namespace
 
 
@@ -500,9 +480,9 @@ namespace Contact
     else if (parameters.convergence_study.levels > 0)
       run_convergence_study<3>(prm, parameters);
     else if (dimension == 2)
-      run_scene<2>(parameters);
+      ContactProblem<2>(parameters).run();
     else
-      run_scene<3>(parameters);
+      ContactProblem<3>(parameters).run();
   }
 
 
