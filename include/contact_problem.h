@@ -192,6 +192,11 @@ namespace Contact
     /** ||eps(v)||, the paper's V-norm, of a field on this problem's mesh. */
     double strain_norm(const VectorType &v) const;
 
+    const Mapping<dim> &get_mapping() const;
+    /** A copy of a distributed vector with this process's ghost entries, for
+     *  FEValues, DataOut and point evaluation. */
+    VectorType ghosted(const VectorType &v) const;
+
   private:
     // setup.cc
     void         make_grid();
@@ -248,9 +253,6 @@ namespace Contact
                                      const VectorType       &w) const;
     Vector<double> tangential_velocities(const VectorType &w) const;
     Vector<double> sum_over_processes(const Vector<double> &part) const;
-    // A copy of a distributed vector with this process's ghost entries, for
-    // FEValues and DataOut.
-    VectorType ghosted(const VectorType &v) const;
 
     // active_set_constraints.cc: the straightforward path.
     void velocity_for_friction_force(const Vector<double> &eta, VectorType &w);

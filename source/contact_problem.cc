@@ -262,6 +262,12 @@ namespace Contact
   }
 
   template <int dim>
+  const Mapping<dim> &ContactProblem<dim>::get_mapping() const
+  {
+    return *mapping;
+  }
+
+  template <int dim>
   const VectorType &ContactProblem<dim>::get_displacement() const
   {
     return displacement;

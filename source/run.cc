@@ -6,11 +6,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <deal.II/fe/fe_tools.h>
 
-#include <deal.II/numerics/vector_tools.h>
 
 #include <contact_problem.h>
+#include <reference_interpolation.h>
 #include <run.h>
 
 #include <filesystem>
@@ -19,6 +18,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -236,36 +236,6 @@ namespace Contact
       std::vector<VectorType> displacements;
     };
 
-    // A field of one level's space, interpolated onto the reference's
-    // finer mesh (the meshes share their coarse mesh) and, if the reference
-    // has another element, into the reference's element; both steps are
-    // exact when the reference space contains the level's.
-    template <int dim>
-    VectorType interpolate_onto(const DoFHandler<dim> &source,
-                                const VectorType      &field,
-                                const DoFHandler<dim> &target)
-    {
-      VectorType result(target.locally_owned_dofs(), MPI_COMM_WORLD);
-      if (source.get_fe() == target.get_fe())
-        {
-          VectorTools::interpolate_to_different_mesh(source,
-                                                     field,
-                                                     target,
-                                                     result);
-          return result;
-        }
-      DoFHandler<dim> same_element(target.get_triangulation());
-      same_element.distribute_dofs(source.get_fe());
-      VectorType on_target_mesh(same_element.locally_owned_dofs(),
-                                MPI_COMM_WORLD);
-      VectorTools::interpolate_to_different_mesh(source,
-                                                 field,
-                                                 same_element,
-                                                 on_target_mesh);
-      FETools::interpolate(same_element, on_target_mesh, target, result);
-      return result;
-    }
-
     // Sets the entries that differ from one level to the next, and parses.
     Parameters parameters_of_level(ParameterHandler  &prm,
                                    const Parameters  &base,
@@ -323,13 +293,18 @@ namespace Contact
       const auto collect = [&](const unsigned int level) {
         const unsigned int stride =
           (study.refine == Refine::space ? 1 : 1u << level);
-        return [&, stride, level](const ContactProblem<dim> &problem) {
+        return [&,
+                stride,
+                level,
+                interpolate = std::shared_ptr<ReferenceInterpolation<dim>>()](
+                 const ContactProblem<dim> &problem) mutable {
           if (problem.get_step_number() % stride != 0)
             return;
+          if (!interpolate)
+            interpolate =
+              std::make_shared<ReferenceInterpolation<dim>>(*reference);
           results[level].displacements.push_back(
-            interpolate_onto(problem.get_dof_handler(),
-                             problem.get_displacement(),
-                             reference->get_dof_handler()));
+            (*interpolate)(problem, problem.get_displacement()));
         };
       };
 
@@ -465,16 +440,6 @@ namespace Contact
 
     const Parameters   parameters = read_parameters(command_line, prm);
     const unsigned int dimension  = parameters.dimension;
-    // Without an exact solution the study interpolates every level onto
-    // the finest mesh, which needs the whole mesh on one process.
-    AssertThrow(parameters.convergence_study.levels == 0 ||
-                  parameters.verification.manufactured_solution ||
-                  Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
-                ExcMessage("'Convergence study/Levels' > 0 without "
-                           "'Verification/Manufactured solution' runs on one "
-                           "MPI process in this version (every level is "
-                           "compared with the finest); start the study "
-                           "without mpirun."));
     if (parameters.convergence_study.levels > 0 && dimension == 2)
       run_convergence_study<2>(prm, parameters);
     else if (parameters.convergence_study.levels > 0)

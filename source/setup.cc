@@ -93,11 +93,11 @@ namespace Contact
   // is divided into round(length / h) parts, as the paper divides its
   // boundary "into 1/h equal parts". The coarse mesh is the coarsest box
   // that refines globally into this one (the number of refinements is
-  // returned): the same cells, but meshes of a convergence study then share
-  // their coarse mesh, which is what interpolate_to_different_mesh needs,
-  // and p4est gets few trees. Tetrahedra are the exception: deal.II 9.4's
-  // refinement of tetrahedra degrades them (P1 V-rates 0.79, 0.81 on refined
-  // meshes against 0.99, 1.00 on generated ones, measured), so a
+  // returned): the same cells, but the meshes of a convergence study are
+  // then nested (a level's solution is carried onto the reference's nodes
+  // exactly) and p4est gets few trees. Tetrahedra are the exception:
+  // deal.II 9.4's refinement of tetrahedra degrades them (P1 V-rates 0.79, 0.81
+  // on refined meshes against 0.99, 1.00 on generated ones, measured), so a
   // tetrahedral box is generated at the requested cell size.
   template <int dim>
   unsigned int ContactProblem<dim>::make_box(Triangulation<dim> &mesh)

@@ -101,10 +101,12 @@ namespace Contact
 
   // Norms of a field of this problem's finite element space, such as the
   // difference of two solutions interpolated onto this mesh; the Gauss rule
-  // of the assembly integrates them exactly on affine cells.
+  // of the assembly integrates them exactly on affine cells. The cells of
+  // this process need the field's ghost entries too.
   template <int dim>
-  double ContactProblem<dim>::strain_norm(const VectorType &v) const
+  double ContactProblem<dim>::strain_norm(const VectorType &field) const
   {
+    const VectorType                     v = ghosted(field);
     FEValues<dim>                        fe_values(*mapping,
                             fe,
                             quadrature,
