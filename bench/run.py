@@ -75,6 +75,27 @@ def machine():
             f"{os.getloadavg()[0]:.2f} at the start")
 
 
+def mpi_launcher(processes):
+    """The command prefix that starts contact on this many processes. Open
+    MPI refuses root without the two variables; oversubscription is for
+    machines with fewer cores than processes."""
+    if processes == 1:
+        return []
+    os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+    os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+    os.environ.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
+    return ["mpirun", "-np", str(processes)]
+
+
+def table_start(columns):
+    """The machine, then the header of a Markdown table with these columns;
+    printed at once and returned as the first lines of the results."""
+    lines = [f"Machine: {machine()}", "", "| " + " | ".join(columns) + " |",
+             "|" + "---|" * len(columns)]
+    print("\n".join(lines), flush=True)
+    return lines
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--sizes", default="32,64,128,256")
@@ -83,14 +104,11 @@ def main():
     contact = build()
     prm = os.path.join(ROOT, "prm", "barboteu2015.prm")
 
-    lines = [f"Machine: {machine()}", "",
-             "| h = k | unknowns | factor nonzeros | steps | wall [s] | per step [ms] "
-             "| convexification it./step | active set it./step | peak memory [MB] "
-             "| step / substitution |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+    lines = table_start(["h = k", "unknowns", "factor nonzeros", "steps", "wall [s]",
+                         "per step [ms]", "convexification it./step",
+                         "active set it./step", "peak memory [MB]", "step / substitution"])
     growth = []
     fast = None
-    print("\n".join(lines), flush=True)
     with tempfile.TemporaryDirectory() as tmp:
         for n in [int(s) for s in arguments.sizes.split(",")]:
             output, wall, memory = run(contact, prm, [

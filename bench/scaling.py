@@ -18,19 +18,12 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run import ROOT, build, machine, number, run  # noqa: E402
-
-# Open MPI refuses root without these; oversubscription for machines with
-# fewer cores than processes.
-os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
-os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-os.environ.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
+from run import ROOT, build, mpi_launcher, number, run, table_start  # noqa: E402
 
 
 def run_scene(contact, processes, sets, directory):
     prm = os.path.join(ROOT, "prm", "barboteu2015_3d_1m.prm")
-    launcher = [] if processes == 1 else ["mpirun", "-np", str(processes)]
-    output, wall, _ = run(launcher + [contact], prm, sets + [
+    output, wall, _ = run(mpi_launcher(processes) + [contact], prm, sets + [
         "Output/VTU interval=0", "Output/Progress interval=0",
         "Output/Print timings=true", f"Output/Output directory={directory}"])
     return {
@@ -50,11 +43,9 @@ def main():
     arguments = parser.parse_args()
     contact = build()
 
-    lines = [f"Machine: {machine()}", "",
-             "| scene | processes | unknowns | steps | wall [s] | time steps [s] "
-             "| per step [s] | CG iterations/step | peak memory/process [MB] |",
-             "|---|---|---|---|---|---|---|---|---|"]
-    print("\n".join(lines), flush=True)
+    lines = table_start(["scene", "processes", "unknowns", "steps", "wall [s]",
+                         "time steps [s]", "per step [s]", "CG iterations/step",
+                         "peak memory/process [MB]"])
     coarse = ["Geometry/Cell size=0.017857142857142856",
               "Time/Time step=0.017857142857142856",
               "Time/End time=0.17857142857142858"]

@@ -35,6 +35,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -233,7 +234,12 @@ namespace Contact
     void           change_time_step(const double k);
     StepStatistics advance(const unsigned int cuts_left);
     double         largest_weighted_delassus_eigenvalue();
+    bool           delassus_operator_pays() const;
     void           build_delassus_operator();
+    void           build_delassus_from_factor();
+    void           build_delassus_from_solves();
+    void           subtract_delassus_columns(const Vector<double> &eta,
+                                             VectorType           &w) const;
     StepStatistics do_time_step();
     StepStatistics
     solve_friction_problem(const Vector<double> &free_slip_velocity);
@@ -366,14 +372,16 @@ namespace Contact
     // K w_free = step_rhs.
     VectorType step_rhs;
 
-    // Gamma_3: its nodes, Y^T = (L^{-1} P C^T)^T and the Delassus
-    // operator D = Y^T Y (unless the active set is imposed as constraints
-    // on the whole body, 'Solver/Contact solver'), and the nodal state of
+    // Gamma_3: its nodes, the Delassus operator D (unless the active set is
+    // imposed as constraints on the whole body, 'Solver/Contact solver')
+    // with Y^T = (L^{-1} P C^T)^T where K has a triangular factor, or else
+    // the rows of Z = K^{-1} C^T this process owns, and the nodal state of
     // the last step.
     std::vector<ContactNode<dim>> contact_nodes;
     bool                          use_delassus_operator = false;
     SparsityPattern               delassus_factor_pattern;
     SparseMatrix<double>          delassus_factor;
+    LAPACKFullMatrix<double>      delassus_columns;
     FullMatrix<double>            delassus_operator;
     Vector<double>                active_set_parameter;
     Vector<double>                friction_force;

@@ -120,11 +120,7 @@ namespace Contact
   // What every step's friction problem needs, whichever path solves it:
   // the parameters c_p of the active set method (the 'Active set parameter'
   // times the node's stiffness t^T K t, averaged over its tangents), and on
-  // the Delassus path Y and D. 'auto' takes the Delassus path when CHOLMOD
-  // factorises K and Gamma_3 has at most 2000 tangential unknowns (every
-  // Newton step factorises a dense block of D, O(n^3)): the paper's scene
-  // in 2D down to h = 1/1024, 3D boxes like prm/barboteu2015_3d.prm down
-  // to h = 1/32. Larger contact zones take the constraints.
+  // the Delassus path D with Y or Z.
   template <int dim>
   void ContactProblem<dim>::setup_contact_solver()
   {
@@ -150,9 +146,7 @@ namespace Contact
 
     const std::string &choice = parameters.solver.contact_solver;
     use_delassus_operator =
-      (choice == "Delassus" ||
-       (choice == "auto" && factorization->has_triangular_factor() &&
-        n * m <= 2000));
+      (choice == "Delassus" || (choice == "auto" && delassus_operator_pays()));
     if (use_delassus_operator)
       build_delassus_operator();
 
@@ -321,6 +315,33 @@ namespace Contact
   }
 
 
+  // @sect4{ContactProblem::delassus_operator_pays}
+
+  // 'auto' takes the Delassus path while Gamma_3 has at most 2000
+  // tangential unknowns (every Newton step factorises a dense block of D,
+  // O(n^3)): the paper's scene in 2D down to h = 1/1024, 3D boxes like
+  // prm/barboteu2015_3d.prm down to h = 1/32. Without CHOLMOD's triangular
+  // factor it also needs Z = K^{-1} C^T, one solve per column and dense:
+  // taken with a direct solver while Z fits in 1 GB per process; with
+  // CG-AMG its columns would cost as many iterative solves as the
+  // constraints path does in a run. Larger contact zones take the
+  // constraints.
+  template <int dim>
+  bool ContactProblem<dim>::delassus_operator_pays() const
+  {
+    const double n_columns = contact_nodes.size() * (dim - 1);
+    if (n_columns > 2000)
+      return false;
+    if (factorization->has_triangular_factor())
+      return true;
+    const double largest_part =
+      Utilities::MPI::max(static_cast<double>(locally_owned_dofs.n_elements()),
+                          mpi_communicator);
+    return parameters.solver.linear_solver != "CG-AMG" &&
+           largest_part * n_columns * sizeof(double) <= 1e9;
+  }
+
+
   // @sect4{ContactProblem::build_delassus_operator}
 
   // The friction forces act on the body through C^T eta, where column p of
@@ -331,7 +352,19 @@ namespace Contact
   // and on Gamma_3 v = C w_n = v_free - D eta with the Delassus operator
   // D = C K^{-1} C^T, symmetric positive definite: the nonsmooth part of
   // every step lives on the few unknowns of Gamma_3 (DESIGN.md section 4).
-  //
+  template <int dim>
+  void ContactProblem<dim>::build_delassus_operator()
+  {
+    TimerOutput::Scope t(computing_timer, "Delassus operator");
+    if (factorization->has_triangular_factor())
+      build_delassus_from_factor();
+    else
+      build_delassus_from_solves();
+  }
+
+
+  // @sect4{ContactProblem::build_delassus_from_factor}
+
   // With CHOLMOD's K = P^T L L^T P and Y = L^{-1} P C^T,
   //   D = Y^T Y,  v_free = Y^T y,  w_n = P^T L^{-T} (y - Y eta),
   // where y = L^{-1} P step_rhs: a step is one forward substitution, the
@@ -341,10 +374,8 @@ namespace Contact
   // is dense; it is stored transposed, as a sparse matrix with one row per
   // tangential unknown of Gamma_3.
   template <int dim>
-  void ContactProblem<dim>::build_delassus_operator()
+  void ContactProblem<dim>::build_delassus_from_factor()
   {
-    TimerOutput::Scope t(computing_timer, "Delassus operator");
-
     const unsigned int n_columns = contact_nodes.size() * (dim - 1);
     const unsigned int block     = 64;
     std::vector<std::vector<std::pair<unsigned int, double>>> columns_of_Y(
@@ -401,6 +432,75 @@ namespace Contact
   }
 
 
+  // @sect4{ContactProblem::build_delassus_from_solves}
+
+  // Without a triangular factor (Amesos solvers, several processes), D
+  // comes from the columns of Z = K^{-1} C^T, one solve each, kept as one
+  // dense block over the locally owned unknowns: a step is then one solve
+  // for w_free, the friction problem on Gamma_3 with v_free = C w_free, and
+  // w_n = w_free - Z eta, one gemv (DESIGN.md section 4).
+  template <int dim>
+  void ContactProblem<dim>::build_delassus_from_solves()
+  {
+    const unsigned int n_columns = contact_nodes.size() * (dim - 1);
+    delassus_columns.reinit(locally_owned_dofs.n_elements(), n_columns);
+    delassus_operator.reinit(n_columns, n_columns);
+    Vector<double> unit(n_columns);
+    VectorType     column(locally_owned_dofs, mpi_communicator);
+    for (unsigned int s = 0; s < n_columns; ++s)
+      {
+        unit[s] = 1.;
+        factorization->solve(column, friction_load(unit));
+        unit[s] = 0.;
+        constraints.distribute(column);
+        const Vector<double> v = tangential_velocities(column);
+        for (unsigned int r = 0; r < n_columns; ++r)
+          delassus_operator(r, s) = v[r];
+        unsigned int row = 0;
+        for (const double value : column)
+          delassus_columns(row++, s) = value;
+      }
+
+    // D is symmetric up to the round-off of the solves; the active set
+    // method relies on it (Cholesky on the stick set), so it is made exactly
+    // symmetric after checking that nothing more than round-off is removed.
+    double asymmetry = 0, largest = 0;
+    for (unsigned int r = 0; r < n_columns; ++r)
+      {
+        largest = std::max(largest, delassus_operator(r, r));
+        for (unsigned int s = 0; s < r; ++s)
+          {
+            const double mean =
+              (delassus_operator(r, s) + delassus_operator(s, r)) / 2;
+            asymmetry =
+              std::max(asymmetry, std::abs(delassus_operator(r, s) - mean));
+            delassus_operator(r, s) = delassus_operator(s, r) = mean;
+          }
+      }
+    AssertThrow(asymmetry <= 1e-8 * largest,
+                ExcMessage("The Delassus operator C K^{-1} C^T is not "
+                           "symmetric beyond round-off (largest deviation " +
+                           std::to_string(asymmetry / largest) +
+                           " of its largest entry): the solves with K are "
+                           "not accurate enough for the Delassus path; "
+                           "choose 'Solver/Contact solver = constraints'."));
+  }
+
+
+  // w -= Z eta on this process's unknowns: the velocity change that the
+  // friction forces eta cause (Z's columns are distributed already).
+  template <int dim>
+  void ContactProblem<dim>::subtract_delassus_columns(const Vector<double> &eta,
+                                                      VectorType &w) const
+  {
+    Vector<double> change(locally_owned_dofs.n_elements());
+    delassus_columns.vmult(change, eta);
+    auto value = w.begin();
+    for (const double c : change)
+      *value++ -= c;
+  }
+
+
   // @sect4{ContactProblem::do_time_step}
 
   // One step of (5.2)-(5.5): the free velocity from the factorised K, the
@@ -424,7 +524,7 @@ namespace Contact
 
     StepStatistics statistics;
     Timer          substitution;
-    if (use_delassus_operator)
+    if (use_delassus_operator && factorization->has_triangular_factor())
       {
         std::vector<Vector<double>> y;
         factorization->forward_substitution(y, {step_rhs});
@@ -457,7 +557,10 @@ namespace Contact
           {
             statistics =
               solve_friction_problem(tangential_velocities(velocity));
-            velocity_for_friction_force(friction_force, velocity);
+            if (use_delassus_operator)
+              subtract_delassus_columns(friction_force, velocity);
+            else
+              velocity_for_friction_force(friction_force, velocity);
           }
       }
 
@@ -720,7 +823,12 @@ namespace Contact
     const VectorType &) const;                                                 \
   template Vector<double> ContactProblem<dim>::sum_over_processes(             \
     const Vector<double> &) const;                                             \
-  template void           ContactProblem<dim>::build_delassus_operator();      \
+  template void ContactProblem<dim>::build_delassus_operator();                \
+  template void ContactProblem<dim>::build_delassus_from_factor();             \
+  template void ContactProblem<dim>::build_delassus_from_solves();             \
+  template bool ContactProblem<dim>::delassus_operator_pays() const;           \
+  template void ContactProblem<dim>::subtract_delassus_columns(                \
+    const Vector<double> &, VectorType &) const;                               \
   template void           ContactProblem<dim>::setup_contact_solver();         \
   template void           ContactProblem<dim>::initialise_contact_state();     \
   template void           ContactProblem<dim>::change_time_step(const double); \

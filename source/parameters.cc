@@ -560,15 +560,18 @@ namespace Contact
         Patterns::Selection("auto|Delassus|constraints"),
         "How the friction problem of a step is solved. Delassus: on the "
         "tangential unknowns of Gamma_3 alone, with the dense Delassus "
-        "operator D = C K^{-1} C^T = Y^T Y built once per run from "
-        "Y = L^{-1} P C^T (sparse; K = P^T L L^T P by CHOLMOD); a step then "
+        "operator D = C K^{-1} C^T built once per run: from "
+        "Y = L^{-1} P C^T (sparse; K = P^T L L^T P by CHOLMOD), a step then "
         "costs one forward and one backward substitution and dense work on "
-        "Gamma_3. constraints: the straightforward path; every Newton step "
-        "of the active set method solves on the whole body with the "
-        "sticking nodes held fixed as constraints, and refactorises; no D. "
-        "auto: Delassus with CHOLMOD while Gamma_3 has at most 2000 "
+        "Gamma_3; with the other linear solvers from Z = K^{-1} C^T (dense, "
+        "one solve per tangential unknown of Gamma_3), a step then costs one "
+        "solve and a product with Z. constraints: the straightforward path; "
+        "every Newton step of the active set method solves on the whole "
+        "body with the sticking nodes held fixed as constraints, and "
+        "refactorises; no D. auto: Delassus while Gamma_3 has at most 2000 "
         "tangential unknowns (the dense Newton steps cost O(n^3) in their "
-        "number n), constraints otherwise.");
+        "number n) and, without CHOLMOD, the linear solver is direct and Z "
+        "fits in 1 GB per process; constraints otherwise.");
     }
     prm.leave_subsection();
   }
@@ -609,15 +612,6 @@ namespace Contact
                              Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)) +
                            " processes choose auto or an Amesos solver "
                            "(Amesos_Mumps distributes the factor)."));
-    AssertThrow(contact_solver != "Delassus" || linear_solver == "CHOLMOD",
-                ExcMessage("'Solver/Contact solver = Delassus' works between "
-                           "the forward and backward substitutions with the "
-                           "triangular factor of K, which only CHOLMOD "
-                           "exposes: it needs 'Solver/Linear solver = "
-                           "CHOLMOD' (here " +
-                           linear_solver +
-                           "). 'constraints' and 'auto' work with every "
-                           "linear solver."));
   }
 
 
