@@ -13,13 +13,12 @@ wall time, time per step, the time spent building D; then the ratio of the
 two paths' times per step and wall times. Everything is measured in this
 run; the table goes to --out as Markdown.
 """
-import argparse
 import os
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run import ROOT, build, mpi_launcher, number, run, table_start  # noqa: E402
+from run import ROOT, mpi_launcher, number, run, start  # noqa: E402
 
 SCENES = [
     ("paper's scene, h = k = 1/64", "barboteu2015.prm",
@@ -51,14 +50,10 @@ def run_path(contact, scene, sets, processes, path, directory):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--out", default=os.path.join(ROOT, "bench", "paths.md"))
-    arguments = parser.parse_args()
-    contact = build()
-
-    lines = table_start(["scene", "processes", "solver", "path", "unknowns",
-                         "free nodes on Gamma_3", "steps", "wall [s]", "per step [ms]",
-                         "building D [s]"])
+    contact, out, lines = start("paths.md", [
+        "scene", "processes", "solver", "path",
+        "unknowns", "free nodes on Gamma_3", "steps", "wall [s]",
+        "per step [ms]", "building D [s]"])
     ratios = []
     with tempfile.TemporaryDirectory() as tmp:
         for name, scene, sets in SCENES:
@@ -81,8 +76,8 @@ def main():
                     f"times as long in all as the Delassus path.")
     lines += [""] + ratios
     print("\n".join([""] + ratios))
-    with open(arguments.out, "w") as out:
-        out.write("\n".join(lines) + "\n")
+    with open(out, "w") as file:
+        file.write("\n".join(lines) + "\n")
 
 
 if __name__ == "__main__":

@@ -87,6 +87,16 @@ def mpi_launcher(processes):
     return ["mpirun", "-np", str(processes)]
 
 
+def start(results, columns):
+    """For a script whose only option is --out (default bench/<results>):
+    builds the program and starts the table. Returns the program, the
+    output file and the table's first lines."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--out", default=os.path.join(ROOT, "bench", results))
+    out = parser.parse_args().out
+    return build(), out, table_start(columns)
+
+
 def table_start(columns):
     """The machine, then the header of a Markdown table with these columns;
     printed at once and returned as the first lines of the results."""

@@ -12,13 +12,12 @@ Printed for every run: unknowns, steps, wall time, time per step, linear
 1 -> 2 process speed-up of the time steps and of the whole run. Everything
 is measured in this run; the table goes to --out as Markdown.
 """
-import argparse
 import os
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run import ROOT, build, mpi_launcher, number, run, table_start  # noqa: E402
+from run import ROOT, mpi_launcher, number, run, start  # noqa: E402
 
 
 def run_scene(contact, processes, sets, directory):
@@ -38,14 +37,10 @@ def run_scene(contact, processes, sets, directory):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--out", default=os.path.join(ROOT, "bench", "scaling.md"))
-    arguments = parser.parse_args()
-    contact = build()
-
-    lines = table_start(["scene", "processes", "unknowns", "steps", "wall [s]",
-                         "time steps [s]", "per step [s]", "CG iterations/step",
-                         "peak memory/process [MB]"])
+    contact, out, lines = start("scaling.md", [
+        "scene", "processes", "unknowns", "steps",
+        "wall [s]", "time steps [s]", "per step [s]", "CG iterations/step",
+        "peak memory/process [MB]"])
     coarse = ["Geometry/Cell size=0.017857142857142856",
               "Time/Time step=0.017857142857142856",
               "Time/End time=0.17857142857142858"]
@@ -76,8 +71,8 @@ def main():
     ]
     lines += summary
     print("\n".join(summary))
-    with open(arguments.out, "w") as out:
-        out.write("\n".join(lines) + "\n")
+    with open(out, "w") as file:
+        file.write("\n".join(lines) + "\n")
 
 
 if __name__ == "__main__":
