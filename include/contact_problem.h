@@ -158,6 +158,8 @@ namespace Contact
   /** What a whole run gives a convergence study. */
   struct RunSummary
   {
+    /** 'Geometry/Cell size' of a box; the largest cell diameter of a mesh
+     *  read from a file. */
     double                  cell_size = 0;
     double                  time_step = 0;
     unsigned int            n_steps   = 0;

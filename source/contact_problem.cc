@@ -232,7 +232,15 @@ namespace Contact
     print_summary();
 
     RunSummary summary;
-    summary.cell_size  = parameters.geometry.cell_size;
+    summary.cell_size = parameters.geometry.cell_size;
+    if (!parameters.geometry.mesh_file.empty())
+      {
+        double largest = 0;
+        for (const auto &cell : triangulation->active_cell_iterators())
+          if (cell->is_locally_owned())
+            largest = std::max(largest, cell->diameter());
+        summary.cell_size = Utilities::MPI::max(largest, mpi_communicator);
+      }
     summary.time_step  = time_step;
     summary.n_steps    = n_time_steps;
     summary.n_dofs     = dof_handler.n_dofs();

@@ -663,8 +663,10 @@ namespace Contact
         Patterns::Integer(0, 12),
         "0: one run. n > 0: n + 1 runs, starting from Geometry/Cell size and "
         "Time/Time step and halving what 'Refine' says from one run to the "
-        "next; a table of the errors (with a manufactured solution) and "
-        "their rates is printed at the end.");
+        "next (a mesh read from a Mesh file gets one more global refinement "
+        "per level instead, and h is its largest cell diameter); a table of "
+        "the errors (against a manufactured solution, or else against the "
+        "finest level) and their rates is printed at the end.");
       prm.declare_entry("Refine",
                         "space and time",
                         Patterns::Selection("space and time|space|time"),

@@ -253,7 +253,15 @@ namespace Contact
       k << std::setprecision(17)
         << base.time.end_time / n_steps *
              (study.refine == Refine::space ? 1. : factor);
+      // A mesh read from a file is refined globally instead of by the
+      // cell size of a box.
+      const bool        mesh_file = !base.geometry.mesh_file.empty();
+      const std::string refinements =
+        std::to_string(base.geometry.mesh_refinements +
+                       (study.refine == Refine::time ? 0 : level));
       apply_override(prm, "Geometry/Cell size", h.str());
+      if (mesh_file)
+        apply_override(prm, "Geometry/Mesh refinements", refinements);
       apply_override(prm, "Time/Time step", k.str());
       apply_override(prm,
                      "Output/Output directory",
@@ -261,7 +269,9 @@ namespace Contact
       apply_override(prm, "Convergence study/Levels", "0");
       Parameters parameters;
       parameters.parse_parameters(prm);
-      console() << "Convergence study, level " << level << ": h = " << h.str()
+      console() << "Convergence study, level " << level << ": "
+                << (mesh_file ? "mesh refinements = " + refinements :
+                                "h = " + h.str())
                 << ", k = " << k.str() << std::endl;
       return parameters;
     }
