@@ -417,7 +417,10 @@ namespace Contact
                 << (use_delassus_operator ?
                       "Delassus operator on the " +
                         std::to_string(friction_force.size()) +
-                        " tangential unknowns of Gamma_3" :
+                        " tangential unknowns of Gamma_3, from " +
+                        (factorization->has_triangular_factor() ?
+                           "the triangular factor of K" :
+                           "Z = K^{-1} C^T") :
                       std::string("active set as constraints, one "
                                   "solve with K per Newton step"))
                 << std::endl;
