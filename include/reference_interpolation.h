@@ -27,39 +27,39 @@ namespace Contact
   class ReferenceInterpolation
   {
   public:
-    /** The nodes of the reference that this process owns. */
+    /**
+     * The nodes of the reference: this process's, with their unknowns, and
+     * the coordinates of every process's. Collective; once per study.
+     */
     explicit ReferenceInterpolation(const ContactProblem<dim> &reference);
 
-    /**
-     * The interpolant of `field`, a field of `level`. Collective. The nodes
-     * are located in the level's mesh at the first call, so one object
-     * serves one level (whose mesh exists once its run has started).
-     */
-    VectorType operator()(const ContactProblem<dim> &level,
-                          const VectorType          &field);
-
-  private:
-    void locate_nodes(const ContactProblem<dim> &level);
-
-    const IndexSet owned_dofs;
-    // This process's nodes of the reference, with their unknowns (one per
-    // component), and where they start among the nodes of all processes.
-    std::vector<Point<dim>>                               node_points;
-    std::vector<std::array<types::global_dof_index, dim>> node_dofs;
-    unsigned int                                          first_node = 0;
-
-    // The nodes of all processes that lie in this process's cells of the
-    // level's mesh: their number among all nodes, the cell and the point
-    // in the cell's unit coordinates.
+    /** A node of the reference in one of this process's cells of a level's
+     *  mesh: its number among all nodes, the cell and the point in the
+     *  cell's unit coordinates. */
     struct NodeInCell
     {
       unsigned int                                   node;
       typename DoFHandler<dim>::active_cell_iterator cell;
       Point<dim>                                     unit_point;
     };
-    std::vector<NodeInCell> nodes_in_own_cells;
-    unsigned int            n_all_nodes = 0;
-    bool                    located     = false;
+
+    /** The reference's nodes in this process's cells of `level`'s mesh;
+     *  once per level (the mesh exists once the level's run has started). */
+    std::vector<NodeInCell> locate(const ContactProblem<dim> &level) const;
+
+    /** The interpolant of `field`, a field of `level` whose nodes
+     *  `locate()` found. Collective. */
+    VectorType operator()(const std::vector<NodeInCell> &located,
+                          const ContactProblem<dim>     &level,
+                          const VectorType              &field) const;
+
+  private:
+    const IndexSet owned_dofs;
+    // This process's nodes (their unknowns, one per component), where they
+    // start among the nodes of all processes, and all nodes' coordinates.
+    std::vector<std::array<types::global_dof_index, dim>> node_dofs;
+    unsigned int                                          first_node = 0;
+    std::vector<Point<dim>>                               all_nodes;
   };
 } // namespace Contact
 

@@ -12,6 +12,8 @@
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/fe/mapping_q.h>
 
+#include <deal.II/grid/grid_tools.h>
+
 #include <contact_problem.h>
 
 #include <algorithm>
@@ -232,15 +234,10 @@ namespace Contact
     print_summary();
 
     RunSummary summary;
-    summary.cell_size = parameters.geometry.cell_size;
-    if (!parameters.geometry.mesh_file.empty())
-      {
-        double largest = 0;
-        for (const auto &cell : triangulation->active_cell_iterators())
-          if (cell->is_locally_owned())
-            largest = std::max(largest, cell->diameter());
-        summary.cell_size = Utilities::MPI::max(largest, mpi_communicator);
-      }
+    summary.cell_size =
+      parameters.geometry.mesh_file.empty() ?
+        parameters.geometry.cell_size :
+        GridTools::maximal_cell_diameter(*triangulation, *mapping);
     summary.time_step  = time_step;
     summary.n_steps    = n_time_steps;
     summary.n_dofs     = dof_handler.n_dofs();

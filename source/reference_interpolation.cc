@@ -45,6 +45,9 @@ namespace Contact
 
   // A node is a support point of the first component's shape functions;
   // the unknowns of the other components at it follow from the element.
+  // Every process gets the coordinates of all nodes (those of a reference
+  // with 10^6 nodes take 24 MB in 3D, which convergence studies can
+  // afford).
   template <int dim>
   ReferenceInterpolation<dim>::ReferenceInterpolation(
     const ContactProblem<dim> &reference)
@@ -58,6 +61,7 @@ namespace Contact
                             update_quadrature_points);
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
     std::vector<bool>                    seen(owned_dofs.n_elements(), false);
+    std::vector<Point<dim>>              node_points;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -77,28 +81,9 @@ namespace Contact
               node_points.push_back(fe_values.quadrature_point(i));
             }
         }
-  }
 
-
-  // @sect4{ReferenceInterpolation::locate_nodes}
-
-  // Every process gets the nodes of all and finds those in its own cells:
-  // candidates from an R-tree of the cells' bounding boxes, then the
-  // inverse of the cell's mapping. (deal.II 9.4's
-  // Utilities::MPI::RemotePointEvaluation, which would send each node only
-  // to the processes whose part of the mesh may hold it, is wrong on
-  // simplex meshes: it misses some nodes on several processes, and the
-  // V-norm of a P1 field interpolated into a nested finer space changed by
-  // 0.5 %, measured on one process too. Here it is kept to all digits.)
-  // The coordinates of a reference with 10^6 nodes take 24 MB (3D) on
-  // every process, which convergence studies can afford.
-  template <int dim>
-  void
-  ReferenceInterpolation<dim>::locate_nodes(const ContactProblem<dim> &level)
-  {
     const std::vector<std::vector<Point<dim>>> nodes_per_process =
       Utilities::MPI::all_gather(MPI_COMM_WORLD, node_points);
-    std::vector<Point<dim>> all_nodes;
     for (unsigned int p = 0; p < nodes_per_process.size(); ++p)
       {
         if (p == Utilities::MPI::this_mpi_process(MPI_COMM_WORLD))
@@ -107,8 +92,22 @@ namespace Contact
                          nodes_per_process[p].begin(),
                          nodes_per_process[p].end());
       }
-    n_all_nodes = all_nodes.size();
+  }
 
+
+  // @sect4{ReferenceInterpolation::locate}
+
+  // Candidates from an R-tree of the cells' bounding boxes, then the inverse
+  // of the cell's mapping. (deal.II 9.4's
+  // Utilities::MPI::RemotePointEvaluation, which would send each node only
+  // to the processes whose part of the mesh may hold it, is wrong on
+  // simplex meshes: it misses some nodes on several processes, and the
+  // V-norm of a P1 field interpolated into a nested finer space changed by
+  // 0.5 %, measured on one process too. Here it is kept to all digits.)
+  template <int dim>
+  std::vector<typename ReferenceInterpolation<dim>::NodeInCell>
+  ReferenceInterpolation<dim>::locate(const ContactProblem<dim> &level) const
+  {
     using Cell = typename DoFHandler<dim>::active_cell_iterator;
     std::vector<std::pair<BoundingBox<dim>, Cell>> boxes;
     for (const auto &cell : level.get_dof_handler().active_cell_iterators())
@@ -120,8 +119,8 @@ namespace Contact
         }
     const auto tree = pack_rtree(boxes);
 
-    nodes_in_own_cells.clear();
-    for (unsigned int m = 0; m < n_all_nodes; ++m)
+    std::vector<NodeInCell> located;
+    for (unsigned int m = 0; m < all_nodes.size(); ++m)
       for (const auto &[box, cell] :
            tree | boost::geometry::index::adaptors::queried(
                     boost::geometry::index::intersects(all_nodes[m])))
@@ -132,13 +131,13 @@ namespace Contact
                                                               all_nodes[m]);
             if (cell->reference_cell().contains_point(unit, 1e-10))
               {
-                nodes_in_own_cells.push_back({m, cell, unit});
+                located.push_back({m, cell, unit});
                 break;
               }
           }
         catch (const typename Mapping<dim>::ExcTransformationFailed &)
           {}
-    located = true;
+    return located;
   }
 
 
@@ -149,15 +148,14 @@ namespace Contact
   // give every node's value (a node on the boundary between two processes'
   // cells is found by both; the field is continuous, so they agree).
   template <int dim>
-  VectorType
-  ReferenceInterpolation<dim>::operator()(const ContactProblem<dim> &level,
-                                          const VectorType          &field)
+  VectorType ReferenceInterpolation<dim>::operator()(
+    const std::vector<NodeInCell> &located,
+    const ContactProblem<dim>     &level,
+    const VectorType              &field) const
   {
-    if (!located)
-      locate_nodes(level);
     const VectorType    ghosted_field = level.ghosted(field);
-    std::vector<double> sums(n_all_nodes * (dim + 1), 0.);
-    for (const NodeInCell &node : nodes_in_own_cells)
+    std::vector<double> sums(all_nodes.size() * (dim + 1), 0.);
+    for (const NodeInCell &node : located)
       {
         const Tensor<1, dim> value =
           value_in_cell(node.cell, node.unit_point, ghosted_field);

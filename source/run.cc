@@ -19,6 +19,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -299,22 +300,26 @@ namespace Contact
 
       // Collects the displacement at the common times (every 2^l-th step of
       // level l when k is refined), interpolated onto the reference mesh.
-      std::unique_ptr<ContactProblem<dim>> reference;
+      // The reference's nodes are gathered at its first step (it runs
+      // first), and located in a level's mesh at the level's first step.
+      std::unique_ptr<ContactProblem<dim>>         reference;
+      std::unique_ptr<ReferenceInterpolation<dim>> interpolate;
+      using NodesInCells =
+        std::vector<typename ReferenceInterpolation<dim>::NodeInCell>;
       const auto collect = [&](const unsigned int level) {
         const unsigned int stride =
           (study.refine == Refine::space ? 1 : 1u << level);
-        return [&,
-                stride,
-                level,
-                interpolate = std::shared_ptr<ReferenceInterpolation<dim>>()](
+        return [&, stride, level, located = std::optional<NodesInCells>()](
                  const ContactProblem<dim> &problem) mutable {
           if (problem.get_step_number() % stride != 0)
             return;
           if (!interpolate)
             interpolate =
-              std::make_shared<ReferenceInterpolation<dim>>(*reference);
+              std::make_unique<ReferenceInterpolation<dim>>(*reference);
+          if (!located)
+            located = interpolate->locate(problem);
           results[level].displacements.push_back(
-            (*interpolate)(problem, problem.get_displacement()));
+            (*interpolate)(*located, problem, problem.get_displacement()));
         };
       };
 
