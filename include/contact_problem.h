@@ -108,10 +108,32 @@ namespace Contact
     unsigned int rejected_accelerations     = 0;
     unsigned int cycles_cured               = 0;
     unsigned int step_cuts                  = 0;
-    unsigned int n_stick                    = 0;
-    unsigned int n_slip                     = 0;
-    double       max_slip_rate              = 0;
-    double       friction_force             = 0;
+    // The Newton method on the full law ('Solver/Friction method'): its
+    // iterations, and 1 where it failed and the convexification took over.
+    unsigned int newton_iterations = 0;
+    unsigned int newton_fallbacks  = 0;
+    // Solves with K or a variant of it (a forward and a backward
+    // substitution with the factor count as one), and CG iterations.
+    unsigned int       solves_with_K  = 0;
+    unsigned long long cg_iterations  = 0;
+    unsigned int       n_stick        = 0;
+    unsigned int       n_slip         = 0;
+    double             max_slip_rate  = 0;
+    double             friction_force = 0;
+
+    /** Add the iteration counts of another step (or part of one). */
+    void add_counts(const StepStatistics &other)
+    {
+      convexification_iterations += other.convexification_iterations;
+      active_set_iterations += other.active_set_iterations;
+      rejected_accelerations += other.rejected_accelerations;
+      cycles_cured += other.cycles_cured;
+      step_cuts += other.step_cuts;
+      newton_iterations += other.newton_iterations;
+      newton_fallbacks += other.newton_fallbacks;
+      solves_with_K += other.solves_with_K;
+      cg_iterations += other.cg_iterations;
+    }
   };
 
   /**
@@ -244,12 +266,19 @@ namespace Contact
                                              VectorType           &w) const;
     StepStatistics do_time_step();
     StepStatistics
-    solve_friction_problem(const Vector<double> &free_slip_velocity);
+         solve_friction_problem(const Vector<double> &free_slip_velocity);
+    bool solve_by_newton(const Vector<double> &free_slip_velocity,
+                         StepStatistics       &statistics);
+    void solve_by_convexification(const Vector<double> &free_slip_velocity,
+                                  StepStatistics       &statistics);
+    std::pair<TrescaVelocity, TrescaNewtonStep>
+                 friction_operators(const Vector<double> &free_slip_velocity);
     TrescaResult solve_tresca_problem(const Vector<double> &free_slip_velocity,
                                       const Vector<double> &bound,
                                       Vector<double>       &eta,
                                       Vector<double>       &v,
                                       std::vector<NodeState> &state);
+    void         solve_with_K(VectorType &x, const VectorType &b);
     VectorType   friction_load(const Vector<double> &eta) const;
     void         add_nodal_force(const ContactNode<dim> &node,
                                  const Tensor<1, dim>   &force,
@@ -266,7 +295,6 @@ namespace Contact
     void velocity_for_friction_force(const Vector<double> &eta, VectorType &w);
     void newton_step_with_constraints(
       const std::vector<NodeLinearisation> &linearisation,
-      const Vector<double>                 &bound,
       Vector<double>                       &eta,
       Vector<double>                       &v);
 
@@ -392,6 +420,11 @@ namespace Contact
     // A step's friction problem is convex while S (a - b) alpha is below
     // this (largest_weighted_delassus_eigenvalue).
     double convexity_limit = std::numeric_limits<double>::infinity();
+    // Solves with K (and its variants) and CG iterations of the step so
+    // far; the constraints path starts every Newton step's CG from the
+    // velocity of the last one.
+    unsigned int solves_in_step = 0;
+    VectorType   last_newton_velocity;
 
     EnergyBalance energy;
 

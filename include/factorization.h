@@ -1,6 +1,6 @@
 /**
  * The factorisation of K = (1/k) M + A_h + k B_h, computed once per run,
- * and its forward/back substitutions (DESIGN.md section 4). Two
+ * and its forward/back substitutions (doc/algorithm.md). Two
  * implementations behind one interface, chosen by 'Solver/Linear solver':
  *
  * - CHOLMOD (SuiteSparse): supernodal sparse Cholesky with BLAS-3 kernels,
@@ -36,7 +36,8 @@ namespace Contact
   public:
     virtual ~Factorization() = default;
 
-    /** x = K^{-1} b. */
+    /** x = K^{-1} b; an iterative solver starts from x where x has the
+     *  layout of b. */
     virtual void solve(TrilinosWrappers::MPI::Vector       &x,
                        const TrilinosWrappers::MPI::Vector &b) = 0;
 

@@ -34,6 +34,9 @@ namespace Contact
     /** Slip threshold S mu(s) [N/m^(dim-1)] of (3.6). */
     double bound(const double slip_rate) const;
 
+    /** d/ds S mu(s): the tangent of the bound in the Newton method. */
+    double bound_derivative(const double slip_rate) const;
+
     /** j(v) = S int_0^|v| mu(r) dr of (3.8), for the step's energy. */
     double potential(const double slip_velocity) const;
 
@@ -88,7 +91,7 @@ namespace Contact
    * The Tresca problem with given nodal bounds g_p >= 0 on the tangential
    * unknowns of Gamma_3, m = dim - 1 per node (node-major: unknown p m + i
    * is component i of node p), in terms of the Delassus operator
-   * D = C K^{-1} C^T (DESIGN.md section 4):
+   * D = C K^{-1} C^T (doc/algorithm.md):
    *
    *   v = v_free - D eta,
    *   |eta_p| <= g_p if v_p = 0,   eta_p = g_p v_p / |v_p| otherwise,
@@ -109,8 +112,8 @@ namespace Contact
    * exact. For m = 2 the slip directions converge superlinearly; the method
    * stops when the sets repeat and eta - P(z) is below round-off. If a set
    * seen before (not the last one) comes back, the method cycles; c is then
-   * halved, which is what cures the cycling at slip onset (DESIGN.md
-   * section 3).
+   * halved, which is what cures the cycling at slip onset
+   * (doc/algorithm.md).
    */
   struct TrescaResult
   {
@@ -137,6 +140,14 @@ namespace Contact
     NodeState           state = NodeState::stick;
     std::vector<double> direction;
     double              beta = 0;
+    /** g_p at the linearisation point. */
+    double bound = 0;
+    /** On a slip node the force along zhat is force + slope (zhat . v_p):
+     *  force = g_p and slope = 0 for the Tresca problem (frozen bound);
+     *  the tangent of g_p(|v_p|) for the full law, slope = g_p'(s) <= 0
+     *  and force = g_p(s) - s g_p'(s) at the slip rate s of the iterate. */
+    double force = 0;
+    double slope = 0;
   };
 
   /** The orthonormal basis of a node's tangent plane in which the Newton
@@ -164,6 +175,89 @@ namespace Contact
                             Vector<double>         &eta,
                             Vector<double>         &v,
                             std::vector<NodeState> &state);
+
+  /**
+   * The nodal friction law with the coefficient not frozen: node p's bound
+   * g_p(s) = m_p S mu(s) at slip rate s, its derivative, and the energy of
+   * a step on Gamma_3 (the discrete counterpart of (3.8)),
+   *   E(v) = 1/2 (v - v_free)^T D^{-1} (v - v_free) + sum_p m_p j(|v_p|),
+   * evaluated as 1/2 eta . (v_free - v) + sum_p m_p j(|v_p|) for
+   * v = v_free - D eta.
+   */
+  struct NodalLaw
+  {
+    const FrictionLaw    &law;
+    const Vector<double> &weights;
+
+    double bound(const unsigned int p, const double s) const;
+    double slope(const unsigned int p, const double s) const;
+    /** E, and in scale the sum of its terms' sizes (for round-off). */
+    double energy(const Vector<double> &v_free,
+                  const Vector<double> &eta,
+                  const Vector<double> &v,
+                  double               &scale) const;
+  };
+
+  /** What the Newton method on the full law did. */
+  struct FrictionNewtonResult
+  {
+    unsigned int iterations = 0;
+    /** Newton steps shortened by the line search. */
+    unsigned int damped_steps = 0;
+    /** Convexification steps (a Tresca problem with the bounds of the
+     *  current slip rates), taken where the Newton step did not lower E, and
+     *  the active set iterations they took. */
+    unsigned int convexification_steps = 0;
+    unsigned int active_set_iterations = 0;
+    bool         converged             = false;
+  };
+
+  /**
+   * The friction problem of a step with the full nonmonotone law (5.3),
+   *
+   *   v = v_free - D eta,
+   *   |eta_p| <= g_p(0) if v_p = 0,  eta_p = g_p(|v_p|) v_p / |v_p| else,
+   *
+   * by a semismooth Newton method on the complementarity function
+   * F_p = eta_p - P_{B(g_p(|v_p|))}(eta_p + c_p v_p): the linearisation of
+   * solve_tresca() plus, on slip nodes, the derivative of the bound,
+   * g_p' (zhat . dv), so that slip rates and forces are found together
+   * instead of by a fixed point around Tresca problems. The Jacobian stays
+   * symmetric; it is indefinite where the step problem is not convex
+   * (g_p' < 0 is the weakening). The solutions of the law are the
+   * stationary points of the step's energy E (NodalLaw), and the
+   * globalisation keeps the iterates going down E: a Newton step that does
+   * not lower E is halved twice, and if that fails a convexification step
+   * is taken instead (the Tresca problem with the bounds of the current slip
+   * rates), which lowers E because j is concave along |v| (a majorisation).
+   * So the method cannot end on a maximum or saddle of E, and where the step
+   * problem has several solutions it ends on a local minimum reached by
+   * descent from the previous step's state: (eta, v) on entry are the
+   * previous step's forces and slip velocities, and the first Newton step
+   * is taken from their linearisation (the previous step's active set),
+   * without a solve to make v consistent with eta. It stops when the sets
+   * repeat and max |F_p| <= 1e-12 max_p g_p(0).
+   */
+  FrictionNewtonResult
+  solve_friction_newton(const TrescaVelocity   &velocity,
+                        const TrescaNewtonStep &newton_step,
+                        const unsigned int      n_components,
+                        const NodalLaw         &law,
+                        const Vector<double>   &v_free,
+                        const Vector<double>   &c,
+                        const unsigned int      max_iterations,
+                        const unsigned int      max_active_set_iterations,
+                        Vector<double>         &eta,
+                        Vector<double>         &v,
+                        std::vector<NodeState> &state);
+
+  /** The Newton step on a dense Delassus operator, for solve_tresca() and
+   *  solve_friction_newton(). */
+  void delassus_newton_step(const FullMatrix<double>             &D,
+                            const std::vector<NodeLinearisation> &linearisation,
+                            const Vector<double>                 &v_free,
+                            Vector<double>                       &eta,
+                            Vector<double>                       &v);
 
   TrescaResult solve_tresca(const FullMatrix<double> &D,
                             const unsigned int        n_components,

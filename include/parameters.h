@@ -129,6 +129,9 @@ namespace Contact
     unsigned int step_cuts;
     /** 'auto', 'Delassus' or 'constraints'. */
     std::string contact_solver;
+    /** 'Newton' or 'convexification'. */
+    std::string  friction_method;
+    unsigned int max_newton_iterations;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);

@@ -25,7 +25,7 @@ namespace Contact
     VectorType rhs(step_rhs);
     rhs.add(-1., friction_load(eta));
     w.reinit(locally_owned_dofs, mpi_communicator);
-    factorization->solve(w, rhs);
+    solve_with_K(w, rhs);
     constraints.distribute(w);
   }
 
@@ -75,10 +75,12 @@ namespace Contact
   // - a sticking node has v_p = 0; with w.n = 0 from the bilateral
   //   constraint that is w_p = 0, imposed by zeroing the rows and columns
   //   of the node's free dofs (keeping the diagonal, so K stays SPD);
-  // - a slipping node carries the fixed force g_p zhat_p as a load, and in
-  //   3D the condition v.t = beta eta.t along the other tangent
-  //   t = zhat turned by 90 degrees, i.e. eta.t = (v.t) / beta: a spring
-  //   (1 / beta) t t^T added to K at the node.
+  // - a slipping node carries the force (force_p + slope_p zhat.v) zhat
+  //   (force_p = g_p, slope_p = 0 for the Tresca problem; the tangent of
+  //   g_p(|v_p|) for the full law): a load force_p zhat and a spring
+  //   slope_p zhat zhat^T added to K at the node; in 3D also the condition
+  //   v.t = beta eta.t along the other tangent t = zhat turned by 90
+  //   degrees, i.e. eta.t = (v.t) / beta: a spring (1 / beta) t t^T.
   // This is the system (D + beta)_FF eta_F = ... of the Delassus path
   // before the body's unknowns are eliminated, so both give the same
   // iterates. The friction force of a sticking node is then its reaction,
@@ -88,7 +90,6 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::newton_step_with_constraints(
     const std::vector<NodeLinearisation> &linearisation,
-    const Vector<double>                 &bound,
     Vector<double>                       &eta,
     Vector<double>                       &v)
   {
@@ -109,21 +110,28 @@ namespace Contact
               stick_dof[dof] = true;
             continue;
           }
-        const FullMatrix<double> basis = local_basis(linearisation[p]);
+        const NodeLinearisation &slip  = linearisation[p];
+        const FullMatrix<double> basis = local_basis(slip);
         for (unsigned int i = 0; i < m; ++i)
-          slip_force[p * m + i] = bound[p] * basis(i, 0);
-        if (m == 2 && bound[p] > 0 && node.locally_owned)
-          {
-            Tensor<1, dim> t;
-            for (unsigned int i = 0; i < m; ++i)
-              t += basis(i, 1) * node.tangents[i];
-            FullMatrix<double> spring(dim, dim);
-            for (unsigned int a = 0; a < dim; ++a)
-              for (unsigned int b = 0; b < dim; ++b)
-                spring(a, b) = t[a] * t[b] / linearisation[p].beta;
-            std::copy(node.dofs.begin(), node.dofs.end(), node_dofs.begin());
-            constraints.distribute_local_to_global(spring, node_dofs, matrix);
-          }
+          slip_force[p * m + i] = slip.force * basis(i, 0);
+        if (slip.bound == 0. || !node.locally_owned)
+          continue;
+        // The springs: slope zhat zhat^T (the full law; negative for a
+        // weakening law) and (1 / beta) t t^T along the other tangent.
+        std::array<Tensor<1, dim>, dim - 1> directions;
+        for (unsigned int j = 0; j < m; ++j)
+          for (unsigned int i = 0; i < m; ++i)
+            directions[j] += basis(i, j) * node.tangents[i];
+        FullMatrix<double> spring(dim, dim);
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            {
+              spring(a, b) = slip.slope * directions[0][a] * directions[0][b];
+              if (m == 2)
+                spring(a, b) += directions[1][a] * directions[1][b] / slip.beta;
+            }
+        std::copy(node.dofs.begin(), node.dofs.end(), node_dofs.begin());
+        constraints.distribute_local_to_global(spring, node_dofs, matrix);
       }
     matrix.compress(VectorOperation::add);
 
@@ -131,7 +139,11 @@ namespace Contact
     rhs.add(-1., friction_load(slip_force));
     zero_rows_and_columns(stick_dof, matrix, rhs);
 
-    VectorType w(locally_owned_dofs, mpi_communicator);
+    // CG starts from the velocity of the last Newton step.
+    if (last_newton_velocity.size() != rhs.size())
+      last_newton_velocity.reinit(locally_owned_dofs, mpi_communicator);
+    VectorType &w = last_newton_velocity;
+    ++solves_in_step;
     factorization->for_variant(matrix)->solve(w, rhs);
     constraints.distribute(w);
     v = tangential_velocities(w);
@@ -148,17 +160,21 @@ namespace Contact
     for (unsigned int p = 0; p < n; ++p)
       if (linearisation[p].state == NodeState::slip)
         {
-          const FullMatrix<double> basis = local_basis(linearisation[p]);
+          const NodeLinearisation &slip  = linearisation[p];
+          const FullMatrix<double> basis = local_basis(slip);
+          // v in the local basis (zhat, t).
+          std::array<double, dim - 1> local_v{};
+          for (unsigned int j = 0; j < m; ++j)
+            for (unsigned int i = 0; i < m; ++i)
+              local_v[j] += basis(i, j) * v[p * m + i];
           for (unsigned int i = 0; i < m; ++i)
             {
               eta[p * m + i] = slip_force[p * m + i];
-              if (m == 2 && bound[p] > 0)
-                {
-                  double v_t = 0;
-                  for (unsigned int j = 0; j < m; ++j)
-                    v_t += basis(j, 1) * v[p * m + j];
-                  eta[p * m + i] += basis(i, 1) * v_t / linearisation[p].beta;
-                }
+              if (slip.bound == 0.)
+                continue;
+              eta[p * m + i] += basis(i, 0) * slip.slope * local_v[0];
+              if (m == 2)
+                eta[p * m + i] += basis(i, 1) * local_v[1] / slip.beta;
             }
         }
       else
@@ -172,7 +188,6 @@ namespace Contact
     const Vector<double> &, VectorType &);                         \
   template void ContactProblem<dim>::newton_step_with_constraints( \
     const std::vector<NodeLinearisation> &,                        \
-    const Vector<double> &,                                        \
     Vector<double> &,                                              \
     Vector<double> &);
 

@@ -29,7 +29,7 @@ namespace Contact
 {
   namespace
   {
-    const std::string checkpoint_format = "contact checkpoint 2";
+    const std::string checkpoint_format = "contact checkpoint 3";
 
     template <class Archive>
     void serialize_vector(Archive &archive, VectorType &vector)
@@ -67,9 +67,12 @@ namespace Contact
     archive &energy.kinetic &energy.elastic &energy.initial &energy
       .external_work &energy.viscous_dissipation &energy
       .friction_dissipation                      &energy.numerical_dissipation;
-    archive &totals.convexification_iterations &totals
-      .active_set_iterations                   &totals.rejected_accelerations;
-    archive                                    &max_relative_energy_residual;
+    archive &totals.convexification_iterations &totals.active_set_iterations;
+    archive &totals.rejected_accelerations &totals.cycles_cured;
+    archive &totals.step_cuts &totals.newton_iterations;
+    archive &totals.newton_fallbacks &totals.solves_with_K;
+    archive                          &totals.cg_iterations;
+    archive                          &max_relative_energy_residual;
     for (ErrorNorms *errors : {&current_errors, &max_errors})
       archive & errors->displacement_V & errors->velocity_L2 &
         errors->displacement_L2;

@@ -214,10 +214,7 @@ namespace Contact
                        current_errors.displacement_L2);
           }
 
-        totals.convexification_iterations +=
-          statistics.convexification_iterations;
-        totals.active_set_iterations += statistics.active_set_iterations;
-        totals.rejected_accelerations += statistics.rejected_accelerations;
+        totals.add_counts(statistics);
 
         write_time_series_row(statistics);
         if (vtu_interval > 0 &&

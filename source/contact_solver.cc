@@ -254,11 +254,8 @@ namespace Contact
     StepStatistics second = advance(cuts_left - 1);
     change_time_step(k);
 
-    second.convexification_iterations += first.convexification_iterations;
-    second.active_set_iterations += first.active_set_iterations;
-    second.rejected_accelerations += first.rejected_accelerations;
-    second.cycles_cured += first.cycles_cured;
-    second.step_cuts += first.step_cuts + 1;
+    second.add_counts(first);
+    ++second.step_cuts;
     return second;
   }
 
@@ -351,7 +348,7 @@ namespace Contact
   //   step_rhs = F_n + (1/k) M w_{n-1} - B u_{n-1},
   // and on Gamma_3 v = C w_n = v_free - D eta with the Delassus operator
   // D = C K^{-1} C^T, symmetric positive definite: the nonsmooth part of
-  // every step lives on the few unknowns of Gamma_3 (DESIGN.md section 4).
+  // every step lives on the few unknowns of Gamma_3 (doc/algorithm.md).
   template <int dim>
   void ContactProblem<dim>::build_delassus_operator()
   {
@@ -438,7 +435,7 @@ namespace Contact
   // comes from the columns of Z = K^{-1} C^T, one solve each, kept as one
   // dense block over the locally owned unknowns: a step is then one solve
   // for w_free, the friction problem on Gamma_3 with v_free = C w_free, and
-  // w_n = w_free - Z eta, one gemv (DESIGN.md section 4).
+  // w_n = w_free - Z eta, one gemv (doc/algorithm.md).
   template <int dim>
   void ContactProblem<dim>::build_delassus_from_solves()
   {
@@ -524,8 +521,11 @@ namespace Contact
 
     StepStatistics statistics;
     Timer          substitution;
+    solves_in_step                                = 0;
+    const unsigned long long cg_iterations_before = factorization->iterations();
     if (use_delassus_operator && factorization->has_triangular_factor())
       {
+        ++solves_in_step;
         std::vector<Vector<double>> y;
         factorization->forward_substitution(y, {step_rhs});
         double substitution_seconds = substitution.wall_time();
@@ -545,7 +545,7 @@ namespace Contact
       }
     else
       {
-        factorization->solve(velocity, step_rhs);
+        solve_with_K(velocity, step_rhs);
         substitution_time += substitution.wall_time() / n_time_steps;
         constraints.distribute(velocity);
         if (friction_law.is_frictionless())
@@ -564,6 +564,9 @@ namespace Contact
           }
       }
 
+    statistics.solves_with_K = solves_in_step;
+    statistics.cg_iterations =
+      factorization->iterations() - cg_iterations_before;
     displacement = old_displacement;
     displacement.add(time_step, velocity);
     return statistics;
@@ -571,6 +574,71 @@ namespace Contact
 
 
   // @sect4{ContactProblem::solve_friction_problem}
+
+  // The friction problem of a step on Gamma_3: by default Newton's method
+  // on the full law (friction.h), with the convexification of the paper as
+  // the fallback where Newton does not converge; 'Solver/Friction method =
+  // convexification' takes the latter alone. A rate independent law (or no
+  // friction) is one Tresca problem either way.
+  template <int dim>
+  StepStatistics ContactProblem<dim>::solve_friction_problem(
+    const Vector<double> &free_slip_velocity)
+  {
+    StepStatistics statistics;
+    const bool     newton = parameters.solver.friction_method == "Newton" &&
+                        !friction_law.is_rate_independent();
+    if (!newton || !solve_by_newton(free_slip_velocity, statistics))
+      solve_by_convexification(free_slip_velocity, statistics);
+    add_contact_state(statistics);
+    return statistics;
+  }
+
+
+  // @sect4{ContactProblem::solve_by_newton}
+
+  // Newton's method on the full law from the previous step's forces, slip
+  // velocities and sets. It returns false, with the state of the step
+  // untouched, if it does not converge.
+  template <int dim>
+  bool
+  ContactProblem<dim>::solve_by_newton(const Vector<double> &free_slip_velocity,
+                                       StepStatistics       &statistics)
+  {
+    Vector<double>         eta(friction_force), v(slip_velocity);
+    Vector<double>         weights(contact_nodes.size());
+    std::vector<NodeState> state;
+    for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+      weights[p] = contact_nodes[p].weight;
+    const auto [velocity_of_force, newton_step] =
+      friction_operators(free_slip_velocity);
+    const FrictionNewtonResult result =
+      solve_friction_newton(velocity_of_force,
+                            newton_step,
+                            dim - 1,
+                            NodalLaw{friction_law, weights},
+                            free_slip_velocity,
+                            active_set_parameter,
+                            parameters.solver.max_newton_iterations,
+                            parameters.solver.max_active_set_iterations,
+                            eta,
+                            v,
+                            state);
+    statistics.convexification_iterations += result.convexification_steps;
+    statistics.active_set_iterations += result.active_set_iterations;
+    statistics.newton_iterations += result.iterations;
+    if (!result.converged)
+      {
+        ++statistics.newton_fallbacks;
+        return false;
+      }
+    friction_force = eta;
+    slip_velocity  = v;
+    node_state     = state;
+    return true;
+  }
+
+
+  // @sect4{ContactProblem::solve_by_convexification}
 
   // The convexification of the paper's section 6 (refs [3, 4] there):
   // freeze the coefficient at slip rates s, g_p = m_p S mu(s_p), solve the
@@ -591,12 +659,12 @@ namespace Contact
   // iterate that does not decrease E is rejected and the plain step taken
   // instead, so the safeguard keeps the descent.
   template <int dim>
-  StepStatistics ContactProblem<dim>::solve_friction_problem(
-    const Vector<double> &free_slip_velocity)
+  void ContactProblem<dim>::solve_by_convexification(
+    const Vector<double> &free_slip_velocity,
+    StepStatistics       &statistics)
   {
     const auto        &solver = parameters.solver;
     const unsigned int n      = contact_nodes.size();
-    StepStatistics     statistics;
 
     Vector<double> rate(n), bound(n), eta(friction_force),
       v(free_slip_velocity.size());
@@ -700,16 +768,49 @@ namespace Contact
       }
 
     AssertThrow(converged, ExcMessage(convexification_failure(residual)));
-    add_contact_state(statistics);
-    return statistics;
+  }
+
+
+  // @sect4{ContactProblem::friction_operators}
+
+  // What the Tresca and the Newton method need of the body, on D or on the
+  // whole body (active_set_constraints.cc): v = v_free - D eta for given
+  // forces, and one Newton step for a linearisation. Both paths give the
+  // same iterates; only the linear algebra differs.
+  template <int dim>
+  std::pair<TrescaVelocity, TrescaNewtonStep>
+  ContactProblem<dim>::friction_operators(
+    const Vector<double> &free_slip_velocity)
+  {
+    if (use_delassus_operator)
+      return {[this, &free_slip_velocity](const Vector<double> &eta,
+                                          Vector<double>       &v) {
+                delassus_operator.vmult(v, eta);
+                v.sadd(-1., 1., free_slip_velocity);
+              },
+              [this, &free_slip_velocity](
+                const std::vector<NodeLinearisation> &linearisation,
+                Vector<double>                       &eta,
+                Vector<double>                       &v) {
+                delassus_newton_step(
+                  delassus_operator, linearisation, free_slip_velocity, eta, v);
+              }};
+    return {[this](const Vector<double> &eta, Vector<double> &v) {
+              VectorType w;
+              velocity_for_friction_force(eta, w);
+              v = tangential_velocities(w);
+            },
+            [this](const std::vector<NodeLinearisation> &linearisation,
+                   Vector<double>                       &eta,
+                   Vector<double>                       &v) {
+              newton_step_with_constraints(linearisation, eta, v);
+            }};
   }
 
 
   // @sect4{ContactProblem::solve_tresca_problem}
 
-  // The Tresca problem of one convexification iteration, on D or on the
-  // whole body (active_set_constraints.cc): the same semismooth Newton
-  // method with the same iterates, only the linear algebra differs.
+  // The Tresca problem of one convexification iteration.
   template <int dim>
   TrescaResult ContactProblem<dim>::solve_tresca_problem(
     const Vector<double>   &free_slip_velocity,
@@ -718,40 +819,28 @@ namespace Contact
     Vector<double>         &v,
     std::vector<NodeState> &state)
   {
-    const unsigned int max_iterations =
-      parameters.solver.max_active_set_iterations;
-    if (use_delassus_operator)
-      return solve_tresca(delassus_operator,
-                          dim - 1,
-                          free_slip_velocity,
-                          bound,
-                          active_set_parameter,
-                          max_iterations,
-                          eta,
-                          v,
-                          state);
-
-    VectorType           w;
-    const TrescaVelocity velocity_of_force = [&](const Vector<double> &eta,
-                                                 Vector<double>       &v) {
-      velocity_for_friction_force(eta, w);
-      v = tangential_velocities(w);
-    };
-    const TrescaNewtonStep newton_step =
-      [&](const std::vector<NodeLinearisation> &linearisation,
-          Vector<double>                       &eta,
-          Vector<double>                       &v) {
-        newton_step_with_constraints(linearisation, bound, eta, v);
-      };
+    const auto [velocity_of_force, newton_step] =
+      friction_operators(free_slip_velocity);
     return solve_tresca(velocity_of_force,
                         newton_step,
                         dim - 1,
                         bound,
                         active_set_parameter,
-                        max_iterations,
+                        parameters.solver.max_active_set_iterations,
                         eta,
                         v,
                         state);
+  }
+
+
+  // @sect4{ContactProblem::solve_with_K}
+
+  // x = K^{-1} b, counted for the step's statistics; CG starts from x.
+  template <int dim>
+  void ContactProblem<dim>::solve_with_K(VectorType &x, const VectorType &b)
+  {
+    ++solves_in_step;
+    factorization->solve(x, b);
   }
 
 
@@ -815,42 +904,50 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                                       \
-  template void   ContactProblem<dim>::factorize_system_matrix();              \
-  template double ContactProblem<dim>::tangential_velocity(                    \
-    const ContactNode<dim> &, const unsigned int, const VectorType &) const;   \
-  template Vector<double> ContactProblem<dim>::tangential_velocities(          \
-    const VectorType &) const;                                                 \
-  template Vector<double> ContactProblem<dim>::sum_over_processes(             \
-    const Vector<double> &) const;                                             \
-  template void ContactProblem<dim>::build_delassus_operator();                \
-  template void ContactProblem<dim>::build_delassus_from_factor();             \
-  template void ContactProblem<dim>::build_delassus_from_solves();             \
-  template bool ContactProblem<dim>::delassus_operator_pays() const;           \
-  template void ContactProblem<dim>::subtract_delassus_columns(                \
-    const Vector<double> &, VectorType &) const;                               \
-  template void           ContactProblem<dim>::setup_contact_solver();         \
-  template void           ContactProblem<dim>::initialise_contact_state();     \
-  template void           ContactProblem<dim>::change_time_step(const double); \
-  template StepStatistics ContactProblem<dim>::advance(const unsigned int);    \
-  template VectorType     ContactProblem<dim>::friction_load(                  \
-    const Vector<double> &) const;                                         \
-  template void ContactProblem<dim>::add_nodal_force(const ContactNode<dim> &, \
-                                                     const Tensor<1, dim> &,   \
-                                                     VectorType &) const;      \
-  template TrescaResult ContactProblem<dim>::solve_tresca_problem(             \
-    const Vector<double> &,                                                    \
-    const Vector<double> &,                                                    \
-    Vector<double> &,                                                          \
-    Vector<double> &,                                                          \
-    std::vector<NodeState> &);                                                 \
-  template StepStatistics ContactProblem<dim>::do_time_step();                 \
-  template std::string    ContactProblem<dim>::convexification_failure(        \
-    const double) const;                                                    \
-  template void ContactProblem<dim>::add_contact_state(StepStatistics &)       \
-    const;                                                                     \
-  template StepStatistics ContactProblem<dim>::solve_friction_problem(         \
-    const Vector<double> &);
+#define INSTANTIATE(dim)                                                         \
+  template void   ContactProblem<dim>::factorize_system_matrix();                \
+  template double ContactProblem<dim>::tangential_velocity(                      \
+    const ContactNode<dim> &, const unsigned int, const VectorType &) const;     \
+  template Vector<double> ContactProblem<dim>::tangential_velocities(            \
+    const VectorType &) const;                                                   \
+  template Vector<double> ContactProblem<dim>::sum_over_processes(               \
+    const Vector<double> &) const;                                               \
+  template void ContactProblem<dim>::build_delassus_operator();                  \
+  template void ContactProblem<dim>::build_delassus_from_factor();               \
+  template void ContactProblem<dim>::build_delassus_from_solves();               \
+  template bool ContactProblem<dim>::delassus_operator_pays() const;             \
+  template void ContactProblem<dim>::subtract_delassus_columns(                  \
+    const Vector<double> &, VectorType &) const;                                 \
+  template void           ContactProblem<dim>::setup_contact_solver();           \
+  template void           ContactProblem<dim>::initialise_contact_state();       \
+  template void           ContactProblem<dim>::change_time_step(const double);   \
+  template StepStatistics ContactProblem<dim>::advance(const unsigned int);      \
+  template VectorType     ContactProblem<dim>::friction_load(                    \
+    const Vector<double> &) const;                                           \
+  template void ContactProblem<dim>::add_nodal_force(const ContactNode<dim> &,   \
+                                                     const Tensor<1, dim> &,     \
+                                                     VectorType &) const;        \
+  template TrescaResult ContactProblem<dim>::solve_tresca_problem(               \
+    const Vector<double> &,                                                      \
+    const Vector<double> &,                                                      \
+    Vector<double> &,                                                            \
+    Vector<double> &,                                                            \
+    std::vector<NodeState> &);                                                   \
+  template StepStatistics ContactProblem<dim>::do_time_step();                   \
+  template std::string    ContactProblem<dim>::convexification_failure(          \
+    const double) const;                                                      \
+  template void ContactProblem<dim>::add_contact_state(StepStatistics &)         \
+    const;                                                                       \
+  template StepStatistics ContactProblem<dim>::solve_friction_problem(           \
+    const Vector<double> &);                                                     \
+  template bool ContactProblem<dim>::solve_by_newton(const Vector<double> &,     \
+                                                     StepStatistics &);          \
+  template void ContactProblem<dim>::solve_by_convexification(                   \
+    const Vector<double> &, StepStatistics &);                                   \
+  template std::pair<TrescaVelocity, TrescaNewtonStep>                           \
+                ContactProblem<dim>::friction_operators(const Vector<double> &); \
+  template void ContactProblem<dim>::solve_with_K(VectorType &,                  \
+                                                  const VectorType &);
 
   INSTANTIATE(2)
   INSTANTIATE(3)

@@ -110,10 +110,17 @@ namespace Contact
       void solve(TrilinosWrappers::MPI::Vector       &x,
                  const TrilinosWrappers::MPI::Vector &b) override
       {
-        x.reinit(b, /*omit_zeroing_entries=*/false);
+        // x is the initial guess where it has b's layout.
+        if (x.size() != b.size() ||
+            x.locally_owned_elements() != b.locally_owned_elements() ||
+            x.has_ghost_elements())
+          x.reinit(b, /*omit_zeroing_entries=*/false);
         const double norm = b.l2_norm();
         if (norm == 0.)
-          return;
+          {
+            x = 0.;
+            return;
+          }
         SolverControl                           control(10000, 1e-12 * norm);
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
         try

@@ -1,6 +1,10 @@
 /* The friction law (6.1) and the nodal Tresca solver on Gamma_3. */
 
+#include <deal.II/lac/diagonal_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_minres.h>
 
 #include <friction.h>
 
@@ -38,6 +42,13 @@ namespace Contact
   double FrictionLaw::bound(const double slip_rate) const
   {
     return S * coefficient(slip_rate);
+  }
+
+  double FrictionLaw::bound_derivative(const double slip_rate) const
+  {
+    if (is_frictionless() || is_rate_independent())
+      return 0.;
+    return -S * (a - b) * alpha * std::exp(-alpha * slip_rate);
   }
 
   double FrictionLaw::potential(const double slip_velocity) const
@@ -169,7 +180,9 @@ namespace Contact
               z_norm += node.direction[i] * node.direction[i];
               v_norm += v[p * m + i] * v[p * m + i];
             }
-          z_norm = std::sqrt(z_norm);
+          z_norm     = std::sqrt(z_norm);
+          node.bound = g[p];
+          node.force = g[p];
           if (g[p] == 0.)
             {
               node.state = NodeState::slip;
@@ -202,94 +215,6 @@ namespace Contact
       return signature;
     }
 
-    // One Newton step: in the rotated unknowns eta' = Q^T eta (Q block
-    // diagonal of the local bases), the components eta'_{p,0} = g_p of the
-    // slip nodes are fixed, as are the components with D_rr = 0 of stick
-    // nodes (a zero tangent: a direction the node cannot move in, e.g. on a
-    // symmetry plane; eta' = 0 there), and the others solve
-    //   (Q^T D Q + diag beta)_FF eta'_F = (Q^T v_free)_F - (Q^T D Q)_FL g_L,
-    // which is SPD. Then v = v_free - D eta, and v_p = 0 where p sticks.
-    // Q^T D Q is formed entry by entry from the m x m blocks, O((nm)^2 m^2).
-    void newton_step(const FullMatrix<double>             &D,
-                     const std::vector<NodeLinearisation> &linearisation,
-                     const Vector<double>                 &v_free,
-                     const Vector<double>                 &g,
-                     Vector<double>                       &eta,
-                     Vector<double>                       &v)
-    {
-      const unsigned int              n = g.size(), m = D.m() / n;
-      std::vector<FullMatrix<double>> Q;
-      for (const NodeLinearisation &node : linearisation)
-        Q.push_back(local_basis(node));
-      // For m = 1 the rotation is a sign per node.
-      std::vector<double> sign(n);
-      for (unsigned int p = 0; p < n; ++p)
-        sign[p] = Q[p](0, 0);
-      const auto rotated_D = [&](const unsigned int r, const unsigned int s) {
-        if (m == 1)
-          return sign[r] * D(r, s) * sign[s];
-        const unsigned int p = r / m, a = r % m, q = s / m, b = s % m;
-        double             entry = 0;
-        for (unsigned int i = 0; i < m; ++i)
-          for (unsigned int j = 0; j < m; ++j)
-            entry += Q[p](i, a) * D(p * m + i, q * m + j) * Q[q](j, b);
-        return entry;
-      };
-
-      std::vector<unsigned int> free, fixed;
-      Vector<double>            rotated_eta(n * m);
-      for (unsigned int p = 0; p < n; ++p)
-        for (unsigned int i = 0; i < m; ++i)
-          if ((linearisation[p].state == NodeState::stick &&
-               D(p * m + i, p * m + i) > 0) ||
-              (linearisation[p].state == NodeState::slip && i > 0 && g[p] > 0))
-            free.push_back(p * m + i);
-          else
-            {
-              fixed.push_back(p * m + i);
-              rotated_eta[p * m + i] =
-                (linearisation[p].state == NodeState::slip && i == 0 ? g[p] :
-                                                                       0.);
-            }
-
-      if (!free.empty())
-        {
-          const unsigned int       n_free = free.size();
-          LAPACKFullMatrix<double> matrix(n_free, n_free);
-          Vector<double>           rhs(n_free);
-          for (unsigned int a = 0; a < n_free; ++a)
-            {
-              const unsigned int r = free[a], p = r / m;
-              for (unsigned int i = 0; i < m; ++i)
-                rhs[a] += Q[p](i, r % m) * v_free[p * m + i];
-              for (const unsigned int s : fixed)
-                rhs[a] -= rotated_D(r, s) * rotated_eta[s];
-              for (unsigned int b = 0; b <= a; ++b)
-                matrix(a, b) = matrix(b, a) = rotated_D(r, free[b]);
-              matrix(a, a) += linearisation[p].beta;
-            }
-          matrix.set_property(LAPACKSupport::symmetric);
-          matrix.compute_cholesky_factorization();
-          matrix.solve(rhs);
-          for (unsigned int a = 0; a < n_free; ++a)
-            rotated_eta[free[a]] = rhs[a];
-        }
-
-      for (unsigned int p = 0; p < n; ++p)
-        for (unsigned int i = 0; i < m; ++i)
-          {
-            eta[p * m + i] = 0;
-            for (unsigned int a = 0; a < m; ++a)
-              eta[p * m + i] += Q[p](i, a) * rotated_eta[p * m + a];
-          }
-      D.vmult(v, eta);
-      v.sadd(-1., 1., v_free);
-      for (unsigned int p = 0; p < n; ++p)
-        if (linearisation[p].state == NodeState::stick)
-          for (unsigned int i = 0; i < m; ++i)
-            v[p * m + i] = 0.;
-    }
-
     // max_p |eta_p - P_{B(g_p)}(eta_p + c_p v_p)|: zero at a solution.
     double complementarity_residual(const unsigned int    m,
                                     const Vector<double> &eta,
@@ -316,6 +241,217 @@ namespace Contact
       return residual;
     }
   } // namespace
+
+
+  // One Newton step: in the rotated unknowns eta' = Q^T eta (Q block
+  // diagonal of the local bases), the components eta'_{p,0} of the slip
+  // nodes are fixed to the node's force where the bound is frozen (slope
+  // 0), as are the components with D_rr = 0 of stick nodes (a zero
+  // tangent: a direction the node cannot move in, e.g. on a symmetry plane;
+  // eta' = 0 there), and the others solve
+  //   (Q^T D Q + diag delta)_FF eta'_F = (Q^T v_free)_F + r_F
+  //                                      - (Q^T D Q)_FL eta'_L.
+  // delta is 0 on stick nodes and beta_p along the second direction of a
+  // slip node; the first direction of a slip node with slope < 0 (the full
+  // law) is free too: eta'_0 = force + slope v'_0 with v' = v'_free - D'eta'
+  // is, divided by the slope, the symmetric row with delta = 1/slope and
+  // r = force/slope. The matrix is SPD for the Tresca problem (Cholesky);
+  // with slopes it may be indefinite where the step problem is not convex
+  // (LU). Then v = v_free - D eta, and v_p = 0 where p sticks. Q^T D Q is
+  // formed entry by entry from the m x m blocks, O((nm)^2 m^2).
+  namespace
+  {
+    // Up to this many unknowns the Newton step factorises its matrix
+    // (exact, and cheaper than the iterations below that size); above it
+    // the step is solved iteratively.
+    const unsigned int dense_limit = 400;
+  } // namespace
+
+  void delassus_newton_step(const FullMatrix<double>             &D,
+                            const std::vector<NodeLinearisation> &linearisation,
+                            const Vector<double>                 &v_free,
+                            Vector<double>                       &eta,
+                            Vector<double>                       &v)
+  {
+    const unsigned int              n = linearisation.size(), m = D.m() / n;
+    std::vector<FullMatrix<double>> Q;
+    for (const NodeLinearisation &node : linearisation)
+      Q.push_back(local_basis(node));
+    // y = Q x (from the local bases to the nodes' tangents) or Q^T x.
+    const auto rotate =
+      [&](const Vector<double> &x, Vector<double> &y, const bool transpose) {
+        for (unsigned int p = 0; p < n; ++p)
+          for (unsigned int i = 0; i < m; ++i)
+            {
+              y[p * m + i] = 0;
+              for (unsigned int a = 0; a < m; ++a)
+                y[p * m + i] +=
+                  (transpose ? Q[p](a, i) : Q[p](i, a)) * x[p * m + a];
+            }
+      };
+    // For m = 1 the rotation is a sign per node.
+    std::vector<double> sign(n);
+    for (unsigned int p = 0; p < n; ++p)
+      sign[p] = Q[p](0, 0);
+    const auto rotated_D = [&](const unsigned int r, const unsigned int s) {
+      if (m == 1)
+        return sign[r] * D(r, s) * sign[s];
+      const unsigned int p = r / m, a = r % m, q = s / m, b = s % m;
+      double             entry = 0;
+      for (unsigned int i = 0; i < m; ++i)
+        for (unsigned int j = 0; j < m; ++j)
+          entry += Q[p](i, a) * D(p * m + i, q * m + j) * Q[q](j, b);
+      return entry;
+    };
+
+    std::vector<unsigned int> free, fixed;
+    std::vector<double>       shift, extra_rhs;
+    Vector<double>            rotated_eta(n * m);
+    bool                      indefinite = false;
+    for (unsigned int p = 0; p < n; ++p)
+      {
+        const NodeLinearisation &node = linearisation[p];
+        const bool slip = (node.state == NodeState::slip && node.bound > 0);
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            const unsigned int r = p * m + i;
+            // A slope below round-off against D_rr leaves the force fixed.
+            const bool sloped =
+              slip && i == 0 &&
+              -node.slope * D(r, r) > 1e-14 * (1. + D(r, r) * node.bound);
+            if (node.state == NodeState::stick && D(r, r) > 0)
+              {
+                free.push_back(r);
+                shift.push_back(0.);
+                extra_rhs.push_back(0.);
+              }
+            else if (slip && i > 0)
+              {
+                free.push_back(r);
+                shift.push_back(node.beta);
+                extra_rhs.push_back(0.);
+              }
+            else if (sloped)
+              {
+                free.push_back(r);
+                shift.push_back(1. / node.slope);
+                extra_rhs.push_back(node.force / node.slope);
+                indefinite = true;
+              }
+            else
+              {
+                fixed.push_back(r);
+                rotated_eta[r] = (slip && i == 0 ? node.force : 0.);
+              }
+          }
+      }
+
+    if (free.size() > dense_limit)
+      {
+        // Iteratively: MINRES (the matrix may be indefinite) with the
+        // absolute diagonal as preconditioner, started from the current
+        // forces, and D' applied as Q^T D Q without forming it, O((nm)^2)
+        // per iteration instead of the O(n_free^3) of a factorisation.
+        const unsigned int n_free = free.size();
+        Vector<double>     rotated(n * m), physical(n * m), product(n * m);
+        const auto         apply_rotated_D = [&](const Vector<double> &x,
+                                         Vector<double>       &y) {
+          rotate(x, physical, false);
+          D.vmult(product, physical);
+          rotate(product, y, true);
+        };
+        struct FreeOperator
+        {
+          const std::function<void(Vector<double> &, const Vector<double> &)>
+               apply;
+          void vmult(Vector<double> &dst, const Vector<double> &src) const
+          {
+            apply(dst, src);
+          }
+        };
+        const FreeOperator operator_on_free{
+          [&](Vector<double> &dst, const Vector<double> &src) {
+            rotated = 0.;
+            for (unsigned int a = 0; a < n_free; ++a)
+              rotated[free[a]] = src[a];
+            Vector<double> result(n * m);
+            apply_rotated_D(rotated, result);
+            for (unsigned int a = 0; a < n_free; ++a)
+              dst[a] = result[free[a]] + shift[a] * src[a];
+          }};
+
+        Vector<double> rhs(n_free), solution(n_free), fixed_part(n * m);
+        apply_rotated_D(rotated_eta, fixed_part);
+        Vector<double> inverse_diagonal(n_free);
+        for (unsigned int a = 0; a < n_free; ++a)
+          {
+            const unsigned int r = free[a], p = r / m;
+            for (unsigned int i = 0; i < m; ++i)
+              {
+                rhs[a] += Q[p](i, r % m) * v_free[p * m + i];
+                solution[a] += Q[p](i, r % m) * eta[p * m + i];
+              }
+            rhs[a] += extra_rhs[a] - fixed_part[r];
+            inverse_diagonal[a] = 1. / std::abs(rotated_D(r, r) + shift[a]);
+          }
+        // For the correction from the current forces, to a relative
+        // accuracy that the Newton iteration needs rather than to
+        // round-off: the rows of sloped directions carry force/slope, which
+        // would dominate an absolute tolerance.
+        DiagonalMatrix<Vector<double>> preconditioner(inverse_diagonal);
+        Vector<double>                 residual(n_free), correction(n_free);
+        operator_on_free.vmult(residual, solution);
+        residual.sadd(-1., 1., rhs);
+        if (residual.l2_norm() > 0)
+          {
+            SolverControl control(10 * n_free, 1e-10 * residual.l2_norm());
+            SolverMinRes<Vector<double>> minres(control);
+            minres.solve(operator_on_free,
+                         correction,
+                         residual,
+                         preconditioner);
+            solution += correction;
+          }
+        for (unsigned int a = 0; a < n_free; ++a)
+          rotated_eta[free[a]] = solution[a];
+      }
+    else if (!free.empty())
+      {
+        const unsigned int       n_free = free.size();
+        LAPACKFullMatrix<double> matrix(n_free, n_free);
+        Vector<double>           rhs(n_free);
+        for (unsigned int a = 0; a < n_free; ++a)
+          {
+            const unsigned int r = free[a], p = r / m;
+            for (unsigned int i = 0; i < m; ++i)
+              rhs[a] += Q[p](i, r % m) * v_free[p * m + i];
+            rhs[a] += extra_rhs[a];
+            for (const unsigned int s : fixed)
+              rhs[a] -= rotated_D(r, s) * rotated_eta[s];
+            for (unsigned int b = 0; b <= a; ++b)
+              matrix(a, b) = matrix(b, a) = rotated_D(r, free[b]);
+            matrix(a, a) += shift[a];
+          }
+        if (indefinite)
+          matrix.compute_lu_factorization();
+        else
+          {
+            matrix.set_property(LAPACKSupport::symmetric);
+            matrix.compute_cholesky_factorization();
+          }
+        matrix.solve(rhs);
+        for (unsigned int a = 0; a < n_free; ++a)
+          rotated_eta[free[a]] = rhs[a];
+      }
+
+    rotate(rotated_eta, eta, false);
+    D.vmult(v, eta);
+    v.sadd(-1., 1., v_free);
+    for (unsigned int p = 0; p < n; ++p)
+      if (linearisation[p].state == NodeState::stick)
+        for (unsigned int i = 0; i < m; ++i)
+          v[p * m + i] = 0.;
+  }
 
 
   // The orthonormal basis of one node's tangential plane in which the
@@ -355,7 +491,7 @@ namespace Contact
     const auto step = [&](const std::vector<NodeLinearisation> &linearisation,
                           Vector<double>                       &eta,
                           Vector<double>                       &v) {
-      newton_step(D, linearisation, v_free, g, eta, v);
+      delassus_newton_step(D, linearisation, v_free, eta, v);
     };
     return solve_tresca(velocity, step, m, g, c, max_iterations, eta, v, state);
   }
@@ -428,4 +564,189 @@ namespace Contact
       state[p] = linearisation[p].state;
     return result;
   }
+
+
+  // @sect3{The full law by a globalised semismooth Newton method}
+
+  namespace
+  {
+    double node_norm(const Vector<double> &x,
+                     const unsigned int    p,
+                     const unsigned int    m)
+    {
+      double sum = 0;
+      for (unsigned int i = 0; i < m; ++i)
+        sum += x[p * m + i] * x[p * m + i];
+      return std::sqrt(sum);
+    }
+
+    // The linearisation at (eta, v) with the bound of the current slip rate,
+    // g_p(|v_p|), and on slip nodes its tangent along zhat.
+    std::vector<NodeLinearisation> linearise_law(const unsigned int    m,
+                                                 const Vector<double> &eta,
+                                                 const Vector<double> &v,
+                                                 const NodalLaw       &law,
+                                                 const Vector<double> &c)
+    {
+      const unsigned int n = c.size();
+      Vector<double>     g(n);
+      for (unsigned int p = 0; p < n; ++p)
+        g[p] = law.bound(p, node_norm(v, p, m));
+      std::vector<NodeLinearisation> result = linearise(m, eta, v, g, c);
+      // The force along zhat is g_p(s) + g_p'(s) zhat . (v_new - v), with
+      // the slip rate s = |v_p| of the iterate: at a fixed point it is
+      // g_p(s) even where v_p is not along zhat.
+      for (unsigned int p = 0; p < n; ++p)
+        if (result[p].state == NodeState::slip && g[p] > 0)
+          {
+            double along = 0;
+            for (unsigned int i = 0; i < m; ++i)
+              along += result[p].direction[i] * v[p * m + i];
+            result[p].slope = law.slope(p, node_norm(v, p, m));
+            result[p].force = g[p] - result[p].slope * along;
+          }
+      return result;
+    }
+  } // namespace
+
+
+  double NodalLaw::bound(const unsigned int p, const double s) const
+  {
+    return weights[p] * law.bound(s);
+  }
+
+  double NodalLaw::slope(const unsigned int p, const double s) const
+  {
+    return weights[p] * law.bound_derivative(s);
+  }
+
+  double NodalLaw::energy(const Vector<double> &v_free,
+                          const Vector<double> &eta,
+                          const Vector<double> &v,
+                          double               &scale) const
+  {
+    const unsigned int m         = v.size() / weights.size();
+    double             quadratic = 0, friction = 0;
+    for (unsigned int r = 0; r < v.size(); ++r)
+      quadratic += 0.5 * eta[r] * (v_free[r] - v[r]);
+    for (unsigned int p = 0; p < weights.size(); ++p)
+      friction += weights[p] * law.potential(node_norm(v, p, m));
+    scale = std::abs(quadratic) + std::abs(friction);
+    return quadratic + friction;
+  }
+
+
+  FrictionNewtonResult
+  solve_friction_newton(const TrescaVelocity   &velocity,
+                        const TrescaNewtonStep &newton_step,
+                        const unsigned int      m,
+                        const NodalLaw         &law,
+                        const Vector<double>   &v_free,
+                        const Vector<double>   &c,
+                        const unsigned int      max_iterations,
+                        const unsigned int      max_active_set_iterations,
+                        Vector<double>         &eta,
+                        Vector<double>         &v,
+                        std::vector<NodeState> &state)
+  {
+    const unsigned int n = c.size();
+    AssertDimension(eta.size(), n * m);
+    FrictionNewtonResult result;
+    double               largest_bound = std::numeric_limits<double>::min();
+    for (unsigned int p = 0; p < n; ++p)
+      largest_bound = std::max(largest_bound, law.bound(p, 0.));
+    const double tolerance = 1e-12 * largest_bound;
+
+    // The first step is taken from the previous step's state, which belongs
+    // to another v_free: its energy is not compared.
+    auto           linearisation = linearise_law(m, eta, v, law, c);
+    double         energy = std::numeric_limits<double>::infinity(), scale = 0;
+    Vector<double> new_eta(eta), new_v(v);
+    while (result.iterations < max_iterations)
+      {
+        ++result.iterations;
+        new_eta = eta;
+        newton_step(linearisation, new_eta, new_v);
+        double new_energy = law.energy(v_free, new_eta, new_v, scale);
+
+        // Backtracking on E: (eta, v) move together, v = v_free - D eta
+        // being affine in eta.
+        const Vector<double> full_eta(new_eta), full_v(new_v);
+        const auto           increased = [&]() {
+          return new_energy > energy + 1e-13 * scale;
+        };
+        double step = 1.;
+        while (increased() && step > 0.3)
+          {
+            step /= 2;
+            new_eta = eta;
+            new_eta.add(step, full_eta, -step, eta);
+            new_v = v;
+            new_v.add(step, full_v, -step, v);
+            new_energy = law.energy(v_free, new_eta, new_v, scale);
+          }
+        if (!increased() && step < 1.)
+          ++result.damped_steps;
+        else if (increased())
+          {
+            // No descent along the Newton direction (the step problem is
+            // not convex here): one convexification step instead, the
+            // Tresca problem with the bounds of the current slip rates,
+            // which lowers E.
+            ++result.convexification_steps;
+            Vector<double> bound(n);
+            for (unsigned int p = 0; p < n; ++p)
+              bound[p] = law.bound(p, node_norm(v, p, m));
+            new_eta = eta;
+            std::vector<NodeState> tresca_state;
+            const TrescaResult     tresca = solve_tresca(velocity,
+                                                     newton_step,
+                                                     m,
+                                                     bound,
+                                                     c,
+                                                     max_active_set_iterations,
+                                                     new_eta,
+                                                     new_v,
+                                                     tresca_state);
+            result.active_set_iterations += tresca.iterations;
+            if (!tresca.converged)
+              break;
+            new_energy = law.energy(v_free, new_eta, new_v, scale);
+          }
+
+        const std::vector<int> previous_sets = set_signature(linearisation);
+        eta.swap(new_eta);
+        v.swap(new_v);
+        energy          = new_energy;
+        linearisation   = linearise_law(m, eta, v, law, c);
+        double residual = 0;
+        for (unsigned int p = 0; p < n; ++p)
+          {
+            std::vector<double> z(m);
+            for (unsigned int i = 0; i < m; ++i)
+              z[i] = eta[p * m + i] + c[p] * v[p * m + i];
+            double z_norm = 0;
+            for (const double zi : z)
+              z_norm += zi * zi;
+            z_norm              = std::sqrt(z_norm);
+            const double shrink = (z_norm > linearisation[p].bound ?
+                                     linearisation[p].bound / z_norm :
+                                     1.);
+            for (unsigned int i = 0; i < m; ++i)
+              residual =
+                std::max(residual, std::abs(eta[p * m + i] - shrink * z[i]));
+          }
+        if (set_signature(linearisation) == previous_sets &&
+            residual <= tolerance)
+          {
+            result.converged = true;
+            break;
+          }
+      }
+    state.resize(n);
+    for (unsigned int p = 0; p < n; ++p)
+      state[p] = linearisation[p].state;
+    return result;
+  }
+
 } // namespace Contact

@@ -46,7 +46,9 @@ namespace Contact
         time_series.open(directory + "/time_series.csv");
         time_series
           << "step,time,convexification_iterations,active_set_iterations,"
-             "rejected_accelerations,active_set_cycles,step_cuts,n_stick,n_slip,max_slip_rate,friction_force,"
+             "rejected_accelerations,active_set_cycles,step_cuts,"
+             "newton_iterations,newton_fallbacks,solves_with_K,cg_iterations,"
+             "n_stick,n_slip,max_slip_rate,friction_force,"
              "kinetic_energy,elastic_energy,external_work,viscous_dissipation,"
              "friction_dissipation,numerical_dissipation,energy_residual,momentum_x,"
              "momentum_y"
@@ -113,7 +115,10 @@ namespace Contact
                 << statistics.active_set_iterations << ','
                 << statistics.rejected_accelerations << ','
                 << statistics.cycles_cured << ',' << statistics.step_cuts << ','
-                << statistics.n_stick << ',' << statistics.n_slip << ','
+                << statistics.newton_iterations << ','
+                << statistics.newton_fallbacks << ','
+                << statistics.solves_with_K << ',' << statistics.cg_iterations
+                << ',' << statistics.n_stick << ',' << statistics.n_slip << ','
                 << statistics.max_slip_rate << ',' << statistics.friction_force
                 << ',' << energy.kinetic << ',' << energy.elastic << ','
                 << energy.external_work << ',' << energy.viscous_dissipation
@@ -321,8 +326,17 @@ namespace Contact
     const double left    = elapsed / step_number * (n_time_steps - step_number);
     pcout << "Step " << std::setw(5) << step_number << '/' << n_time_steps
           << "  t = " << std::setw(9) << std::setprecision(5) << time
-          << "  iterations " << statistics.convexification_iterations << '/'
-          << statistics.active_set_iterations << "  stick "
+          << "  iterations "
+          << (statistics.newton_iterations > 0 ?
+                std::to_string(statistics.newton_iterations) + " Newton" +
+                  (statistics.newton_fallbacks > 0 ? " + " : "") :
+                std::string())
+          << (statistics.newton_iterations == 0 ||
+                  statistics.newton_fallbacks > 0 ?
+                std::to_string(statistics.convexification_iterations) + '/' +
+                  std::to_string(statistics.active_set_iterations) :
+                std::string())
+          << "  solves " << statistics.solves_with_K << "  stick "
           << statistics.n_stick << "  slip " << statistics.n_slip
           << "  max slip rate " << std::setprecision(3)
           << statistics.max_slip_rate << "  [" << std::setprecision(3)
@@ -389,6 +403,19 @@ namespace Contact
           << " convexification iterations, " << totals.active_set_iterations
           << " active set iterations, " << totals.rejected_accelerations
           << " rejected accelerations." << std::endl;
+    if (totals.newton_iterations > 0)
+      pcout << "Newton on the full friction law: " << totals.newton_iterations
+            << " iterations, " << std::setprecision(3)
+            << static_cast<double>(totals.newton_iterations) / n_time_steps
+            << " per step; the convexification took over in "
+            << totals.newton_fallbacks << " steps." << std::endl;
+    pcout << "Solves with K per step: " << std::setprecision(3)
+          << static_cast<double>(totals.solves_with_K) / n_time_steps
+          << std::endl;
+    if (totals.cg_iterations > 0)
+      pcout << "CG iterations per step: " << std::setprecision(4)
+            << static_cast<double>(totals.cg_iterations) / n_time_steps
+            << std::endl;
     pcout << "Energy at t = " << time << ": kinetic " << std::setprecision(6)
           << energy.kinetic << ", elastic " << energy.elastic
           << ", external work " << energy.external_work << ", viscous "
@@ -424,12 +451,6 @@ namespace Contact
                       std::string("active set as constraints, one "
                                   "solve with K per Newton step"))
                 << std::endl;
-        if (factorization && factorization->iterations() > 0)
-          pcout << "Linear solver: CG-AMG, "
-                << static_cast<double>(factorization->iterations()) /
-                     n_time_steps
-                << " iterations per step, " << factorization->iterations()
-                << " in all" << std::endl;
         if (factorization && factorization->factor_size() > 0)
           pcout << "Factor of K: "
                 << static_cast<long long>(factorization->factor_size())

@@ -506,6 +506,30 @@ namespace Contact
         "The convexification stops when the slip rates on Gamma_3 change by "
         "less than this, relative to the largest tangential velocity, and the "
         "slip set does not change.");
+      prm.declare_entry(
+        "Friction method",
+        "convexification",
+        Patterns::Selection("Newton|convexification"),
+        "How the nonmonotone friction problem of a step is solved. Newton: "
+        "a semismooth Newton method on the full law, with the derivative of "
+        "the friction coefficient in its Jacobian, a line search on the "
+        "step's energy, and a convexification step (a Tresca problem) where "
+        "the Newton step does not lower it (the step problem is not convex "
+        "there); it starts from the previous step's forces and stick/slip "
+        "sets, and falls back to the "
+        "convexification if it does not converge within 'Max Newton "
+        "iterations'. convexification: the paper's fixed point, one Tresca "
+        "problem per iteration (with Anderson acceleration), solved by the "
+        "primal-dual active set method. Both find the same solution where "
+        "the step problem has one; where it has several (S (a - b) alpha "
+        "above the convexity limit printed at start-up) they may end on "
+        "different ones (doc/algorithm.md), which is why the "
+        "convexification stays the default for now.");
+      prm.declare_entry("Max Newton iterations",
+                        "50",
+                        Patterns::Integer(1),
+                        "Iteration limit of the Newton method per step; "
+                        "then the convexification takes over.");
       prm.declare_entry("Max convexification iterations",
                         "200",
                         Patterns::Integer(1),
@@ -591,8 +615,10 @@ namespace Contact
         linear_solver = (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ?
                            "CHOLMOD" :
                            "Amesos_Mumps");
-      contact_solver = prm.get("Contact solver");
-      step_cuts      = prm.get_integer("Step cuts");
+      contact_solver        = prm.get("Contact solver");
+      friction_method       = prm.get("Friction method");
+      max_newton_iterations = prm.get_integer("Max Newton iterations");
+      step_cuts             = prm.get_integer("Step cuts");
     }
     prm.leave_subsection();
 

@@ -1,4 +1,4 @@
-/* Checkpoint and restart (issue 6): the paper's scene at h = k = 1/64 (71
+/* Checkpoint and restart: the paper's scene at h = k = 1/64 (71
    steps, VTU every 10 steps) runs once uninterrupted, and once with a
    checkpoint every 5 steps, killed with SIGKILL after step 36 (so after
    the checkpoint of step 35 and with rows and VTU files written beyond it),
@@ -28,6 +28,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -141,9 +142,23 @@ std::vector<std::vector<double>> read_time_series(const std::string &name)
   return rows;
 }
 
+// The position of a column in the header of a time series.
+unsigned int column(const std::string &file_name, const std::string &name)
+{
+  std::ifstream file(file_name);
+  std::string   header;
+  unsigned int  index = 0;
+  std::getline(file, header);
+  std::istringstream fields(header);
+  for (std::string field; std::getline(fields, field, ','); ++index)
+    if (field == name)
+      return index;
+  throw std::runtime_error("no column '" + name + "' in " + file_name);
+}
+
 // The columns of two time series of the same shape agree to 1e-10 of each
-// column's largest value; the energy residual (column 17) is compared on
-// the scale of the external work (column 13).
+// column's largest value; the energy residual is compared on the scale of
+// the external work.
 bool same_time_series(const std::string &a_name, const std::string &b_name)
 {
   const auto a = read_time_series(a_name), b = read_time_series(b_name);
@@ -154,7 +169,8 @@ bool same_time_series(const std::string &a_name, const std::string &b_name)
   for (const auto &row : a)
     for (unsigned int c = 0; c < n_columns; ++c)
       scale[c] = std::max(scale[c], std::abs(row[c]));
-  scale[17] = scale[13];
+  scale[column(a_name, "energy_residual")] =
+    scale[column(a_name, "external_work")];
   for (unsigned int n = 0; n < a.size(); ++n)
     for (unsigned int c = 0; c < n_columns; ++c)
       if (b[n].size() != n_columns ||

@@ -1,0 +1,210 @@
+/* Newton's method on the full nonmonotone law against the convexification
+   (a fixed point around Tresca problems), on a dense Delassus operator with
+   one (2D) and two (3D) tangential components per node and the slip rate
+   weakening bound g_p(s) = S ((a - b) exp(-alpha s) + b):
+   - both satisfy the law v = v_free - D eta, |eta_p| <= g_p(0) where
+     v_p = 0, eta_p = g_p(|v_p|) v_p / |v_p| elsewhere, to round-off;
+   - where the step problem is convex (small alpha) they give the same
+     solution, Newton in fewer iterations;
+   - where it is not (alpha large), Newton still converges (its line search
+     and convexification steps), to a solution of the law, which may be
+     another solution than the convexification's (both are printed);
+   - a Newton iteration that leaves out the derivative of the bound is the
+     convexification's step: it needs more iterations (the check that the
+     derivative is in the Jacobian). */
+
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <friction.h>
+#include <parameters.h>
+
+#include "make_delassus.h"
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+using namespace Contact;
+
+struct Law
+{
+  double S, a, b, alpha;
+  double bound(const double s) const
+  {
+    return S * ((a - b) * std::exp(-alpha * s) + b);
+  }
+  double slope(const double s) const
+  {
+    return -S * (a - b) * alpha * std::exp(-alpha * s);
+  }
+};
+
+double
+node_norm(const Vector<double> &x, const unsigned int p, const unsigned m)
+{
+  double sum = 0;
+  for (unsigned int i = 0; i < m; ++i)
+    sum += x[p * m + i] * x[p * m + i];
+  return std::sqrt(sum);
+}
+
+// The largest violation of the law relative to g(0), and the stick/slip
+// pattern.
+std::pair<double, std::string> violation(const FullMatrix<double> &D,
+                                         const unsigned int        m,
+                                         const Vector<double>     &v_free,
+                                         const Law                &law,
+                                         const Vector<double>     &eta,
+                                         const Vector<double>     &v)
+{
+  const unsigned int n = eta.size() / m;
+  Vector<double>     residual(n * m);
+  D.vmult(residual, eta);
+  residual += v;
+  residual -= v_free;
+  double      worst = residual.linfty_norm();
+  std::string pattern;
+  for (unsigned int p = 0; p < n; ++p)
+    {
+      const double speed = node_norm(v, p, m), force = node_norm(eta, p, m);
+      if (speed < 1e-12)
+        {
+          worst = std::max(worst, force - law.bound(0));
+          pattern += 'S';
+          continue;
+        }
+      for (unsigned int i = 0; i < m; ++i)
+        worst = std::max(worst,
+                         std::abs(eta[p * m + i] -
+                                  law.bound(speed) * v[p * m + i] / speed));
+      pattern += 'L';
+    }
+  return {worst / law.bound(0), pattern};
+}
+
+void check(const std::string    &name,
+           const unsigned int    m,
+           const Vector<double> &v_free,
+           const Law            &law)
+{
+  const unsigned int       n = v_free.size() / m;
+  const FullMatrix<double> D = make_delassus(n, m);
+  Vector<double>           c(n);
+  for (unsigned int p = 0; p < n; ++p)
+    c[p] = 0.05 / D(p * m, p * m);
+
+  FrictionParameters parameters;
+  parameters.law     = FrictionParameters::Law::slip_rate_weakening;
+  parameters.bound_S = law.S;
+  parameters.a       = law.a;
+  parameters.b       = law.b;
+  parameters.alpha   = law.alpha;
+  const FrictionLaw friction_law(parameters);
+  Vector<double>    weights(n);
+  weights = 1.;
+
+  const TrescaVelocity velocity = [&](const Vector<double> &eta,
+                                      Vector<double>       &v) {
+    D.vmult(v, eta);
+    v.sadd(-1., 1., v_free);
+  };
+  // with_slope = false leaves the derivative of the bound out of the
+  // Jacobian.
+  const auto newton =
+    [&](const bool with_slope, Vector<double> &eta, Vector<double> &v) {
+      const TrescaNewtonStep step =
+        [&](const std::vector<NodeLinearisation> &linearisation,
+            Vector<double>                       &eta,
+            Vector<double>                       &v) {
+          std::vector<NodeLinearisation> used = linearisation;
+          if (!with_slope)
+            for (NodeLinearisation &node : used)
+              {
+                node.force = node.bound;
+                node.slope = 0;
+              }
+          delassus_newton_step(D, used, v_free, eta, v);
+        };
+      eta.reinit(n * m);
+      v = v_free;
+      std::vector<NodeState> state;
+      return solve_friction_newton(velocity,
+                                   step,
+                                   m,
+                                   NodalLaw{friction_law, weights},
+                                   v_free,
+                                   c,
+                                   200,
+                                   500,
+                                   eta,
+                                   v,
+                                   state);
+    };
+
+  Vector<double>             eta, v;
+  const FrictionNewtonResult result      = newton(true, eta, v);
+  const auto [newton_violation, pattern] = violation(D, m, v_free, law, eta, v);
+
+  Vector<double>             eta_frozen, v_frozen;
+  const FrictionNewtonResult frozen = newton(false, eta_frozen, v_frozen);
+
+  // The convexification: Tresca problems with the bounds of the last slip
+  // rates until the rates stop changing.
+  Vector<double>         eta_fixed(n * m), v_fixed(v_free), bounds(n);
+  std::vector<NodeState> state;
+  unsigned int           fixed_point_iterations = 0, active_set_iterations = 0;
+  for (; fixed_point_iterations < 1000; ++fixed_point_iterations)
+    {
+      Vector<double> old_v(v_fixed);
+      for (unsigned int p = 0; p < n; ++p)
+        bounds[p] = law.bound(node_norm(v_fixed, p, m));
+      active_set_iterations +=
+        solve_tresca(D, m, v_free, bounds, c, 500, eta_fixed, v_fixed, state)
+          .iterations;
+      old_v -= v_fixed;
+      if (old_v.linfty_norm() <= 1e-13 * v_free.linfty_norm())
+        break;
+    }
+  Vector<double> difference(eta);
+  difference -= eta_fixed;
+  // Where the step problem is not convex both may be right and differ.
+  const double fixed_violation =
+    violation(D, m, v_free, law, eta_fixed, v_fixed).first;
+
+  std::cout << name << " (m = " << m << ", alpha = " << law.alpha
+            << "): Newton converged " << result.converged << " in "
+            << result.iterations << " iterations (" << result.damped_steps
+            << " damped, " << result.convexification_steps
+            << " convexification steps), law holds: "
+            << (newton_violation < 1e-11 ? "yes" : "no") << ", state "
+            << pattern << "; without the slope " << frozen.iterations
+            << " iterations; convexification " << fixed_point_iterations + 1
+            << " iterations (" << active_set_iterations
+            << " active set), same solution: "
+            << (difference.linfty_norm() < 1e-9 * law.bound(0) ? "yes" : "no")
+            << " (its law holds: " << (fixed_violation < 1e-9 ? "yes" : "no")
+            << ")" << std::endl;
+}
+
+int main()
+{
+  const unsigned int n = 12;
+  Vector<double>     ramp(n), turning(2 * n);
+  for (unsigned int p = 0; p < n; ++p)
+    {
+      ramp[p]            = -0.4 + 0.1 * p;
+      const double angle = p * M_PI / 6;
+      turning[2 * p]     = (0.1 * p - 0.3) * std::cos(angle);
+      turning[2 * p + 1] = (0.1 * p - 0.3) * std::sin(angle);
+    }
+  for (const double alpha : {2., 20.})
+    {
+      check("stick and slip both ways", 1, ramp, {0.08, 1., 0.5, alpha});
+      check("turning directions", 2, turning, {0.3, 1., 0.5, alpha});
+    }
+  for (const double alpha : {200., 2000.})
+    {
+      check("not convex", 1, ramp, {0.08, 1., 0.1, alpha});
+      check("not convex, turning", 2, turning, {0.3, 1., 0.1, alpha});
+    }
+}
