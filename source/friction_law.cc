@@ -717,25 +717,13 @@ namespace Contact
         const std::vector<int> previous_sets = set_signature(linearisation);
         eta.swap(new_eta);
         v.swap(new_v);
-        energy          = new_energy;
-        linearisation   = linearise_law(m, eta, v, law, c);
-        double residual = 0;
+        energy        = new_energy;
+        linearisation = linearise_law(m, eta, v, law, c);
+        // The residual with the bounds of the current slip rates.
+        Vector<double> bound(n);
         for (unsigned int p = 0; p < n; ++p)
-          {
-            std::vector<double> z(m);
-            for (unsigned int i = 0; i < m; ++i)
-              z[i] = eta[p * m + i] + c[p] * v[p * m + i];
-            double z_norm = 0;
-            for (const double zi : z)
-              z_norm += zi * zi;
-            z_norm              = std::sqrt(z_norm);
-            const double shrink = (z_norm > linearisation[p].bound ?
-                                     linearisation[p].bound / z_norm :
-                                     1.);
-            for (unsigned int i = 0; i < m; ++i)
-              residual =
-                std::max(residual, std::abs(eta[p * m + i] - shrink * z[i]));
-          }
+          bound[p] = linearisation[p].bound;
+        const double residual = complementarity_residual(m, eta, v, bound, c);
         if (set_signature(linearisation) == previous_sets &&
             residual <= tolerance)
           {
