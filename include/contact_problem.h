@@ -45,6 +45,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <delassus_operator.h>
 #include <factorization.h>
 #include <friction.h>
 #include <manufactured_solution.h>
@@ -412,7 +413,7 @@ namespace Contact
     SparsityPattern               delassus_factor_pattern;
     SparseMatrix<double>          delassus_factor;
     LAPACKFullMatrix<double>      delassus_columns;
-    FullMatrix<double>            delassus_operator;
+    DelassusOperator              delassus_operator;
     Vector<double>                active_set_parameter;
     Vector<double>                friction_force;
     Vector<double>                slip_velocity;

@@ -105,8 +105,10 @@ namespace Contact
    * (g_p / |z_p|) (I - zhat zhat^T), gives two conditions in the local
    * basis (zhat, tangents of zhat): eta_p . zhat = g_p, and
    * v_p . t = beta_p eta_p . t with beta_p = (|z_p| - g_p) / (g_p c_p) >= 0
-   * along the other directions. Every Newton step is then one dense SPD
-   * solve (D + beta) on the unknowns that are not fixed. For m = 1 (2D)
+   * along the other directions. Every Newton step is then one SPD solve,
+   * on the body (active_set_constraints.cc) or on D (DelassusOperator,
+   * which solves for the forces or for the velocities, whichever set is
+   * smaller). For m = 1 (2D)
    * there are no such directions: the slip set fixes eta_p = g_p sign(z_p)
    * and the method ends when the sets and signs repeat, with (eta, v)
    * exact. For m = 2 the slip directions converge superlinearly; the method
@@ -251,23 +253,6 @@ namespace Contact
                         Vector<double>         &v,
                         std::vector<NodeState> &state);
 
-  /** The Newton step on a dense Delassus operator, for solve_tresca() and
-   *  solve_friction_newton(). */
-  void delassus_newton_step(const FullMatrix<double>             &D,
-                            const std::vector<NodeLinearisation> &linearisation,
-                            const Vector<double>                 &v_free,
-                            Vector<double>                       &eta,
-                            Vector<double>                       &v);
-
-  TrescaResult solve_tresca(const FullMatrix<double> &D,
-                            const unsigned int        n_components,
-                            const Vector<double>     &v_free,
-                            const Vector<double>     &g,
-                            const Vector<double>     &c,
-                            const unsigned int        max_iterations,
-                            Vector<double>           &eta,
-                            Vector<double>           &v,
-                            std::vector<NodeState>   &state);
 } // namespace Contact
 
 #endif

@@ -410,8 +410,8 @@ namespace Contact
         delassus_factor.set(s, row, value);
 
     // D = Y^T Y, each entry once, so D is exactly symmetric.
-    delassus_operator.reinit(n_columns, n_columns);
-    Vector<double> column(n_rows);
+    FullMatrix<double> D(n_columns, n_columns);
+    Vector<double>     column(n_rows);
     for (unsigned int s = 0; s < n_columns; ++s)
       {
         for (const auto &[row, value] : columns_of_Y[s])
@@ -421,11 +421,12 @@ namespace Contact
             double entry = 0;
             for (const auto &[row, value] : columns_of_Y[r])
               entry += value * column[row];
-            delassus_operator(r, s) = delassus_operator(s, r) = entry;
+            D(r, s) = D(s, r) = entry;
           }
         for (const auto &[row, value] : columns_of_Y[s])
           column[row] = 0.;
       }
+    delassus_operator = DelassusOperator(D, dim - 1);
   }
 
 
@@ -441,7 +442,7 @@ namespace Contact
   {
     const unsigned int n_columns = contact_nodes.size() * (dim - 1);
     delassus_columns.reinit(locally_owned_dofs.n_elements(), n_columns);
-    delassus_operator.reinit(n_columns, n_columns);
+    FullMatrix<double> D(n_columns, n_columns);
     Vector<double> unit(n_columns);
     VectorType     column(locally_owned_dofs, mpi_communicator);
     for (unsigned int s = 0; s < n_columns; ++s)
@@ -452,7 +453,7 @@ namespace Contact
         constraints.distribute(column);
         const Vector<double> v = tangential_velocities(column);
         for (unsigned int r = 0; r < n_columns; ++r)
-          delassus_operator(r, s) = v[r];
+          D(r, s) = v[r];
         unsigned int row = 0;
         for (const double value : column)
           delassus_columns(row++, s) = value;
@@ -464,14 +465,14 @@ namespace Contact
     double asymmetry = 0, largest = 0;
     for (unsigned int r = 0; r < n_columns; ++r)
       {
-        largest = std::max(largest, delassus_operator(r, r));
+        largest = std::max(largest, D(r, r));
         for (unsigned int s = 0; s < r; ++s)
           {
             const double mean =
-              (delassus_operator(r, s) + delassus_operator(s, r)) / 2;
+              (D(r, s) + D(s, r)) / 2;
             asymmetry =
-              std::max(asymmetry, std::abs(delassus_operator(r, s) - mean));
-            delassus_operator(r, s) = delassus_operator(s, r) = mean;
+              std::max(asymmetry, std::abs(D(r, s) - mean));
+            D(r, s) = D(s, r) = mean;
           }
       }
     AssertThrow(asymmetry <= 1e-8 * largest,
@@ -481,6 +482,7 @@ namespace Contact
                            " of its largest entry): the solves with K are "
                            "not accurate enough for the Delassus path; "
                            "choose 'Solver/Contact solver = constraints'."));
+    delassus_operator = DelassusOperator(D, dim - 1);
   }
 
 
@@ -792,8 +794,10 @@ namespace Contact
                 const std::vector<NodeLinearisation> &linearisation,
                 Vector<double>                       &eta,
                 Vector<double>                       &v) {
-                delassus_newton_step(
-                  delassus_operator, linearisation, free_slip_velocity, eta, v);
+                delassus_operator.newton_step(linearisation,
+                                              free_slip_velocity,
+                                              eta,
+                                              v);
               }};
     return {[this](const Vector<double> &eta, Vector<double> &v) {
               VectorType w;

@@ -413,8 +413,11 @@ namespace Contact
           << static_cast<double>(totals.solves_with_K) / n_time_steps
           << std::endl;
     if (totals.cg_iterations > 0)
-      pcout << "CG iterations per step: " << std::setprecision(4)
-            << static_cast<double>(totals.cg_iterations) / n_time_steps
+      // Rounded: the count moves by a few tenths with the round-off of the
+      // AMG coarse solve (the BLAS in use).
+      pcout << "CG iterations per step: "
+            << std::lround(static_cast<double>(totals.cg_iterations) /
+                           n_time_steps)
             << std::endl;
     pcout << "Energy at t = " << time << ": kinetic " << std::setprecision(6)
           << energy.kinetic << ", elastic " << energy.elastic

@@ -15,6 +15,7 @@
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <delassus_operator.h>
 #include <friction.h>
 #include <parameters.h>
 
@@ -89,6 +90,7 @@ void check(const std::string    &name,
 {
   const unsigned int       n = v_free.size() / m;
   const FullMatrix<double> D = make_delassus(n, m);
+  const DelassusOperator   delassus(D, m);
   Vector<double>           c(n);
   for (unsigned int p = 0; p < n; ++p)
     c[p] = 0.05 / D(p * m, p * m);
@@ -123,7 +125,7 @@ void check(const std::string    &name,
                 node.force = node.bound;
                 node.slope = 0;
               }
-          delassus_newton_step(D, used, v_free, eta, v);
+          delassus.newton_step(used, v_free, eta, v);
         };
       eta.reinit(n * m);
       v = v_free;
@@ -159,7 +161,7 @@ void check(const std::string    &name,
       for (unsigned int p = 0; p < n; ++p)
         bounds[p] = law.bound(node_norm(v_fixed, p, m));
       active_set_iterations +=
-        solve_tresca(D, m, v_free, bounds, c, 500, eta_fixed, v_fixed, state)
+        solve_tresca(delassus, v_free, bounds, c, 500, eta_fixed, v_fixed, state)
           .iterations;
       old_v -= v_fixed;
       if (old_v.linfty_norm() <= 1e-13 * v_free.linfty_norm())
@@ -186,8 +188,64 @@ void check(const std::string    &name,
             << ")" << std::endl;
 }
 
+// One Newton step solved for the forces and for the velocities
+// (DelassusOperator): the same step, for a linearisation with stick nodes,
+// Tresca slip nodes, sloped slip nodes and (m = 2) a slip node with
+// beta = 0.
+void compare_forms(const unsigned int m)
+{
+  const unsigned int             n = 12;
+  const FullMatrix<double>       D = make_delassus(n, m);
+  const DelassusOperator         delassus(D, m);
+  std::vector<NodeLinearisation> linearisation(n);
+  Vector<double>                 v_free(n * m);
+  for (unsigned int p = 0; p < n; ++p)
+    {
+      NodeLinearisation &node = linearisation[p];
+      node.direction.assign(m, 0.);
+      node.direction[0] = (p % 2 ? -1. : 1.);
+      if (m == 2)
+        {
+          node.direction[0] = std::cos(0.5 * p);
+          node.direction[1] = std::sin(0.5 * p);
+        }
+      for (unsigned int i = 0; i < m; ++i)
+        v_free[p * m + i] = std::sin(1. + p + 3. * i);
+      if (p < 4)
+        continue;
+      node.state = NodeState::slip;
+      node.bound = node.force = 0.2 + 0.01 * p;
+      node.beta               = (p == 5 ? 0. : 0.1 * p);
+      if (p >= 8)
+        node.slope = -0.3 * p;
+    }
+  Vector<double> eta_force(n * m), v_force(n * m), eta_velocity(n * m),
+    v_velocity(n * m);
+  delassus.newton_step(linearisation,
+                       v_free,
+                       eta_force,
+                       v_force,
+                       DelassusOperator::Form::force);
+  delassus.newton_step(linearisation,
+                       v_free,
+                       eta_velocity,
+                       v_velocity,
+                       DelassusOperator::Form::velocity);
+  eta_velocity -= eta_force;
+  v_velocity -= v_force;
+  std::cout << "Newton step on D (m = " << m
+            << "): force and velocity form agree: "
+            << (eta_velocity.linfty_norm() <= 1e-10 * eta_force.linfty_norm() &&
+                    v_velocity.linfty_norm() <= 1e-10 * v_free.linfty_norm() ?
+                  "yes" :
+                  "no")
+            << std::endl;
+}
+
 int main()
 {
+  compare_forms(1);
+  compare_forms(2);
   const unsigned int n = 12;
   Vector<double>     ramp(n), turning(2 * n);
   for (unsigned int p = 0; p < n; ++p)

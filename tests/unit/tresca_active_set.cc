@@ -8,6 +8,7 @@
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <delassus_operator.h>
 #include <friction.h>
 
 #include "make_delassus.h"
@@ -59,7 +60,7 @@ void check(const std::string    &name,
     c[p] = c_factor / D(p * m, p * m);
   std::vector<NodeState> state;
   const TrescaResult     result =
-    solve_tresca(D, m, v_free, g, c, 100, eta, v, state);
+    solve_tresca(DelassusOperator(D, m), v_free, g, c, 100, eta, v, state);
 
   // The friction conditions, and v = v_free - D eta.
   Vector<double> residual(n * m);

@@ -1,0 +1,93 @@
+/**
+ * The Delassus operator D = C K^{-1} C^T on the tangential unknowns of
+ * Gamma_3 and the Newton step of the friction solvers on it.
+ */
+#ifndef contact_delassus_operator_h
+#define contact_delassus_operator_h
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <friction.h>
+
+#include <vector>
+
+namespace Contact
+{
+  using namespace dealii;
+
+  /**
+   * D, dense, symmetric positive semidefinite, with m = dim - 1 tangential
+   * unknowns per node (node-major), and its inverse W = D^{-1} where D is
+   * definite. Both are formed once per time step size; the products go
+   * through BLAS and every Newton step factorises one dense block.
+   *
+   * A Newton step (the linearisation of friction.h) fixes, in every node's
+   * local basis, either the velocity (v' = 0: stick, or a slip direction
+   * with beta = 0), or the force (eta' = force: the frozen bound along
+   * zhat), or a Robin relation between them (eta' = force + sigma v', with
+   * sigma = 1/beta across zhat and sigma = g'(s) along zhat for the full
+   * law). With v = v_free - D eta it can be solved for the forces on the
+   * unknowns that do not fix the force,
+   *   (D'_FF + diag(1/sigma)) eta'_F = ...            (force form),
+   * or, through eta = W (v_free - v), for the velocities on the unknowns
+   * that do not fix the velocity,
+   *   (W'_UU + diag(sigma)) v'_U = ...                (velocity form),
+   * where D' = Q^T D Q and W' = Q^T W Q in the local bases Q. Both give the
+   * same step; the force form's block is the stick set (and the Robin
+   * rows), the velocity form's the slip set. The step takes the smaller
+   * one: while most of Gamma_3 sticks a step costs a product with W and a
+   * small factorisation, and no step factorises more than the whole of D.
+   */
+  class DelassusOperator
+  {
+  public:
+    enum class Form
+    {
+      force,
+      velocity,
+      smaller
+    };
+
+    DelassusOperator() = default;
+
+    /** Takes D with m = n_components unknowns per node; forms W if D is
+     *  positive definite. */
+    DelassusOperator(const FullMatrix<double> &D,
+                     const unsigned int        n_components);
+
+    unsigned int size() const;
+
+    /** y = D x. */
+    void vmult(Vector<double> &y, const Vector<double> &x) const;
+
+    /** The forces eta and velocities v = v_free - D eta of one Newton step
+     *  for the given linearisation; v_p = 0 on stick nodes. The form is
+     *  chosen by size unless given (the tests compare them). */
+    void newton_step(const std::vector<NodeLinearisation> &linearisation,
+                     const Vector<double>                 &v_free,
+                     Vector<double>                       &eta,
+                     Vector<double>                       &v,
+                     const Form form = Form::smaller) const;
+
+  private:
+    unsigned int             n_components = 1;
+    LAPACKFullMatrix<double> D;
+    /** D^{-1}, empty where D is singular (a tangent that cannot move). */
+    LAPACKFullMatrix<double> W;
+  };
+
+
+  /** The Tresca problem on a dense Delassus operator (friction.h). */
+  TrescaResult solve_tresca(const DelassusOperator &D,
+                            const Vector<double>   &v_free,
+                            const Vector<double>   &g,
+                            const Vector<double>   &c,
+                            const unsigned int      max_iterations,
+                            Vector<double>         &eta,
+                            Vector<double>         &v,
+                            std::vector<NodeState> &state);
+} // namespace Contact
+
+#endif

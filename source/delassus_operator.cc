@@ -1,0 +1,372 @@
+/* The Delassus operator on Gamma_3 and the dense Newton step of the friction
+   solvers on it (delassus_operator.h). */
+
+#include <deal.II/base/exceptions.h>
+
+#include <delassus_operator.h>
+
+#include <cmath>
+
+namespace Contact
+{
+  DelassusOperator::DelassusOperator(const FullMatrix<double> &matrix,
+                                     const unsigned int        n_components)
+    : n_components(n_components)
+  {
+    AssertDimension(matrix.m() % n_components, 0);
+    D.reinit(matrix.m());
+    D = matrix;
+
+    // W only where D is definite and well conditioned: a zero diagonal
+    // entry is a tangent whose dofs are all constrained, and the forces
+    // eta = W (v_free - v) leave a velocity residual cond(D) times that of
+    // a solve with D, so above cond(D) = 1e4 (at most four digits lost; a
+    // floating body held by friction alone, tests/scenes/pure_stick, has
+    // 1e8, the other test scenes 3 to 80, and 2000 with a nearly
+    // incompressible material) the force form alone applies.
+    for (unsigned int r = 0; r < matrix.m(); ++r)
+      if (!(matrix(r, r) > 0))
+        return;
+    LAPACKFullMatrix<double> cholesky(D);
+    const double             norm = cholesky.l1_norm();
+    cholesky.set_property(LAPACKSupport::symmetric);
+    try
+      {
+        cholesky.compute_cholesky_factorization();
+        if (cholesky.reciprocal_condition_number(norm) < 1e-4)
+          return;
+        W = D;
+        W.set_property(LAPACKSupport::symmetric);
+        W.invert();
+      }
+    catch (const ExceptionBase &)
+      {
+        W.reinit(0, 0);
+        return;
+      }
+    for (unsigned int r = 0; r < W.m(); ++r)
+      for (unsigned int s = 0; s < r; ++s)
+        W(s, r) = W(r, s) = (W(r, s) + W(s, r)) / 2;
+  }
+
+
+  unsigned int DelassusOperator::size() const
+  {
+    return D.m();
+  }
+
+
+  void DelassusOperator::vmult(Vector<double>       &y,
+                               const Vector<double> &x) const
+  {
+    D.vmult(y, x);
+  }
+
+
+  // @sect4{The Newton step}
+
+  namespace
+  {
+    // What one Newton step fixes on an unknown in its node's local basis:
+    // the velocity (v' = 0), the force (eta' = force), or a Robin relation
+    // eta' = force + sigma v' (sigma = 1/beta across zhat, sigma = g'(s) < 0
+    // along zhat for the full law).
+    struct LocalCondition
+    {
+      enum Kind
+      {
+        fixed_velocity,
+        fixed_force,
+        robin
+      } kind       = fixed_velocity;
+      double force = 0;
+      double sigma = 0;
+    };
+
+    // The conditions of the linearisation (friction.h). Along zhat of a slip
+    // node the force is fixed unless the slope of the bound is above
+    // round-off against D'_rr; a unit that cannot move (D'_rr = 0) takes
+    // eta' = 0.
+    std::vector<LocalCondition>
+    local_conditions(const std::vector<NodeLinearisation> &linearisation,
+                     const std::vector<double>            &rotated_diagonal)
+    {
+      const unsigned int n = linearisation.size(),
+                         m = rotated_diagonal.size() / std::max(n, 1u);
+      std::vector<LocalCondition> conditions(n * m);
+      for (unsigned int p = 0; p < n; ++p)
+        {
+          const NodeLinearisation &node = linearisation[p];
+          const bool slip = (node.state == NodeState::slip && node.bound > 0);
+          for (unsigned int i = 0; i < m; ++i)
+            {
+              const unsigned int r    = p * m + i;
+              const double       d    = rotated_diagonal[r];
+              LocalCondition    &cond = conditions[r];
+              if (!slip && !(node.state == NodeState::stick && d > 0))
+                cond.kind = LocalCondition::fixed_force;
+              else if (slip && i == 0)
+                {
+                  cond.force = node.force;
+                  if (-node.slope * d > 1e-14 * (1. + d * node.bound))
+                    {
+                      cond.kind  = LocalCondition::robin;
+                      cond.sigma = node.slope;
+                    }
+                  else
+                    cond.kind = LocalCondition::fixed_force;
+                }
+              else if (slip && node.beta > 0)
+                {
+                  cond.kind  = LocalCondition::robin;
+                  cond.sigma = 1. / node.beta;
+                }
+              else if (slip && d == 0)
+                cond.kind = LocalCondition::fixed_force;
+            }
+        }
+      return conditions;
+    }
+
+    // M' = Q^T M Q in the nodes' local bases, on the rows and columns of
+    // `unknowns`: column by column, each first combined from M's columns of
+    // its node (contiguous in memory), then its rows.
+    LAPACKFullMatrix<double>
+    rotated_block(const LAPACKFullMatrix<double>        &M,
+                  const std::vector<FullMatrix<double>> &Q,
+                  const std::vector<unsigned int>       &unknowns)
+    {
+      const unsigned int m = Q.empty() ? 1 : Q[0].m(), size = unknowns.size();
+      LAPACKFullMatrix<double> block(size, size);
+      Vector<double>           column(M.m());
+      // LAPACKFullMatrix stores its columns contiguously.
+      const auto M_column = [&M](const unsigned int c) {
+        return Vector<double>(&M(0, c), &M(0, c) + M.m());
+      };
+      for (unsigned int b = 0; b < size; ++b)
+        {
+          const unsigned int q = unknowns[b] / m, j0 = unknowns[b] % m;
+          column = 0.;
+          for (unsigned int j = 0; j < m; ++j)
+            {
+              const double factor = Q[q](j, j0);
+              if (factor != 0.)
+                column.add(factor, M_column(q * m + j));
+            }
+          for (unsigned int a = 0; a < size; ++a)
+            {
+              const unsigned int p = unknowns[a] / m, i0 = unknowns[a] % m;
+              double             entry = 0;
+              for (unsigned int i = 0; i < m; ++i)
+                entry += Q[p](i, i0) * column[p * m + i];
+              block(a, b) = entry;
+            }
+        }
+      return block;
+    }
+
+    // y = Q x (to the nodes' tangents) or Q^T x (to the local bases).
+    void rotate(const std::vector<FullMatrix<double>> &Q,
+                const Vector<double>                  &x,
+                Vector<double>                        &y,
+                const bool                             transpose)
+    {
+      const unsigned int n = Q.size(), m = n > 0 ? Q[0].m() : 1;
+      y.reinit(x.size());
+      for (unsigned int p = 0; p < n; ++p)
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int a = 0; a < m; ++a)
+            y[p * m + i] +=
+              (transpose ? Q[p](a, i) : Q[p](i, a)) * x[p * m + a];
+    }
+
+    // Solves block x = rhs in place: by Cholesky where the block is SPD
+    // (no Robin row of the weakening), by LU where it is known to be
+    // indefinite (such a row in the force form, whose shift 1/g' is large
+    // and negative); in the velocity form the weakening's shift g' may
+    // leave the block definite, so Cholesky is tried first, on a copy.
+    enum class Definiteness
+    {
+      positive,
+      indefinite,
+      unknown
+    };
+
+    void solve_block(LAPACKFullMatrix<double> &block,
+                     Vector<double>           &rhs,
+                     const Definiteness        definiteness)
+    {
+      if (rhs.size() == 0)
+        return;
+      if (definiteness != Definiteness::indefinite)
+        {
+          LAPACKFullMatrix<double> copy;
+          if (definiteness == Definiteness::unknown)
+            copy = block;
+          try
+            {
+              block.set_property(LAPACKSupport::symmetric);
+              block.compute_cholesky_factorization();
+              block.solve(rhs);
+              return;
+            }
+          catch (const ExceptionBase &)
+            {
+              AssertThrow(definiteness == Definiteness::unknown,
+                          ExcMessage("A Newton step on Gamma_3 met a block "
+                                     "of the Delassus operator that is not "
+                                     "positive definite: D = C K^{-1} C^T "
+                                     "is singular to round-off."));
+              block = copy;
+            }
+        }
+      block.compute_lu_factorization();
+      block.solve(rhs);
+    }
+  } // namespace
+
+
+  // The force form: eta' = force where it is fixed, and on the others
+  //   (D'_FF + diag(1/sigma)) eta'_F = v'_free,F + (force/sigma)_F
+  //                                    - D'_FX eta'_X,
+  // 1/sigma = 0 where the velocity is fixed (v'_r = 0 is row r of
+  // v' = v'_free - D' eta'); a Robin row eta' = f + sigma v' divided by sigma
+  // is symmetric. The velocity form: v' = 0 where the velocity is fixed, and
+  // with eta' = W'(v'_free - v') on the others
+  //   (W'_UU + diag(sigma)) v'_U = (W' v'_free)_U - force_U,
+  // sigma = 0 where the force is fixed. Either way eta follows, and then
+  // v = v_free - D eta.
+  void DelassusOperator::newton_step(
+    const std::vector<NodeLinearisation> &linearisation,
+    const Vector<double>                 &v_free,
+    Vector<double>                       &eta,
+    Vector<double>                       &v,
+    const Form                            form) const
+  {
+    const unsigned int n = linearisation.size(), m = n_components;
+    AssertDimension(n * m, size());
+    std::vector<FullMatrix<double>> Q;
+    for (const NodeLinearisation &node : linearisation)
+      Q.push_back(local_basis(node));
+    std::vector<double> rotated_diagonal(n * m);
+    for (unsigned int r = 0; r < n * m; ++r)
+      for (unsigned int i = 0; i < m; ++i)
+        for (unsigned int j = 0; j < m; ++j)
+          rotated_diagonal[r] += Q[r / m](i, r % m) *
+                                 D((r / m) * m + i, (r / m) * m + j) *
+                                 Q[r / m](j, r % m);
+    const std::vector<LocalCondition> conditions =
+      local_conditions(linearisation, rotated_diagonal);
+
+    std::vector<unsigned int> force_unknowns, velocity_unknowns;
+    bool weakening = false;
+    for (unsigned int r = 0; r < n * m; ++r)
+      {
+        if (conditions[r].kind != LocalCondition::fixed_force)
+          force_unknowns.push_back(r);
+        if (conditions[r].kind != LocalCondition::fixed_velocity)
+          velocity_unknowns.push_back(r);
+        weakening |= (conditions[r].kind == LocalCondition::robin &&
+                      conditions[r].sigma < 0);
+      }
+    const bool use_velocity_form =
+      W.m() > 0 && (form == Form::velocity ||
+                    (form == Form::smaller &&
+                     velocity_unknowns.size() <= force_unknowns.size()));
+    Assert(form != Form::velocity || W.m() > 0,
+           ExcMessage("The velocity form needs D to be definite."));
+
+    Vector<double> rotated_eta(n * m);
+    if (use_velocity_form)
+      {
+        Vector<double> W_v_free(n * m), rotated(n * m);
+        W.vmult(W_v_free, v_free);
+        rotate(Q, W_v_free, rotated, true);
+        LAPACKFullMatrix<double> block = rotated_block(W, Q, velocity_unknowns);
+        Vector<double>           rhs(velocity_unknowns.size());
+        for (unsigned int a = 0; a < rhs.size(); ++a)
+          {
+            const LocalCondition &cond = conditions[velocity_unknowns[a]];
+            rhs[a] = rotated[velocity_unknowns[a]] - cond.force;
+            block(a, a) += cond.sigma;
+          }
+        solve_block(block,
+                    rhs,
+                    weakening ? Definiteness::unknown : Definiteness::positive);
+        Vector<double> rotated_v(n * m), slip(n * m);
+        for (unsigned int a = 0; a < rhs.size(); ++a)
+          rotated_v[velocity_unknowns[a]] = rhs[a];
+        rotate(Q, rotated_v, slip, false);
+        slip.sadd(-1., 1., v_free);
+        W.vmult(eta, slip);
+      }
+    else
+      {
+        Vector<double> fixed_forces(n * m), D_fixed(n * m), rotated(n * m);
+        for (unsigned int r = 0; r < n * m; ++r)
+          if (conditions[r].kind == LocalCondition::fixed_force)
+            fixed_forces[r] = conditions[r].force;
+        rotate(Q, fixed_forces, rotated, false);
+        D.vmult(D_fixed, rotated);
+        D_fixed.sadd(-1., 1., v_free);
+        rotate(Q, D_fixed, rotated, true);
+        LAPACKFullMatrix<double> block = rotated_block(D, Q, force_unknowns);
+        Vector<double>           rhs(force_unknowns.size());
+        for (unsigned int a = 0; a < rhs.size(); ++a)
+          {
+            const LocalCondition &cond = conditions[force_unknowns[a]];
+            rhs[a]                     = rotated[force_unknowns[a]];
+            if (cond.kind == LocalCondition::robin)
+              {
+                rhs[a] += cond.force / cond.sigma;
+                block(a, a) += 1. / cond.sigma;
+              }
+          }
+        solve_block(block,
+                    rhs,
+                    weakening ? Definiteness::indefinite : Definiteness::positive);
+        rotated_eta = fixed_forces;
+        for (unsigned int a = 0; a < rhs.size(); ++a)
+          rotated_eta[force_unknowns[a]] = rhs[a];
+        rotate(Q, rotated_eta, eta, false);
+      }
+
+    D.vmult(v, eta);
+    v.sadd(-1., 1., v_free);
+    for (unsigned int p = 0; p < n; ++p)
+      if (linearisation[p].state == NodeState::stick)
+        for (unsigned int i = 0; i < m; ++i)
+          v[p * m + i] = 0.;
+  }
+
+
+  TrescaResult solve_tresca(const DelassusOperator &D,
+                            const Vector<double>   &v_free,
+                            const Vector<double>   &g,
+                            const Vector<double>   &c,
+                            const unsigned int      max_iterations,
+                            Vector<double>         &eta,
+                            Vector<double>         &v,
+                            std::vector<NodeState> &state)
+  {
+    AssertDimension(D.size(), v_free.size());
+    const auto velocity = [&](const Vector<double> &eta, Vector<double> &v) {
+      D.vmult(v, eta);
+      v.sadd(-1., 1., v_free);
+    };
+    const auto step = [&](const std::vector<NodeLinearisation> &linearisation,
+                          Vector<double>                       &eta,
+                          Vector<double>                       &v) {
+      D.newton_step(linearisation, v_free, eta, v);
+    };
+    return solve_tresca(velocity,
+                        step,
+                        D.size() / g.size(),
+                        g,
+                        c,
+                        max_iterations,
+                        eta,
+                        v,
+                        state);
+  }
+} // namespace Contact
