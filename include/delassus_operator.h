@@ -20,8 +20,9 @@ namespace Contact
   /**
    * D, dense, symmetric positive semidefinite, with m = dim - 1 tangential
    * unknowns per node (node-major), and its inverse W = D^{-1} where D is
-   * definite. Both are formed once per time step size; the products go
-   * through BLAS and every Newton step factorises one dense block.
+   * definite with cond(D) <= 1e4. Both are formed once per time step size;
+   * products with them and every Newton step's dense factorisation go
+   * through BLAS/LAPACK.
    *
    * A Newton step (the linearisation of friction.h) fixes, in every node's
    * local basis, either the velocity (v' = 0: stick, or a slip direction
@@ -53,7 +54,7 @@ namespace Contact
     DelassusOperator() = default;
 
     /** Takes D with m = n_components unknowns per node; forms W if D is
-     *  positive definite. */
+     *  positive definite with cond(D) <= 1e4. */
     DelassusOperator(const FullMatrix<double> &D,
                      const unsigned int        n_components);
 
@@ -74,7 +75,8 @@ namespace Contact
   private:
     unsigned int             n_components = 1;
     LAPACKFullMatrix<double> D;
-    /** D^{-1}, empty where D is singular (a tangent that cannot move). */
+    /** D^{-1}, empty where D is singular (a tangent that cannot move) or
+     *  cond(D) > 1e4. */
     LAPACKFullMatrix<double> W;
   };
 

@@ -443,8 +443,8 @@ namespace Contact
     const unsigned int n_columns = contact_nodes.size() * (dim - 1);
     delassus_columns.reinit(locally_owned_dofs.n_elements(), n_columns);
     FullMatrix<double> D(n_columns, n_columns);
-    Vector<double> unit(n_columns);
-    VectorType     column(locally_owned_dofs, mpi_communicator);
+    Vector<double>     unit(n_columns);
+    VectorType         column(locally_owned_dofs, mpi_communicator);
     for (unsigned int s = 0; s < n_columns; ++s)
       {
         unit[s] = 1.;
@@ -468,10 +468,8 @@ namespace Contact
         largest = std::max(largest, D(r, r));
         for (unsigned int s = 0; s < r; ++s)
           {
-            const double mean =
-              (D(r, s) + D(s, r)) / 2;
-            asymmetry =
-              std::max(asymmetry, std::abs(D(r, s) - mean));
+            const double mean = (D(r, s) + D(s, r)) / 2;
+            asymmetry         = std::max(asymmetry, std::abs(D(r, s) - mean));
             D(r, s) = D(s, r) = mean;
           }
       }

@@ -56,8 +56,7 @@ namespace Contact
   }
 
 
-  void DelassusOperator::vmult(Vector<double>       &y,
-                               const Vector<double> &x) const
+  void DelassusOperator::vmult(Vector<double> &y, const Vector<double> &x) const
   {
     D.vmult(y, x);
   }
@@ -139,19 +138,18 @@ namespace Contact
       const unsigned int m = Q.empty() ? 1 : Q[0].m(), size = unknowns.size();
       LAPACKFullMatrix<double> block(size, size);
       Vector<double>           column(M.m());
-      // LAPACKFullMatrix stores its columns contiguously.
-      const auto M_column = [&M](const unsigned int c) {
-        return Vector<double>(&M(0, c), &M(0, c) + M.m());
-      };
       for (unsigned int b = 0; b < size; ++b)
         {
           const unsigned int q = unknowns[b] / m, j0 = unknowns[b] % m;
           column = 0.;
           for (unsigned int j = 0; j < m; ++j)
             {
-              const double factor = Q[q](j, j0);
+              // LAPACKFullMatrix stores its columns contiguously.
+              const double  factor = Q[q](j, j0);
+              const double *entry  = &M(0, q * m + j);
               if (factor != 0.)
-                column.add(factor, M_column(q * m + j));
+                for (double &c : column)
+                  c += factor * *entry++;
             }
           for (unsigned int a = 0; a < size; ++a)
             {
@@ -181,7 +179,7 @@ namespace Contact
     }
 
     // Solves block x = rhs in place: by Cholesky where the block is SPD
-    // (no Robin row of the weakening), by LU where it is known to be
+    // (no Robin row of the weakening), by LU where it is most likely
     // indefinite (such a row in the force form, whose shift 1/g' is large
     // and negative); in the velocity form the weakening's shift g' may
     // leave the block definite, so Cholesky is tried first, on a copy.
@@ -259,7 +257,7 @@ namespace Contact
       local_conditions(linearisation, rotated_diagonal);
 
     std::vector<unsigned int> force_unknowns, velocity_unknowns;
-    bool weakening = false;
+    bool                      weakening = false;
     for (unsigned int r = 0; r < n * m; ++r)
       {
         if (conditions[r].kind != LocalCondition::fixed_force)
@@ -273,8 +271,8 @@ namespace Contact
       W.m() > 0 && (form == Form::velocity ||
                     (form == Form::smaller &&
                      velocity_unknowns.size() <= force_unknowns.size()));
-    Assert(form != Form::velocity || W.m() > 0,
-           ExcMessage("The velocity form needs D to be definite."));
+    AssertThrow(form != Form::velocity || W.m() > 0,
+                ExcMessage("The velocity form needs W = D^{-1}."));
 
     Vector<double> rotated_eta(n * m);
     if (use_velocity_form)
@@ -299,6 +297,14 @@ namespace Contact
         rotate(Q, rotated_v, slip, false);
         slip.sadd(-1., 1., v_free);
         W.vmult(eta, slip);
+        // Where the step fixes the force it is that force, not W's
+        // approximation of it (cond(D) eps away), so that a converged
+        // active set iteration is exact there as in the force form.
+        rotate(Q, eta, rotated_eta, true);
+        for (unsigned int r = 0; r < n * m; ++r)
+          if (conditions[r].kind == LocalCondition::fixed_force)
+            rotated_eta[r] = conditions[r].force;
+        rotate(Q, rotated_eta, eta, false);
       }
     else
       {
@@ -324,7 +330,8 @@ namespace Contact
           }
         solve_block(block,
                     rhs,
-                    weakening ? Definiteness::indefinite : Definiteness::positive);
+                    weakening ? Definiteness::indefinite :
+                                Definiteness::positive);
         rotated_eta = fixed_forces;
         for (unsigned int a = 0; a < rhs.size(); ++a)
           rotated_eta[force_unknowns[a]] = rhs[a];
@@ -359,14 +366,7 @@ namespace Contact
                           Vector<double>                       &v) {
       D.newton_step(linearisation, v_free, eta, v);
     };
-    return solve_tresca(velocity,
-                        step,
-                        D.size() / g.size(),
-                        g,
-                        c,
-                        max_iterations,
-                        eta,
-                        v,
-                        state);
+    return solve_tresca(
+      velocity, step, D.size() / g.size(), g, c, max_iterations, eta, v, state);
   }
 } // namespace Contact

@@ -161,7 +161,8 @@ void check(const std::string    &name,
       for (unsigned int p = 0; p < n; ++p)
         bounds[p] = law.bound(node_norm(v_fixed, p, m));
       active_set_iterations +=
-        solve_tresca(delassus, v_free, bounds, c, 500, eta_fixed, v_fixed, state)
+        solve_tresca(
+          delassus, v_free, bounds, c, 500, eta_fixed, v_fixed, state)
           .iterations;
       old_v -= v_fixed;
       if (old_v.linfty_norm() <= 1e-13 * v_free.linfty_norm())
@@ -221,11 +222,8 @@ void compare_forms(const unsigned int m)
     }
   Vector<double> eta_force(n * m), v_force(n * m), eta_velocity(n * m),
     v_velocity(n * m);
-  delassus.newton_step(linearisation,
-                       v_free,
-                       eta_force,
-                       v_force,
-                       DelassusOperator::Form::force);
+  delassus.newton_step(
+    linearisation, v_free, eta_force, v_force, DelassusOperator::Form::force);
   delassus.newton_step(linearisation,
                        v_free,
                        eta_velocity,
