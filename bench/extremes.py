@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The extremes of the data (DESIGN.md section 6, issue 6) and the
+"""The extremes of the data and the
 stability map of the convexification, in one command:
 
     python3 bench/extremes.py [--contact build/contact]

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The two contact solver paths without CHOLMOD (issue 7): builds the
+"""The two contact solver paths without CHOLMOD: builds the
 program in Release and runs the same scenes with a Trilinos Amesos solver
 (KLU on one process, MUMPS on two) on the Delassus path, whose D comes from
 Z = K^{-1} C^T (one solve per tangential unknown of Gamma_3 at the start,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Benchmark of the paper's scene (issue 5): builds the program in Release
+"""Benchmark of the paper's scene: builds the program in Release
 and measures, on this machine, whole runs with VTU output off and the time
 series on.
 

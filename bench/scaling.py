@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Strong scaling of the big 3D scene (issue 7): builds the program in
+"""Strong scaling of the big 3D scene: builds the program in
 Release and runs prm/barboteu2015_3d_1m.prm (1.1 million unknowns, CG with
 algebraic multigrid, 10 time steps) on 1 and 2 MPI processes, and the same
 scene once coarser (h = 1/56) on 2 processes, to see how the linear
