@@ -1,6 +1,6 @@
 /**
  * An exact solution of the frictional contact problem, for verification
- * (DESIGN.md section 4b). On the box with Gamma_1 = {x = 0} and
+ * (doc/verification.md). On the box with Gamma_1 = {x = 0} and
  * Gamma_3 = {y = 0}:
  *
  *   u(x, t) = theta(t) U(x),   theta(t) = A (t + t^2/2),

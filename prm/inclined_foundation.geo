@@ -1,4 +1,4 @@
-// A block on an inclined foundation (issue 4): the parallelogram with
+// A block on an inclined foundation: the parallelogram with
 // corners (0,0), (1,0.25), (1,0.75), (0,0.5), i.e. the paper's block sheared
 // so that Gamma_3 rises at 14 degrees. Physical ids are the boundary ids of
 // the .prm: 1 clamped (x = 0), 2 contact (the inclined base), 3 loaded top,

@@ -1,5 +1,5 @@
 /* What a run gives the user: VTU/PVD, time_series.csv, the used parameters
-   and the console lines (DESIGN.md section 5). */
+   and the console lines. */
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>

@@ -1,4 +1,4 @@
-/* Errors against the manufactured solution (DESIGN.md section 4b). */
+/* Errors against the manufactured solution. */
 
 #include <deal.II/base/exceptions.h>
 

@@ -1,4 +1,4 @@
-/* Issue 4's invariance checks, on the paper's scene at h = k = 1/16:
+/* Invariance checks, on the paper's scene at h = k = 1/16:
 
    (a) the block extruded to (0,1) x (0,0.5) x (0,0.5) with both z faces as
        symmetry planes is the 2D (plane strain) problem: per step, the 3D
