@@ -11,6 +11,7 @@
 #include <parameters.h>
 
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace Contact
@@ -190,6 +191,11 @@ namespace Contact
   {
     const FrictionLaw    &law;
     const Vector<double> &weights;
+    /** The steepest weakening per unit weight, |g_p'| / m_p, that the
+     *  Newton model takes while it is far from the solution (infinite: the
+     *  true slope throughout). Below the convexity limit of the step's
+     *  problem it keeps the model convex. */
+    double weakening_cap = std::numeric_limits<double>::infinity();
 
     double bound(const unsigned int p, const double s) const;
     double slope(const unsigned int p, const double s) const;
@@ -228,10 +234,17 @@ namespace Contact
    * symmetric; it is indefinite where the step problem is not convex
    * (g_p' < 0 is the weakening). The solutions of the law are the
    * stationary points of the step's energy E (NodalLaw), and the
-   * globalisation keeps the iterates going down E: a Newton step that does
-   * not lower E is halved twice, and if that fails a convexification step
-   * is taken instead (the Tresca problem with the bounds of the current slip
-   * rates), which lowers E because j is concave along |v| (a majorisation).
+   * globalisation keeps the iterates going down E. While the sets change,
+   * the model caps the weakening at law.weakening_cap (below the convexity
+   * limit the model is convex and its step a direction of descent; with
+   * the true slope, a node just entering slip is pulled back towards
+   * stick); once the sets repeat after a full step and max |F_p| is below
+   * a tenth of max_p g_p(0), the true slope takes over for the quadratic
+   * convergence, and hands back to the cap if its step does not lower E.
+   * A step that does not lower E is halved twice, and if that fails a
+   * convexification step is taken instead (the Tresca problem with the
+   * bounds of the current slip rates), which lowers E because j is concave
+   * along |v| (a majorisation).
    * So the method cannot end on a maximum or saddle of E, and where the step
    * problem has several solutions it ends on a local minimum reached by
    * descent from the previous step's state: (eta, v) on entry are the

@@ -342,12 +342,14 @@ namespace Contact
     }
 
     // The linearisation at (eta, v) with the bound of the current slip rate,
-    // g_p(|v_p|), and on slip nodes its tangent along zhat.
+    // g_p(|v_p|), and on slip nodes its tangent along zhat, capped at
+    // law.weakening_cap if `capped`.
     std::vector<NodeLinearisation> linearise_law(const unsigned int    m,
                                                  const Vector<double> &eta,
                                                  const Vector<double> &v,
                                                  const NodalLaw       &law,
-                                                 const Vector<double> &c)
+                                                 const Vector<double> &c,
+                                                 const bool            capped)
     {
       const unsigned int n = c.size();
       Vector<double>     g(n);
@@ -364,6 +366,9 @@ namespace Contact
             for (unsigned int i = 0; i < m; ++i)
               along += result[p].direction[i] * v[p * m + i];
             result[p].slope = law.slope(p, node_norm(v, p, m));
+            if (capped)
+              result[p].slope =
+                std::max(result[p].slope, -law.weakening_cap * law.weights[p]);
             result[p].force = g[p] - result[p].slope * along;
           }
       return result;
@@ -397,6 +402,41 @@ namespace Contact
   }
 
 
+  namespace
+  {
+    // Backtracking on E from (eta, v) towards the Newton iterate
+    // (new_eta, new_v), which (eta, v) move to together, v = v_free - D eta
+    // being affine in eta: halved at most twice. Returns the step length,
+    // 0 if E did not decrease.
+    double backtrack(const NodalLaw       &law,
+                     const Vector<double> &v_free,
+                     const Vector<double> &eta,
+                     const Vector<double> &v,
+                     const double          energy,
+                     Vector<double>       &new_eta,
+                     Vector<double>       &new_v,
+                     double               &new_energy)
+    {
+      double     scale = 0;
+      const auto full_eta(new_eta), full_v(new_v);
+      const auto lowered = [&]() {
+        new_energy = law.energy(v_free, new_eta, new_v, scale);
+        return new_energy <= energy + 1e-13 * scale;
+      };
+      for (double length = 1.; length > 0.2; length /= 2)
+        {
+          new_eta = eta;
+          new_eta.add(length, full_eta, -length, eta);
+          new_v = v;
+          new_v.add(length, full_v, -length, v);
+          if (lowered())
+            return length;
+        }
+      return 0.;
+    }
+  } // namespace
+
+
   FrictionNewtonResult
   solve_friction_newton(const TrescaVelocity   &velocity,
                         const TrescaNewtonStep &newton_step,
@@ -417,43 +457,33 @@ namespace Contact
     for (unsigned int p = 0; p < n; ++p)
       largest_bound = std::max(largest_bound, law.bound(p, 0.));
     const double tolerance = 1e-12 * largest_bound;
+    const bool   has_cap   = std::isfinite(law.weakening_cap);
+    bool         capped    = has_cap;
 
     // The first step is taken from the previous step's state, which belongs
     // to another v_free: its energy is not compared.
-    auto           linearisation = linearise_law(m, eta, v, law, c);
-    double         energy = std::numeric_limits<double>::infinity(), scale = 0;
+    auto           linearisation = linearise_law(m, eta, v, law, c, capped);
+    double         energy        = std::numeric_limits<double>::infinity();
     Vector<double> new_eta(eta), new_v(v);
     while (result.iterations < max_iterations)
       {
         ++result.iterations;
         new_eta = eta;
         newton_step(linearisation, new_eta, new_v);
-        double new_energy = law.energy(v_free, new_eta, new_v, scale);
-
-        // Backtracking on E: (eta, v) move together, v = v_free - D eta
-        // being affine in eta.
-        const Vector<double> full_eta(new_eta), full_v(new_v);
-        const auto           increased = [&]() {
-          return new_energy > energy + 1e-13 * scale;
-        };
-        double step = 1.;
-        while (increased() && step > 0.3)
+        double       new_energy = 0;
+        const double length =
+          backtrack(law, v_free, eta, v, energy, new_eta, new_v, new_energy);
+        if (length == 0. && !capped && has_cap)
           {
-            step /= 2;
-            new_eta = eta;
-            new_eta.add(step, full_eta, -step, eta);
-            new_v = v;
-            new_v.add(step, full_v, -step, v);
-            new_energy = law.energy(v_free, new_eta, new_v, scale);
+            capped        = true;
+            linearisation = linearise_law(m, eta, v, law, c, capped);
+            continue;
           }
-        if (!increased() && step < 1.)
-          ++result.damped_steps;
-        else if (increased())
+        if (length == 0.)
           {
-            // No descent along the Newton direction (the step problem is
-            // not convex here): one convexification step instead, the
-            // Tresca problem with the bounds of the current slip rates,
-            // which lowers E.
+            // No descent along the Newton direction: one convexification
+            // step instead, the Tresca problem with the bounds of the
+            // current slip rates, which lowers E.
             ++result.convexification_steps;
             Vector<double> bound(n);
             for (unsigned int p = 0; p < n; ++p)
@@ -472,24 +502,33 @@ namespace Contact
             result.active_set_iterations += tresca.iterations;
             if (!tresca.converged)
               break;
-            new_energy = law.energy(v_free, new_eta, new_v, scale);
+            double scale = 0;
+            new_energy   = law.energy(v_free, new_eta, new_v, scale);
           }
+        else if (length < 1.)
+          ++result.damped_steps;
 
         const std::vector<int> previous_sets = set_signature(linearisation);
         eta.swap(new_eta);
         v.swap(new_v);
         energy        = new_energy;
-        linearisation = linearise_law(m, eta, v, law, c);
+        linearisation = linearise_law(m, eta, v, law, c, capped);
         // The residual with the bounds of the current slip rates.
         Vector<double> bound(n);
         for (unsigned int p = 0; p < n; ++p)
           bound[p] = linearisation[p].bound;
-        const double residual = complementarity_residual(m, eta, v, bound, c);
-        if (set_signature(linearisation) == previous_sets &&
-            residual <= tolerance)
+        const double residual  = complementarity_residual(m, eta, v, bound, c);
+        const bool sets_repeat = set_signature(linearisation) == previous_sets;
+        if (sets_repeat && residual <= tolerance)
           {
             result.converged = true;
             break;
+          }
+        if (capped && sets_repeat && length == 1. &&
+            residual < 0.1 * largest_bound)
+          {
+            capped        = false;
+            linearisation = linearise_law(m, eta, v, law, c, capped);
           }
       }
     state.resize(n);
