@@ -11,6 +11,7 @@
 
 #include <friction.h>
 
+#include <memory>
 #include <vector>
 
 namespace Contact
@@ -64,20 +65,50 @@ namespace Contact
     void vmult(Vector<double> &y, const Vector<double> &x) const;
 
     /** The forces eta and velocities v = v_free - D eta of one Newton step
-     *  for the given linearisation; v_p = 0 on stick nodes. The form is
-     *  chosen by size unless given (the tests compare them). */
+     *  for the given linearisation; v_p = 0 on stick nodes. On entry
+     *  (eta, v) is the current iterate, the first guess where a block is
+     *  solved by GMRES. The form is chosen by size unless given (the tests
+     *  compare them). */
     void newton_step(const std::vector<NodeLinearisation> &linearisation,
                      const Vector<double>                 &v_free,
                      Vector<double>                       &eta,
                      Vector<double>                       &v,
                      const Form form = Form::smaller) const;
 
+    /** How the Newton steps' blocks were solved so far: factorised, or by
+     *  GMRES preconditioned with the factor of an earlier block. */
+    unsigned int factorisations() const;
+    unsigned int preconditioned_solves() const;
+
   private:
+    void solve_block(const bool                             velocity_form,
+                     const std::vector<FullMatrix<double>> &Q,
+                     const std::vector<unsigned int>       &unknowns,
+                     const Vector<double>                  &shift,
+                     const bool                             weakening,
+                     const Vector<double>                  &rhs,
+                     Vector<double>                        &x) const;
+
     unsigned int             n_components = 1;
     LAPACKFullMatrix<double> D;
     /** D^{-1}, empty where D is singular (a tangent that cannot move) or
      *  cond(D) > 1e4. */
     LAPACKFullMatrix<double> W;
+
+    /** The last factorised block of a Newton step and the form and
+     *  unknowns it belongs to (a cache: the steps stay const). */
+    struct FactorisedBlock
+    {
+      bool                                      velocity_form = false;
+      std::vector<unsigned int>                 unknowns;
+      std::unique_ptr<LAPACKFullMatrix<double>> factor;
+    };
+    mutable FactorisedBlock last_factorised_block;
+    /** W v_free of the velocity form, for the last v_free. */
+    mutable Vector<double> last_v_free;
+    mutable Vector<double> W_v_free;
+    mutable unsigned int   n_factorisations        = 0;
+    mutable unsigned int   n_preconditioned_solves = 0;
   };
 
 

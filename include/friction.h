@@ -161,7 +161,8 @@ namespace Contact
   /** v = v_free - D eta, however D is represented. */
   using TrescaVelocity =
     std::function<void(const Vector<double> &eta, Vector<double> &v)>;
-  /** One Newton step: the new (eta, v) for the given linearisation. */
+  /** One Newton step: the new (eta, v) for the given linearisation; on
+   *  entry (eta, v) is the current iterate. */
   using TrescaNewtonStep =
     std::function<void(const std::vector<NodeLinearisation> &linearisation,
                        Vector<double>                       &eta,

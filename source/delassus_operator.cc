@@ -3,9 +3,14 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+
 #include <delassus_operator.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace Contact
 {
@@ -59,6 +64,18 @@ namespace Contact
   void DelassusOperator::vmult(Vector<double> &y, const Vector<double> &x) const
   {
     D.vmult(y, x);
+  }
+
+
+  unsigned int DelassusOperator::factorisations() const
+  {
+    return n_factorisations;
+  }
+
+
+  unsigned int DelassusOperator::preconditioned_solves() const
+  {
+    return n_preconditioned_solves;
   }
 
 
@@ -130,14 +147,13 @@ namespace Contact
     // M' = Q^T M Q in the nodes' local bases, on the rows and columns of
     // `unknowns`: column by column, each first combined from M's columns of
     // its node (contiguous in memory), then its rows.
-    LAPACKFullMatrix<double>
-    rotated_block(const LAPACKFullMatrix<double>        &M,
-                  const std::vector<FullMatrix<double>> &Q,
-                  const std::vector<unsigned int>       &unknowns)
+    void fill_rotated_block(const LAPACKFullMatrix<double>        &M,
+                            const std::vector<FullMatrix<double>> &Q,
+                            const std::vector<unsigned int>       &unknowns,
+                            LAPACKFullMatrix<double>              &block)
     {
       const unsigned int m = Q.empty() ? 1 : Q[0].m(), size = unknowns.size();
-      LAPACKFullMatrix<double> block(size, size);
-      Vector<double>           column(M.m());
+      Vector<double>     column(M.m());
       for (unsigned int b = 0; b < size; ++b)
         {
           const unsigned int q = unknowns[b] / m, j0 = unknowns[b] % m;
@@ -160,7 +176,6 @@ namespace Contact
               block(a, b) = entry;
             }
         }
-      return block;
     }
 
     // y = Q x (to the nodes' tangents) or Q^T x (to the local bases).
@@ -178,51 +193,206 @@ namespace Contact
               (transpose ? Q[p](a, i) : Q[p](i, a)) * x[p * m + a];
     }
 
-    // Solves block x = rhs in place: by Cholesky where the block is SPD
-    // (no Robin row of the weakening), by LU where it is most likely
-    // indefinite (such a row in the force form, whose shift 1/g' is large
-    // and negative); in the velocity form the weakening's shift g' may
-    // leave the block definite, so Cholesky is tried first, on a copy.
-    enum class Definiteness
+  } // namespace
+
+
+  // @sect4{The block of a Newton step, factorised or by GMRES}
+
+  namespace
+  {
+    // x -> (Q^T M Q + diag(shift)) x on the unknowns U, without forming the
+    // block: one product with the whole of M.
+    class RotatedBlock
     {
-      positive,
-      indefinite,
-      unknown
+    public:
+      RotatedBlock(const LAPACKFullMatrix<double>        &M,
+                   const std::vector<FullMatrix<double>> &Q,
+                   const std::vector<unsigned int>       &unknowns,
+                   const Vector<double>                  &shift)
+        : M(M)
+        , Q(Q)
+        , unknowns(unknowns)
+        , shift(shift)
+      {}
+
+      void vmult(Vector<double> &y, const Vector<double> &x) const
+      {
+        Vector<double> local(M.m()), global(M.m()), product(M.m());
+        for (unsigned int a = 0; a < unknowns.size(); ++a)
+          local[unknowns[a]] = x[a];
+        rotate(Q, local, global, false);
+        M.vmult(product, global);
+        rotate(Q, product, local, true);
+        for (unsigned int a = 0; a < unknowns.size(); ++a)
+          y[a] = local[unknowns[a]] + shift[a] * x[a];
+      }
+
+    private:
+      const LAPACKFullMatrix<double>        &M;
+      const std::vector<FullMatrix<double>> &Q;
+      const std::vector<unsigned int>       &unknowns;
+      const Vector<double>                  &shift;
     };
 
-    void solve_block(LAPACKFullMatrix<double> &block,
-                     Vector<double>           &rhs,
-                     const Definiteness        definiteness)
+    // The factor of an earlier block on nearly the same unknowns applied to
+    // this block's: on the unknowns both have, the factor's solve (with zero
+    // on those only it has); on the new ones, division by the diagonal.
+    class FactorPreconditioner
     {
-      if (rhs.size() == 0)
-        return;
-      if (definiteness != Definiteness::indefinite)
-        {
-          LAPACKFullMatrix<double> copy;
-          if (definiteness == Definiteness::unknown)
-            copy = block;
-          try
-            {
-              block.set_property(LAPACKSupport::symmetric);
-              block.compute_cholesky_factorization();
-              block.solve(rhs);
-              return;
-            }
-          catch (const ExceptionBase &)
-            {
-              AssertThrow(definiteness == Definiteness::unknown,
-                          ExcMessage("A Newton step on Gamma_3 met a block "
-                                     "of the Delassus operator that is not "
-                                     "positive definite: D = C K^{-1} C^T "
-                                     "is singular to round-off."));
-              block = copy;
-            }
-        }
-      block.compute_lu_factorization();
-      block.solve(rhs);
+    public:
+      FactorPreconditioner(const LAPACKFullMatrix<double>  &factor,
+                           const std::vector<unsigned int> &factor_unknowns,
+                           const std::vector<unsigned int> &unknowns,
+                           const Vector<double>            &diagonal)
+        : factor(factor)
+        , position(factor_unknowns.size(), numbers::invalid_unsigned_int)
+        , diagonal(diagonal)
+      {
+        for (unsigned int a = 0, b = 0; a < unknowns.size(); ++a)
+          {
+            while (b < factor_unknowns.size() &&
+                   factor_unknowns[b] < unknowns[a])
+              ++b;
+            if (b < factor_unknowns.size() && factor_unknowns[b] == unknowns[a])
+              position[b] = a;
+          }
+      }
+
+      void vmult(Vector<double> &y, const Vector<double> &x) const
+      {
+        Vector<double> z(position.size());
+        for (unsigned int b = 0; b < position.size(); ++b)
+          if (position[b] != numbers::invalid_unsigned_int)
+            z[b] = x[position[b]];
+        factor.solve(z);
+        for (unsigned int a = 0; a < x.size(); ++a)
+          y[a] = x[a] / diagonal[a];
+        for (unsigned int b = 0; b < position.size(); ++b)
+          if (position[b] != numbers::invalid_unsigned_int)
+            y[position[b]] = z[b];
+      }
+
+    private:
+      const LAPACKFullMatrix<double> &factor;
+      std::vector<unsigned int>       position;
+      const Vector<double>           &diagonal;
+    };
+
+    // How many unknowns one sorted list has that the other has not.
+    unsigned int n_differences(const std::vector<unsigned int> &a,
+                               const std::vector<unsigned int> &b)
+    {
+      std::vector<unsigned int> difference;
+      std::set_symmetric_difference(
+        a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(difference));
+      return difference.size();
     }
   } // namespace
 
+
+  // The blocks of consecutive Newton steps on the same unknowns differ only
+  // by the turn of the slip directions and the change of the shifts, so the
+  // factor of the last one preconditions the next almost perfectly: GMRES
+  // then costs a few products with M instead of forming and factorising a
+  // block. Only if it has not converged within 10 iterations (to 1e-13 of
+  // the right-hand side, below what the Newton methods' tolerances see) is
+  // the block formed and factorised, and its factor kept for the next step.
+  void DelassusOperator::solve_block(const bool velocity_form,
+                                     const std::vector<FullMatrix<double>> &Q,
+                                     const std::vector<unsigned int> &unknowns,
+                                     const Vector<double>            &shift,
+                                     const bool                       weakening,
+                                     const Vector<double>            &rhs,
+                                     Vector<double>                  &x) const
+  {
+    if (rhs.size() == 0)
+      return;
+    const LAPACKFullMatrix<double> &M    = (velocity_form ? W : D);
+    FactorisedBlock                &last = last_factorised_block;
+    if (unknowns.size() >= 400 && last.factor &&
+        last.velocity_form == velocity_form &&
+        n_differences(last.unknowns, unknowns) <= 10)
+      {
+        // The block's diagonal, for the unknowns the factor does not have
+        // (|.| where the weakening makes it negative).
+        Vector<double>     diagonal(unknowns.size());
+        const unsigned int m = n_components;
+        for (unsigned int a = 0; a < unknowns.size(); ++a)
+          {
+            const unsigned int r = unknowns[a], p = r / m;
+            for (unsigned int i = 0; i < m; ++i)
+              for (unsigned int j = 0; j < m; ++j)
+                diagonal[a] +=
+                  Q[p](i, r % m) * M(p * m + i, p * m + j) * Q[p](j, r % m);
+            diagonal[a] = std::abs(diagonal[a] + shift[a]);
+            if (diagonal[a] == 0.)
+              diagonal[a] = 1.;
+          }
+        Vector<double>   solution(x);
+        ReductionControl control(10, 1e-14 * rhs.l2_norm(), 1e-4, false, false);
+        SolverGMRES<Vector<double>> gmres(
+          control, SolverGMRES<Vector<double>>::AdditionalData(12, true));
+        try
+          {
+            gmres.solve(RotatedBlock(M, Q, unknowns, shift),
+                        solution,
+                        rhs,
+                        FactorPreconditioner(
+                          *last.factor, last.unknowns, unknowns, diagonal));
+            x = solution;
+            ++n_preconditioned_solves;
+            return;
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            // Too far from the factor's block: factorise this one.
+          }
+      }
+
+    last.velocity_form = velocity_form;
+    last.unknowns      = unknowns;
+    last.factor = std::make_unique<LAPACKFullMatrix<double>>(unknowns.size());
+    LAPACKFullMatrix<double> &block = *last.factor;
+    fill_rotated_block(M, Q, unknowns, block);
+    for (unsigned int a = 0; a < unknowns.size(); ++a)
+      block(a, a) += shift[a];
+    ++n_factorisations;
+    // Cholesky where the block is SPD (no weakening row); LU where the
+    // force form has one (its shift 1/g' is large and negative); in the
+    // velocity form the weakening's shift g' may leave the block definite,
+    // so Cholesky is tried first, on a copy.
+    const bool try_cholesky = !weakening || velocity_form;
+    if (try_cholesky)
+      {
+        LAPACKFullMatrix<double> copy;
+        if (weakening)
+          copy = block;
+        try
+          {
+            block.set_property(LAPACKSupport::symmetric);
+            block.compute_cholesky_factorization();
+            x = rhs;
+            block.solve(x);
+            return;
+          }
+        catch (const ExceptionBase &)
+          {
+            AssertThrow(weakening,
+                        ExcMessage("A Newton step on Gamma_3 met a block "
+                                   "of the Delassus operator that is not "
+                                   "positive definite: D = C K^{-1} C^T "
+                                   "is singular to round-off."));
+            block = copy;
+            block.set_property(LAPACKSupport::general);
+          }
+      }
+    block.compute_lu_factorization();
+    x = rhs;
+    block.solve(x);
+  }
+
+
+  // @sect4{The Newton step}
 
   // The force form: eta' = force where it is fixed, and on the others
   //   (D'_FF + diag(1/sigma)) eta'_F = v'_free,F + (force/sigma)_F
@@ -277,23 +447,30 @@ namespace Contact
     Vector<double> rotated_eta(n * m);
     if (use_velocity_form)
       {
-        Vector<double> W_v_free(n * m), rotated(n * m);
-        W.vmult(W_v_free, v_free);
+        if (last_v_free.size() != v_free.size() || !(v_free == last_v_free))
+          {
+            last_v_free = v_free;
+            W_v_free.reinit(n * m);
+            W.vmult(W_v_free, v_free);
+          }
+        Vector<double> rotated(n * m);
         rotate(Q, W_v_free, rotated, true);
-        LAPACKFullMatrix<double> block = rotated_block(W, Q, velocity_unknowns);
-        Vector<double>           rhs(velocity_unknowns.size());
+        Vector<double> rhs(velocity_unknowns.size()), shift(rhs.size());
         for (unsigned int a = 0; a < rhs.size(); ++a)
           {
             const LocalCondition &cond = conditions[velocity_unknowns[a]];
-            rhs[a] = rotated[velocity_unknowns[a]] - cond.force;
-            block(a, a) += cond.sigma;
+            rhs[a]   = rotated[velocity_unknowns[a]] - cond.force;
+            shift[a] = cond.sigma;
           }
-        solve_block(block,
-                    rhs,
-                    weakening ? Definiteness::unknown : Definiteness::positive);
-        Vector<double> rotated_v(n * m), slip(n * m);
+        // The current velocities as first guess.
+        Vector<double> rotated_v(n * m), slip(n * m), x(rhs.size());
+        rotate(Q, v, rotated_v, true);
         for (unsigned int a = 0; a < rhs.size(); ++a)
-          rotated_v[velocity_unknowns[a]] = rhs[a];
+          x[a] = rotated_v[velocity_unknowns[a]];
+        solve_block(true, Q, velocity_unknowns, shift, weakening, rhs, x);
+        rotated_v = 0.;
+        for (unsigned int a = 0; a < rhs.size(); ++a)
+          rotated_v[velocity_unknowns[a]] = x[a];
         rotate(Q, rotated_v, slip, false);
         slip.sadd(-1., 1., v_free);
         W.vmult(eta, slip);
@@ -316,8 +493,7 @@ namespace Contact
         D.vmult(D_fixed, rotated);
         D_fixed.sadd(-1., 1., v_free);
         rotate(Q, D_fixed, rotated, true);
-        LAPACKFullMatrix<double> block = rotated_block(D, Q, force_unknowns);
-        Vector<double>           rhs(force_unknowns.size());
+        Vector<double> rhs(force_unknowns.size()), shift(rhs.size());
         for (unsigned int a = 0; a < rhs.size(); ++a)
           {
             const LocalCondition &cond = conditions[force_unknowns[a]];
@@ -325,16 +501,18 @@ namespace Contact
             if (cond.kind == LocalCondition::robin)
               {
                 rhs[a] += cond.force / cond.sigma;
-                block(a, a) += 1. / cond.sigma;
+                shift[a] = 1. / cond.sigma;
               }
           }
-        solve_block(block,
-                    rhs,
-                    weakening ? Definiteness::indefinite :
-                                Definiteness::positive);
+        // The current forces as first guess.
+        Vector<double> x(rhs.size());
+        rotate(Q, eta, rotated_eta, true);
+        for (unsigned int a = 0; a < rhs.size(); ++a)
+          x[a] = rotated_eta[force_unknowns[a]];
+        solve_block(false, Q, force_unknowns, shift, weakening, rhs, x);
         rotated_eta = fixed_forces;
         for (unsigned int a = 0; a < rhs.size(); ++a)
-          rotated_eta[force_unknowns[a]] = rhs[a];
+          rotated_eta[force_unknowns[a]] = x[a];
         rotate(Q, rotated_eta, eta, false);
       }
 

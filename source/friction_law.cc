@@ -469,6 +469,7 @@ namespace Contact
       {
         ++result.iterations;
         new_eta = eta;
+        new_v   = v;
         newton_step(linearisation, new_eta, new_v);
         double       new_energy = 0;
         const double length =

@@ -240,8 +240,92 @@ void compare_forms(const unsigned int m)
             << std::endl;
 }
 
+// On a large Delassus operator (m = 2, 1000 unknowns) the blocks of
+// consecutive Newton steps on (nearly) the same unknowns are solved by
+// GMRES preconditioned with an earlier factor: the method must end on the
+// same solution as with every block factorised (a new operator, without a
+// factor to reuse, for every step).
+void check_factor_reuse()
+{
+  const unsigned int       n = 500, m = 2;
+  const FullMatrix<double> D = make_delassus(n, m);
+  const DelassusOperator   delassus(D, m);
+  Vector<double>           v_free(n * m), c(n), weights(n);
+  for (unsigned int p = 0; p < n; ++p)
+    {
+      const double angle = 0.01 * p, speed = 0.3 * (p % 50 - 20.);
+      v_free[p * m]     = speed * std::cos(angle);
+      v_free[p * m + 1] = speed * std::sin(angle);
+      c[p]              = 0.05 / D(p * m, p * m);
+    }
+  weights = 1.;
+  FrictionParameters parameters;
+  parameters.law     = FrictionParameters::Law::slip_rate_weakening;
+  parameters.bound_S = 0.3;
+  parameters.a       = 1.;
+  parameters.b       = 0.5;
+  parameters.alpha   = 0.5; // S (a - b) alpha below the smallest 1/D_rr
+  const FrictionLaw    friction_law(parameters);
+  const TrescaVelocity velocity = [&](const Vector<double> &eta,
+                                      Vector<double>       &v) {
+    D.vmult(v, eta);
+    v.sadd(-1., 1., v_free);
+  };
+  const auto solve =
+    [&](const TrescaNewtonStep &step, Vector<double> &eta, Vector<double> &v) {
+      eta.reinit(n * m);
+      v = v_free;
+      std::vector<NodeState> state;
+      return solve_friction_newton(velocity,
+                                   step,
+                                   m,
+                                   NodalLaw{friction_law, weights},
+                                   v_free,
+                                   c,
+                                   200,
+                                   500,
+                                   eta,
+                                   v,
+                                   state);
+    };
+
+  Vector<double>             eta, v, eta_factorised, v_factorised;
+  const FrictionNewtonResult reusing = solve(
+    [&](const std::vector<NodeLinearisation> &linearisation,
+        Vector<double>                       &eta,
+        Vector<double>                       &v) {
+      delassus.newton_step(linearisation, v_free, eta, v);
+    },
+    eta,
+    v);
+  const FrictionNewtonResult factorising = solve(
+    [&](const std::vector<NodeLinearisation> &linearisation,
+        Vector<double>                       &eta,
+        Vector<double>                       &v) {
+      DelassusOperator(D, m).newton_step(linearisation, v_free, eta, v);
+    },
+    eta_factorised,
+    v_factorised);
+  const Law law{parameters.bound_S, 1., 0.5, 0.5};
+  eta_factorised -= eta;
+  std::cout << "factor reuse (m = 2, " << n * m
+            << " unknowns): Newton converged " << reusing.converged
+            << " (every block factorised: " << factorising.converged << ") in "
+            << reusing.iterations << " iterations (" << factorising.iterations
+            << "), blocks solved by GMRES with an earlier factor: "
+            << (delassus.preconditioned_solves() > 0 ? "yes" : "no")
+            << ", law holds: "
+            << (violation(D, m, v_free, law, eta, v).first < 1e-11 ? "yes" :
+                                                                     "no")
+            << ", same solution: "
+            << (eta_factorised.linfty_norm() < 1e-9 * law.bound(0) ? "yes" :
+                                                                     "no")
+            << std::endl;
+}
+
 int main()
 {
+  check_factor_reuse();
   compare_forms(1);
   compare_forms(2);
   const unsigned int n = 12;
