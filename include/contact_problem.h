@@ -258,7 +258,7 @@ namespace Contact
     void           initialise_contact_state();
     void           change_time_step(const double k);
     StepStatistics advance(const unsigned int cuts_left);
-    double         largest_weighted_delassus_eigenvalue();
+    double         largest_weighted_delassus_eigenvalue(const double tolerance);
     bool           delassus_operator_pays() const;
     void           build_delassus_operator();
     void           build_delassus_from_factor();

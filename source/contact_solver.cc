@@ -150,19 +150,20 @@ namespace Contact
     if (use_delassus_operator)
       build_delassus_operator();
 
-    // The power method applies D up to 200 times: dense products on the
-    // Delassus path, solves with K otherwise, which CG-AMG makes too dear
-    // for a number that is only reported.
-    if (!friction_law.is_rate_independent() &&
-        parameters.solver.linear_solver == "CG-AMG")
-      pcout << "Gamma_3: the convexity limit of a step's friction problem is "
-            << "not estimated with CG-AMG (a few hundred solves with K)."
-            << std::endl;
-    else if (!friction_law.is_rate_independent())
+    // The power method applies D: dense products on the Delassus path,
+    // solves with K otherwise. With CG-AMG it stops when the estimate
+    // changes by less than 1e-3, which is all the Newton method's cap
+    // needs; its Rayleigh quotient is below lambda_max, so the printed
+    // limit is then an upper bound (1.04e3 against 1.03e3 converged on the
+    // coarse 3D test scene).
+    if (!friction_law.is_rate_independent())
       {
-        convexity_limit = 1. / largest_weighted_delassus_eigenvalue();
+        const bool rough = (parameters.solver.linear_solver == "CG-AMG");
+        convexity_limit =
+          1. / largest_weighted_delassus_eigenvalue(rough ? 1e-3 : 1e-8);
         pcout << "Gamma_3: the friction problem of a step is convex while "
               << "S (a - b) alpha < " << std::setprecision(3) << convexity_limit
+              << (rough ? " (or a little less: estimated to 1e-3)" : "")
               << "; here S (a - b) alpha = "
               << parameters.friction.bound_S *
                    friction_law.one_sided_lipschitz_constant()
@@ -272,9 +273,11 @@ namespace Contact
   // condition (3.22), m_A > S lambda C_0^2, in which (rho/k) M + A + k B
   // takes the place of the viscosity and the trace constant is that of V_h.
   // lambda_max by the power method (M^{1/2} D M^{1/2} is symmetric positive
-  // semidefinite), D applied as D or as C K^{-1} C^T.
+  // semidefinite), D applied as D or as C K^{-1} C^T, until the estimate
+  // changes by less than `tolerance` relative (at most 200 iterations).
   template <int dim>
-  double ContactProblem<dim>::largest_weighted_delassus_eigenvalue()
+  double ContactProblem<dim>::largest_weighted_delassus_eigenvalue(
+    const double tolerance)
   {
     const unsigned int n = contact_nodes.size(), m = dim - 1;
     Vector<double>     x(n * m), y(n * m), root_weight(n * m);
@@ -304,7 +307,8 @@ namespace Contact
         apply(x, y);
         const double rayleigh_quotient = x * y;
         x.swap(y);
-        if (std::abs(rayleigh_quotient - estimate) <= 1e-8 * rayleigh_quotient)
+        if (std::abs(rayleigh_quotient - estimate) <=
+            tolerance * rayleigh_quotient)
           return rayleigh_quotient;
         estimate = rayleigh_quotient;
       }
@@ -600,8 +604,7 @@ namespace Contact
   // velocities and sets. It returns false, with the state of the step
   // untouched, if it does not converge. Far from the solution its model
   // caps the weakening at 0.9 times the convexity limit, where the model is
-  // still convex (friction.h; without the estimate, on CG-AMG, it takes the
-  // true slope throughout).
+  // still convex (friction.h).
   template <int dim>
   bool
   ContactProblem<dim>::solve_by_newton(const Vector<double> &free_slip_velocity,
