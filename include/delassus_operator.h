@@ -75,9 +75,8 @@ namespace Contact
                      Vector<double>                       &v,
                      const Form form = Form::smaller) const;
 
-    /** How the Newton steps' blocks were solved so far: factorised, or by
-     *  GMRES preconditioned with the factor of an earlier block. */
-    unsigned int factorisations() const;
+    /** How many Newton steps' blocks were solved by GMRES preconditioned
+     *  with the factor of an earlier block. */
     unsigned int preconditioned_solves() const;
 
   private:
@@ -107,7 +106,6 @@ namespace Contact
     /** W v_free of the velocity form, for the last v_free. */
     mutable Vector<double> last_v_free;
     mutable Vector<double> W_v_free;
-    mutable unsigned int   n_factorisations        = 0;
     mutable unsigned int   n_preconditioned_solves = 0;
   };
 

@@ -67,12 +67,6 @@ namespace Contact
   }
 
 
-  unsigned int DelassusOperator::factorisations() const
-  {
-    return n_factorisations;
-  }
-
-
   unsigned int DelassusOperator::preconditioned_solves() const
   {
     return n_preconditioned_solves;
@@ -356,7 +350,6 @@ namespace Contact
     fill_rotated_block(M, Q, unknowns, block);
     for (unsigned int a = 0; a < unknowns.size(); ++a)
       block(a, a) += shift[a];
-    ++n_factorisations;
     // Cholesky where the block is SPD (no weakening row); LU where the
     // force form has one (its shift 1/g' is large and negative); in the
     // velocity form the weakening's shift g' may leave the block definite,

@@ -83,6 +83,51 @@ std::pair<double, std::string> violation(const FullMatrix<double> &D,
   return {worst / law.bound(0), pattern};
 }
 
+FrictionLaw make_friction_law(const Law &law)
+{
+  FrictionParameters parameters;
+  parameters.law     = FrictionParameters::Law::slip_rate_weakening;
+  parameters.bound_S = law.S;
+  parameters.a       = law.a;
+  parameters.b       = law.b;
+  parameters.alpha   = law.alpha;
+  return FrictionLaw(parameters);
+}
+
+// Newton's method on the full law from eta = 0, v = v_free, with unit
+// weights and the given Newton step.
+FrictionNewtonResult solve_from_rest(const FullMatrix<double> &D,
+                                     const unsigned int        m,
+                                     const Vector<double>     &v_free,
+                                     const FrictionLaw        &friction_law,
+                                     const Vector<double>     &c,
+                                     const TrescaNewtonStep   &step,
+                                     Vector<double>           &eta,
+                                     Vector<double>           &v)
+{
+  const TrescaVelocity velocity = [&](const Vector<double> &eta,
+                                      Vector<double>       &v) {
+    D.vmult(v, eta);
+    v.sadd(-1., 1., v_free);
+  };
+  Vector<double> weights(c.size());
+  weights = 1.;
+  eta.reinit(v_free.size());
+  v = v_free;
+  std::vector<NodeState> state;
+  return solve_friction_newton(velocity,
+                               step,
+                               m,
+                               NodalLaw{friction_law, weights},
+                               v_free,
+                               c,
+                               200,
+                               500,
+                               eta,
+                               v,
+                               state);
+}
+
 void check(const std::string    &name,
            const unsigned int    m,
            const Vector<double> &v_free,
@@ -95,21 +140,7 @@ void check(const std::string    &name,
   for (unsigned int p = 0; p < n; ++p)
     c[p] = 0.05 / D(p * m, p * m);
 
-  FrictionParameters parameters;
-  parameters.law     = FrictionParameters::Law::slip_rate_weakening;
-  parameters.bound_S = law.S;
-  parameters.a       = law.a;
-  parameters.b       = law.b;
-  parameters.alpha   = law.alpha;
-  const FrictionLaw friction_law(parameters);
-  Vector<double>    weights(n);
-  weights = 1.;
-
-  const TrescaVelocity velocity = [&](const Vector<double> &eta,
-                                      Vector<double>       &v) {
-    D.vmult(v, eta);
-    v.sadd(-1., 1., v_free);
-  };
+  const FrictionLaw friction_law = make_friction_law(law);
   // with_slope = false leaves the derivative of the bound out of the
   // Jacobian.
   const auto newton =
@@ -127,20 +158,7 @@ void check(const std::string    &name,
               }
           delassus.newton_step(used, v_free, eta, v);
         };
-      eta.reinit(n * m);
-      v = v_free;
-      std::vector<NodeState> state;
-      return solve_friction_newton(velocity,
-                                   step,
-                                   m,
-                                   NodalLaw{friction_law, weights},
-                                   v_free,
-                                   c,
-                                   200,
-                                   500,
-                                   eta,
-                                   v,
-                                   state);
+      return solve_from_rest(D, m, v_free, friction_law, c, step, eta, v);
     };
 
   Vector<double>             eta, v;
@@ -250,7 +268,7 @@ void check_factor_reuse()
   const unsigned int       n = 500, m = 2;
   const FullMatrix<double> D = make_delassus(n, m);
   const DelassusOperator   delassus(D, m);
-  Vector<double>           v_free(n * m), c(n), weights(n);
+  Vector<double>           v_free(n * m), c(n);
   for (unsigned int p = 0; p < n; ++p)
     {
       const double angle = 0.01 * p, speed = 0.3 * (p % 50 - 20.);
@@ -258,35 +276,12 @@ void check_factor_reuse()
       v_free[p * m + 1] = speed * std::sin(angle);
       c[p]              = 0.05 / D(p * m, p * m);
     }
-  weights = 1.;
-  FrictionParameters parameters;
-  parameters.law     = FrictionParameters::Law::slip_rate_weakening;
-  parameters.bound_S = 0.3;
-  parameters.a       = 1.;
-  parameters.b       = 0.5;
-  parameters.alpha   = 0.5; // S (a - b) alpha below the smallest 1/D_rr
-  const FrictionLaw    friction_law(parameters);
-  const TrescaVelocity velocity = [&](const Vector<double> &eta,
-                                      Vector<double>       &v) {
-    D.vmult(v, eta);
-    v.sadd(-1., 1., v_free);
-  };
-  const auto solve =
+  // S (a - b) alpha below the smallest 1/D_rr: a convex step problem.
+  const Law         law{0.3, 1., 0.5, 0.5};
+  const FrictionLaw friction_law = make_friction_law(law);
+  const auto        solve =
     [&](const TrescaNewtonStep &step, Vector<double> &eta, Vector<double> &v) {
-      eta.reinit(n * m);
-      v = v_free;
-      std::vector<NodeState> state;
-      return solve_friction_newton(velocity,
-                                   step,
-                                   m,
-                                   NodalLaw{friction_law, weights},
-                                   v_free,
-                                   c,
-                                   200,
-                                   500,
-                                   eta,
-                                   v,
-                                   state);
+      return solve_from_rest(D, m, v_free, friction_law, c, step, eta, v);
     };
 
   Vector<double>             eta, v, eta_factorised, v_factorised;
@@ -306,7 +301,6 @@ void check_factor_reuse()
     },
     eta_factorised,
     v_factorised);
-  const Law law{parameters.bound_S, 1., 0.5, 0.5};
   eta_factorised -= eta;
   std::cout << "factor reuse (m = 2, " << n * m
             << " unknowns): Newton converged " << reusing.converged
