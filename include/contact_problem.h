@@ -52,6 +52,7 @@
 #include <parameters.h>
 
 #include <array>
+#include <deque>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -421,11 +422,13 @@ namespace Contact
     // A step's friction problem is convex while S (a - b) alpha is below
     // this (largest_weighted_delassus_eigenvalue).
     double convexity_limit = std::numeric_limits<double>::infinity();
-    // Solves with K (and its variants) and CG iterations of the step so
-    // far; the constraints path starts every Newton step's CG from the
-    // velocity of the last one.
-    unsigned int solves_in_step = 0;
-    VectorType   last_newton_velocity;
+    // Solves with K (and its variants) of the step so far. The constraints
+    // path keeps the forces and velocities of the step's last Newton steps:
+    // the friction solver asks again for the velocity of forces a Newton
+    // step gave (its final forces, the start of a convexification step),
+    // which then needs no solve; CG starts from the newest velocity.
+    unsigned int                                      solves_in_step = 0;
+    std::deque<std::pair<Vector<double>, VectorType>> recent_newton_solves;
 
     EnergyBalance energy;
 

@@ -241,9 +241,11 @@ namespace Contact
    * the true slope, a node just entering slip is pulled back towards
    * stick); once the sets repeat after a full step and max |F_p| is below
    * a tenth of max_p g_p(0), the true slope takes over for the quadratic
-   * convergence, and hands back to the cap if its step does not lower E.
-   * A step that does not lower E is halved twice, and if that fails a
-   * convexification step is taken instead (the Tresca problem with the
+   * convergence. A step that does not lower E is halved twice; if that
+   * fails, the other model (capped or true slope) is tried from the same
+   * iterate (a failed true step also halves the residual below which the
+   * true slope is taken again), and if both fail a convexification step
+   * is taken instead (the Tresca problem with the
    * bounds of the current slip rates), which lowers E because j is concave
    * along |v| (a majorisation).
    * So the method cannot end on a maximum or saddle of E, and where the step

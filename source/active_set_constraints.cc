@@ -16,12 +16,19 @@ namespace Contact
 
   // The velocity of the step for given nodal friction forces: (5.2) with
   // the friction term C^T eta moved to the right-hand side,
-  //   K w = step_rhs - C^T eta.
+  //   K w = step_rhs - C^T eta,
+  // or the velocity a recent Newton step found for these forces.
   template <int dim>
   void
   ContactProblem<dim>::velocity_for_friction_force(const Vector<double> &eta,
                                                    VectorType           &w)
   {
+    for (const auto &[newton_force, newton_velocity] : recent_newton_solves)
+      if (newton_force == eta)
+        {
+          w = newton_velocity;
+          return;
+        }
     VectorType rhs(step_rhs);
     rhs.add(-1., friction_load(eta));
     w.reinit(locally_owned_dofs, mpi_communicator);
@@ -139,10 +146,11 @@ namespace Contact
     rhs.add(-1., friction_load(slip_force));
     zero_rows_and_columns(stick_dof, matrix, rhs);
 
-    // CG starts from the velocity of the last Newton step.
-    if (last_newton_velocity.size() != rhs.size())
-      last_newton_velocity.reinit(locally_owned_dofs, mpi_communicator);
-    VectorType &w = last_newton_velocity;
+    // CG starts from the velocity of the last Newton step, the first one
+    // from the free velocity.
+    VectorType w(recent_newton_solves.empty() ?
+                   velocity :
+                   recent_newton_solves.back().second);
     ++solves_in_step;
     factorization->for_variant(matrix)->solve(w, rhs);
     constraints.distribute(w);
@@ -180,6 +188,13 @@ namespace Contact
       else
         for (unsigned int i = 0; i < m; ++i)
           v[p * m + i] = 0.;
+
+    // Three: a convexification step inside the Newton method starts from
+    // the iterate before a failed step and a failed step of the other
+    // model.
+    recent_newton_solves.emplace_back(eta, std::move(w));
+    if (recent_newton_solves.size() > 3)
+      recent_newton_solves.pop_front();
   }
 
 

@@ -525,7 +525,8 @@ namespace Contact
 
     StepStatistics statistics;
     Timer          substitution;
-    solves_in_step                                = 0;
+    solves_in_step = 0;
+    recent_newton_solves.clear();
     const unsigned long long cg_iterations_before = factorization->iterations();
     if (use_delassus_operator && factorization->has_triangular_factor())
       {

@@ -423,7 +423,9 @@ namespace Contact
         new_energy = law.energy(v_free, new_eta, new_v, scale);
         return new_energy <= energy + 1e-13 * scale;
       };
-      for (double length = 1.; length > 0.2; length /= 2)
+      if (lowered())
+        return 1.;
+      for (double length = 0.5; length > 0.2; length /= 2)
         {
           new_eta = eta;
           new_eta.add(length, full_eta, -length, eta);
@@ -465,6 +467,14 @@ namespace Contact
     auto           linearisation = linearise_law(m, eta, v, law, c, capped);
     double         energy        = std::numeric_limits<double>::infinity();
     Vector<double> new_eta(eta), new_v(v);
+    // The model switches to the true slope once the sets repeat after a
+    // full step and the residual is below uncap_below. Where neither model
+    // descends from an iterate, the other one is tried before the
+    // convexification step; a failed true step halves uncap_below, so that
+    // the two models do not take turns at the same residual.
+    double residual      = std::numeric_limits<double>::infinity();
+    double uncap_below   = 0.1 * largest_bound;
+    bool   capped_failed = false, uncapped_failed = false;
     while (result.iterations < max_iterations)
       {
         ++result.iterations;
@@ -474,12 +484,21 @@ namespace Contact
         double       new_energy = 0;
         const double length =
           backtrack(law, v_free, eta, v, energy, new_eta, new_v, new_energy);
-        if (length == 0. && !capped && has_cap)
+        if (length == 0.)
           {
-            capped        = true;
-            linearisation = linearise_law(m, eta, v, law, c, capped);
-            continue;
+            (capped ? capped_failed : uncapped_failed) = true;
+            if (has_cap &&
+                (capped ? !uncapped_failed && residual < uncap_below :
+                          !capped_failed))
+              {
+                if (!capped)
+                  uncap_below = 0.5 * residual;
+                capped        = !capped;
+                linearisation = linearise_law(m, eta, v, law, c, capped);
+                continue;
+              }
           }
+        capped_failed = uncapped_failed = false;
         if (length == 0.)
           {
             // No descent along the Newton direction: one convexification
@@ -518,15 +537,14 @@ namespace Contact
         Vector<double> bound(n);
         for (unsigned int p = 0; p < n; ++p)
           bound[p] = linearisation[p].bound;
-        const double residual  = complementarity_residual(m, eta, v, bound, c);
+        residual               = complementarity_residual(m, eta, v, bound, c);
         const bool sets_repeat = set_signature(linearisation) == previous_sets;
         if (sets_repeat && residual <= tolerance)
           {
             result.converged = true;
             break;
           }
-        if (capped && sets_repeat && length == 1. &&
-            residual < 0.1 * largest_bound)
+        if (capped && sets_repeat && length == 1. && residual < uncap_below)
           {
             capped        = false;
             linearisation = linearise_law(m, eta, v, law, c, capped);
