@@ -9,12 +9,15 @@
  *   contact_problem.cc  constructor, run()
  *   setup.cc            make_grid, setup_system, constraints, Gamma_3 nodes
  *   assembly.cc         matrices, loads, initial values, energies
- *   contact_solver.cc   factorisation, Delassus operator, convexification
- *   active_set_constraints.cc  the straightforward path (whole-body solves)
+ *   time_stepping.cc    factorisation of K, the step and its cuts
  *   output.cc           VTU/PVD, time_series.csv, console
  *   checkpoint.cc       checkpoint and restart
  *   verification.cc     errors against a manufactured solution
- * Each file instantiates its own members for dim = 2 and 3.
+ * Each file instantiates its own members for dim = 2 and 3. The friction
+ * problem on Gamma_3 (its nodes, the path to the body, the Newton method
+ * and the convexification, the nodal state) is a component of its own,
+ * FrictionSolver<dim> (friction_solver.h): a step is "right-hand side,
+ * friction solver, update".
  */
 #ifndef contact_contact_problem_h
 #define contact_contact_problem_h
@@ -45,9 +48,9 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
-#include <delassus_operator.h>
 #include <factorization.h>
 #include <friction.h>
+#include <friction_solver.h>
 #include <manufactured_solution.h>
 #include <parameters.h>
 
@@ -65,78 +68,6 @@
 namespace Contact
 {
   using namespace dealii;
-
-  using MatrixType = TrilinosWrappers::SparseMatrix;
-  using VectorType = TrilinosWrappers::MPI::Vector;
-
-  /**
-   * A node p of Gamma_3 that is not clamped: its dofs, its weight
-   * m_p = int_Gamma3 phi_p ds, its outward normal and an orthonormal basis
-   * of the tangent plane (one tangent in 2D, two in 3D). The tangential
-   * unknowns of Gamma_3 (slip velocity, nodal friction force eta_p, the
-   * node's share of the friction traction eta_p / m_p) are stored node-major
-   * in vectors of length (dim - 1) times the number of nodes.
-   */
-  template <int dim>
-  struct ContactNode
-  {
-    std::array<types::global_dof_index, dim> dofs;
-    types::global_dof_index             scalar_dof = numbers::invalid_dof_index;
-    Point<dim>                          location;
-    Tensor<1, dim>                      normal;
-    std::array<Tensor<1, dim>, dim - 1> tangents;
-    double                              weight = 0;
-    // Whether this process owns the node's dofs (all dofs of a vertex have
-    // one owner). Every process keeps all nodes of Gamma_3; what a node
-    // contributes to a distributed vector the owner adds.
-    bool locally_owned = false;
-
-    /** sum_i a_{p,i} t_i: node p's tangential components as a vector. */
-    Tensor<1, dim> tangential_vector(const Vector<double> &a,
-                                     const unsigned int    p) const
-    {
-      Tensor<1, dim> result;
-      for (unsigned int i = 0; i < dim - 1; ++i)
-        result += a[p * (dim - 1) + i] * tangents[i];
-      return result;
-    }
-  };
-
-  /** What one time step did, for the console and time_series.csv. */
-  struct StepStatistics
-  {
-    unsigned int convexification_iterations = 0;
-    unsigned int active_set_iterations      = 0;
-    unsigned int rejected_accelerations     = 0;
-    unsigned int cycles_cured               = 0;
-    unsigned int step_cuts                  = 0;
-    // The Newton method on the full law ('Solver/Friction method'): its
-    // iterations, and 1 where it failed and the convexification took over.
-    unsigned int newton_iterations = 0;
-    unsigned int newton_fallbacks  = 0;
-    // Solves with K or a variant of it (a forward and a backward
-    // substitution with the factor count as one), and CG iterations.
-    unsigned int       solves_with_K  = 0;
-    unsigned long long cg_iterations  = 0;
-    unsigned int       n_stick        = 0;
-    unsigned int       n_slip         = 0;
-    double             max_slip_rate  = 0;
-    double             friction_force = 0;
-
-    /** Add the iteration counts of another step (or part of one). */
-    void add_counts(const StepStatistics &other)
-    {
-      convexification_iterations += other.convexification_iterations;
-      active_set_iterations += other.active_set_iterations;
-      rejected_accelerations += other.rejected_accelerations;
-      cycles_cured += other.cycles_cured;
-      step_cuts += other.step_cuts;
-      newton_iterations += other.newton_iterations;
-      newton_fallbacks += other.newton_fallbacks;
-      solves_with_K += other.solves_with_K;
-      cg_iterations += other.cg_iterations;
-    }
-  };
 
   /**
    * The terms of the discrete energy identity of backward Euler, (5.7)
@@ -167,6 +98,15 @@ namespace Contact
                        viscous_dissipation + std::abs(friction_dissipation) +
                          numerical_dissipation});
     }
+  };
+
+
+  /** M w_n, A w_n and B w_n of a step's velocity (condensed). */
+  struct VelocityProducts
+  {
+    VectorType mass;
+    VectorType viscosity;
+    VectorType elasticity;
   };
 
 
@@ -234,71 +174,32 @@ namespace Contact
     void         check_boundary_ids(const Triangulation<dim> &mesh) const;
     void         setup_system();
     void         make_constraints();
-    void         setup_contact_nodes();
+    std::vector<ContactNode<dim>> contact_nodes() const;
     std::map<types::global_dof_index, ContactNode<dim>>
          integrate_contact_faces() const;
     void setup_probes();
 
     // assembly.cc
-    void           assemble_matrices();
-    void           form_system_matrix();
-    void           assemble_load(const double time,
-                                 VectorType  &load_vector,
-                                 const bool   with_body_force,
-                                 const bool   with_surface_loads) const;
-    void           set_initial_values();
-    void           condensed_product(const MatrixType &matrix,
-                                     const VectorType &x,
-                                     VectorType       &product) const;
-    Tensor<1, dim> momentum() const;
-    void           update_energy_balance();
+    void             assemble_matrices();
+    void             form_system_matrix();
+    void             assemble_load(const double time,
+                                   VectorType  &load_vector,
+                                   const bool   with_body_force,
+                                   const bool   with_surface_loads) const;
+    void             set_initial_values();
+    void             condensed_product(const MatrixType &matrix,
+                                       const VectorType &x,
+                                       VectorType       &product) const;
+    Tensor<1, dim>   momentum() const;
+    VelocityProducts velocity_products() const;
+    void             update_energy_balance(const VelocityProducts &products);
 
-    // contact_solver.cc
+    // time_stepping.cc
     void           factorize_system_matrix();
-    void           setup_contact_solver();
-    void           initialise_contact_state();
     void           change_time_step(const double k);
     StepStatistics advance(const unsigned int cuts_left);
-    double         largest_weighted_delassus_eigenvalue(const double tolerance);
-    bool           delassus_operator_pays() const;
-    void           build_delassus_operator();
-    void           build_delassus_from_factor();
-    void           build_delassus_from_solves();
-    void           subtract_delassus_columns(const Vector<double> &eta,
-                                             VectorType           &w) const;
     StepStatistics do_time_step();
-    StepStatistics
-         solve_friction_problem(const Vector<double> &free_slip_velocity);
-    bool solve_by_newton(const Vector<double> &free_slip_velocity,
-                         StepStatistics       &statistics);
-    void solve_by_convexification(const Vector<double> &free_slip_velocity,
-                                  StepStatistics       &statistics);
-    std::pair<TrescaVelocity, TrescaNewtonStep>
-                 friction_operators(const Vector<double> &free_slip_velocity);
-    TrescaResult solve_tresca_problem(const Vector<double> &free_slip_velocity,
-                                      const Vector<double> &bound,
-                                      Vector<double>       &eta,
-                                      Vector<double>       &v,
-                                      std::vector<NodeState> &state);
-    void         solve_with_K(VectorType &x, const VectorType &b);
-    VectorType   friction_load(const Vector<double> &eta) const;
-    void         add_nodal_force(const ContactNode<dim> &node,
-                                 const Tensor<1, dim>   &force,
-                                 VectorType             &load) const;
-    std::string  convexification_failure(const double residual) const;
-    void         add_contact_state(StepStatistics &statistics) const;
-    double       tangential_velocity(const ContactNode<dim> &node,
-                                     const unsigned int      direction,
-                                     const VectorType       &w) const;
-    Vector<double> tangential_velocities(const VectorType &w) const;
-    Vector<double> sum_over_processes(const Vector<double> &part) const;
-
-    // active_set_constraints.cc: the straightforward path.
-    void velocity_for_friction_force(const Vector<double> &eta, VectorType &w);
-    void newton_step_with_constraints(
-      const std::vector<NodeLinearisation> &linearisation,
-      Vector<double>                       &eta,
-      Vector<double>                       &v);
+    StepLabel      step_label() const;
 
     // contact_problem.cc: Gauss rules of n points per direction on the
     // cells and faces of the mesh's shape.
@@ -396,39 +297,15 @@ namespace Contact
     VectorType   old_displacement;
     VectorType   old_velocity;
     VectorType   load;
-    // M w_{n-1} and B u_{n-1} (condensed), kept from the energy balance of
-    // the last step for the right-hand side of the next.
+    // What the next step's right-hand side needs of this one: M w_{n-1}
+    // and B u_{n-1} (condensed, updated by the time step), and the
+    // right-hand side of the step without friction: K w_free = step_rhs.
     VectorType mass_times_velocity;
     VectorType elasticity_times_displacement;
-    // The right-hand side of the step without friction, condensed:
-    // K w_free = step_rhs.
-    VectorType step_rhs;
 
-    // Gamma_3: its nodes, the Delassus operator D (unless the active set is
-    // imposed as constraints on the whole body, 'Solver/Contact solver')
-    // with Y^T = (L^{-1} P C^T)^T where K has a triangular factor, or else
-    // the rows of Z = K^{-1} C^T this process owns, and the nodal state of
-    // the last step.
-    std::vector<ContactNode<dim>> contact_nodes;
-    bool                          use_delassus_operator = false;
-    SparsityPattern               delassus_factor_pattern;
-    SparseMatrix<double>          delassus_factor;
-    LAPACKFullMatrix<double>      delassus_columns;
-    DelassusOperator              delassus_operator;
-    Vector<double>                active_set_parameter;
-    Vector<double>                friction_force;
-    Vector<double>                slip_velocity;
-    std::vector<NodeState>        node_state;
-    // A step's friction problem is convex while S (a - b) alpha is below
-    // this (largest_weighted_delassus_eigenvalue).
-    double convexity_limit = std::numeric_limits<double>::infinity();
-    // Solves with K (and its variants) of the step so far. The constraints
-    // path keeps the forces and velocities of the step's last Newton steps:
-    // the friction solver asks again for the velocity of forces a Newton
-    // step gave (its final forces, the start of a convexification step),
-    // which then needs no solve; CG starts from the newest velocity.
-    unsigned int                                      solves_in_step = 0;
-    std::deque<std::pair<Vector<double>, VectorType>> recent_newton_solves;
+    // The friction problem on Gamma_3: its nodes, the path between them
+    // and the body, and their state.
+    std::unique_ptr<FrictionSolver<dim>> friction_solver;
 
     EnergyBalance energy;
 

@@ -107,7 +107,7 @@ namespace Contact
    * basis (zhat, tangents of zhat): eta_p . zhat = g_p, and
    * v_p . t = beta_p eta_p . t with beta_p = (|z_p| - g_p) / (g_p c_p) >= 0
    * along the other directions. Every Newton step is then one SPD solve,
-   * on the body (active_set_constraints.cc) or on D (DelassusOperator,
+   * on the body (contact_paths.cc) or on D (DelassusOperator,
    * which solves for the forces or for the velocities, whichever set is
    * smaller). For m = 1 (2D)
    * there are no such directions: the slip set fixes eta_p = g_p sign(z_p)

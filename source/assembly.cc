@@ -251,11 +251,12 @@ namespace Contact
         }
 
     if (exact_solution && with_surface_loads)
-      for (const ContactNode<dim> &node : contact_nodes)
-        add_nodal_force(node,
-                        node.weight * exact_solution->contact_load(
-                                        node.location, node.normal, time),
-                        load_vector);
+      for (const ContactNode<dim> &node : friction_solver->boundary().nodes)
+        friction_solver->boundary().add_nodal_force(
+          node,
+          node.weight *
+            exact_solution->contact_load(node.location, node.normal, time),
+          load_vector);
     load_vector.compress(VectorOperation::add);
   }
 
@@ -330,46 +331,57 @@ namespace Contact
   }
 
 
+  // @sect4{ContactProblem::velocity_products}
+
+  // M w_n, A w_n and B w_n: what the energy balance and the next step's
+  // right-hand side need of the new velocity. The three products only read
+  // w and write their own vector: they run as concurrent tasks (memory
+  // bound, so the second core helps).
+  template <int dim>
+  VelocityProducts ContactProblem<dim>::velocity_products() const
+  {
+    VelocityProducts         products{velocity, velocity, velocity};
+    Threads::TaskGroup<void> tasks;
+    tasks += Threads::new_task(
+      [&]() { condensed_product(mass_matrix, velocity, products.mass); });
+    tasks += Threads::new_task([&]() {
+      condensed_product(viscosity_matrix, velocity, products.viscosity);
+    });
+    condensed_product(elasticity_matrix, velocity, products.elasticity);
+    tasks.join_all();
+    return products;
+  }
+
+
   // @sect4{ContactProblem::update_energy_balance}
 
   // The terms of the energy identity of backward Euler: (5.2) tested with
   // w_n, with (5.5) and 2 a.(a - b) = |a|^2 - |b|^2 + |a - b|^2 as in (5.7)
-  // and (5.9).
-  //
-  // Three matrix-vector products per step give all of them and the
-  // products M w_n, B u_n that the next step's right-hand side needs:
-  // M w_n, A w_n and B w_n, with B u_n = B u_{n-1} + k B w_n by (5.5) and
+  // and (5.9), from the products of w_n and those of the last step,
+  // M w_{n-1} and B u_{n-1}: B u_n = B u_{n-1} + k B w_n by (5.5), and
   // |w_n - w_{n-1}|_M^2 expanded in the known products.
   template <int dim>
-  void ContactProblem<dim>::update_energy_balance()
+  void
+  ContactProblem<dim>::update_energy_balance(const VelocityProducts &products)
   {
     TimerOutput::Scope t(computing_timer, "Energy balance");
-    const double       k = time_step;
-    VectorType         M_w(velocity), A_w(velocity), B_w(velocity);
-    // The three products only read w and write their own vector: they run
-    // as concurrent tasks (memory bound, so the second core helps).
-    Threads::TaskGroup<void> products;
-    products += Threads::new_task(
-      [&]() { condensed_product(mass_matrix, velocity, M_w); });
-    products += Threads::new_task(
-      [&]() { condensed_product(viscosity_matrix, velocity, A_w); });
-    condensed_product(elasticity_matrix, velocity, B_w);
-    products.join_all();
-    elasticity_times_displacement.add(k, B_w);
-
-    const double w_M_w = M_w * velocity;
+    const double       k     = time_step;
+    const double       w_M_w = products.mass * velocity;
     energy.numerical_dissipation +=
       0.5 * (w_M_w - 2. * (mass_times_velocity * velocity) +
              mass_times_velocity * old_velocity) +
-      0.5 * k * k * (B_w * velocity);
+      0.5 * k * k * (products.elasticity * velocity);
     energy.kinetic = 0.5 * w_M_w;
-    energy.elastic = 0.5 * (elasticity_times_displacement * displacement);
-    energy.viscous_dissipation += k * (A_w * velocity);
-    mass_times_velocity = M_w;
+    VectorType B_u(elasticity_times_displacement);
+    B_u.add(k, products.elasticity);
+    energy.elastic = 0.5 * (B_u * displacement);
+    energy.viscous_dissipation += k * (products.viscosity * velocity);
     energy.external_work += k * (load * velocity);
+    const ContactBoundary<dim> &gamma3 = friction_solver->boundary();
     if (!friction_law.is_frictionless())
       energy.friction_dissipation +=
-        k * (friction_force * tangential_velocities(velocity));
+        k * (friction_solver->state().friction_force *
+             gamma3.tangential_velocities(velocity));
   }
 
 
@@ -384,8 +396,10 @@ namespace Contact
   template void ContactProblem<dim>::condensed_product(const MatrixType &,  \
                                                        const VectorType &,  \
                                                        VectorType &) const; \
-  template void ContactProblem<dim>::update_energy_balance();               \
-  template Tensor<1, dim> ContactProblem<dim>::momentum() const;
+  template void ContactProblem<dim>::update_energy_balance(                 \
+    const VelocityProducts &);                                              \
+  template VelocityProducts ContactProblem<dim>::velocity_products() const; \
+  template Tensor<1, dim>   ContactProblem<dim>::momentum() const;
 
   INSTANTIATE(2)
   INSTANTIATE(3)

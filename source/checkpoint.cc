@@ -51,19 +51,15 @@ namespace Contact
   template <class Archive>
   void ContactProblem<dim>::serialize_checkpoint_state(Archive &archive)
   {
-    std::vector<int> states;
-    for (const NodeState state : node_state)
-      states.push_back(static_cast<int>(state));
     archive &step_number &time;
     for (VectorType *vector : {&displacement,
                                &velocity,
                                &mass_times_velocity,
                                &elasticity_times_displacement})
       serialize_vector(archive, *vector);
-    archive &friction_force &slip_velocity &states;
-    node_state.clear();
-    for (const int state : states)
-      node_state.push_back(static_cast<NodeState>(state));
+    FrictionState friction_state = friction_solver->state();
+    archive      &friction_state;
+    friction_solver->set_state(friction_state);
     archive &energy.kinetic &energy.elastic &energy.initial &energy
       .external_work &energy.viscous_dissipation &energy
       .friction_dissipation                      &energy.numerical_dissipation;
@@ -89,7 +85,7 @@ namespace Contact
   {
     std::ostringstream text;
     text << dim << "D, " << dof_handler.n_dofs() << " unknowns, "
-         << contact_nodes.size() << " nodes on Gamma_3, "
+         << friction_solver->boundary().nodes.size() << " nodes on Gamma_3, "
          << Utilities::MPI::n_mpi_processes(mpi_communicator)
          << " process(es), k = " << std::setprecision(17) << time_step << ", "
          << probes.size() << " probe(s)"

@@ -166,8 +166,8 @@ namespace Contact
       }
     set_initial_values();
     factorize_system_matrix();
-    setup_contact_solver();
-    initialise_contact_state();
+    friction_solver->reinit(system_matrix, *factorization);
+    friction_solver->set_initial_velocity(velocity);
 
     const unsigned int vtu_interval = parameters.output.vtu_interval;
     step_number                     = 0;
@@ -285,7 +285,7 @@ namespace Contact
   template <int dim>
   const Vector<double> &ContactProblem<dim>::get_friction_force() const
   {
-    return friction_force;
+    return friction_solver->state().friction_force;
   }
 
 

@@ -156,6 +156,10 @@ namespace Contact
     Vector<double>     status(n_scalar_dofs), slip_rate(n_scalar_dofs),
       friction_bound(n_scalar_dofs);
     VectorType traction(locally_owned_dofs, mpi_communicator);
+    const std::vector<ContactNode<dim>> &contact_nodes =
+      friction_solver->boundary().nodes;
+    const auto &[friction_force, slip_velocity, node_state] =
+      friction_solver->state();
     for (unsigned int p = 0; p < contact_nodes.size(); ++p)
       {
         const ContactNode<dim> &node = contact_nodes[p];
@@ -356,6 +360,10 @@ namespace Contact
       if (std::abs(time - *t) <= 0.5 * time_step * (1 + 1e-12) ||
           (step_number == n_time_steps && *t > time))
         {
+          const std::vector<ContactNode<dim>> &contact_nodes =
+            friction_solver->boundary().nodes;
+          const auto &[friction_force, slip_velocity, node_state] =
+            friction_solver->state();
           unsigned int n_stick = 0, n_slip = 0;
           double       slip_from = 0, slip_to = 0;
           for (unsigned int p = 0; p < contact_nodes.size(); ++p)
@@ -443,16 +451,7 @@ namespace Contact
                                    TimerOutput::total_wall_time)["Time steps"] /
                                  n_time_steps;
         if (!friction_law.is_frictionless())
-          pcout << "Contact solver: "
-                << (use_delassus_operator ?
-                      "Delassus operator on the " +
-                        std::to_string(friction_force.size()) +
-                        " tangential unknowns of Gamma_3, from " +
-                        (factorization->has_triangular_factor() ?
-                           "the triangular factor of K" :
-                           "Z = K^{-1} C^T") :
-                      std::string("active set as constraints, one "
-                                  "solve with K per Newton step"))
+          pcout << "Contact solver: " << friction_solver->description()
                 << std::endl;
         if (factorization && factorization->factor_size() > 0)
           pcout << "Factor of K: "

@@ -345,13 +345,21 @@ namespace Contact
          {&displacement, &velocity, &old_displacement, &old_velocity, &load})
       vector->reinit(locally_owned_dofs, mpi_communicator);
 
-    setup_contact_nodes();
+    friction_solver = std::make_unique<FrictionSolver<dim>>(parameters,
+                                                            friction_law,
+                                                            contact_nodes(),
+                                                            constraints,
+                                                            locally_owned_dofs,
+                                                            mpi_communicator,
+                                                            pcout,
+                                                            computing_timer);
     setup_probes();
 
     pcout << "Mesh: " << triangulation->n_global_active_cells() << " cells, "
           << (parameters.geometry.simplex_cells ? 'P' : 'Q') << fe.degree
           << ", " << dof_handler.n_dofs() << " unknowns, "
-          << contact_nodes.size() << " free nodes on Gamma_3" << std::endl;
+          << friction_solver->boundary().nodes.size()
+          << " free nodes on Gamma_3" << std::endl;
   }
 
 
@@ -477,7 +485,7 @@ namespace Contact
   } // namespace
 
 
-  // @sect4{ContactProblem::setup_contact_nodes}
+  // @sect4{ContactProblem::contact_nodes}
 
   // Collects the nodes of Gamma_3 with their dofs, the weight
   // m_p = int_Gamma3 phi_p ds of the nodal ("node-to-rigid") friction and
@@ -491,7 +499,7 @@ namespace Contact
   // parts are exchanged (all_gather) and summed, and the constraint rows of
   // a node (known where its dofs are locally relevant) travel with them.
   template <int dim>
-  void ContactProblem<dim>::setup_contact_nodes()
+  std::vector<ContactNode<dim>> ContactProblem<dim>::contact_nodes() const
   {
     // One record per (process, node) as doubles (dof indices are exact):
     // dofs, scalar dof, location, weight, normal, number of constraint
@@ -539,7 +547,7 @@ namespace Contact
               directions[i][d] = r[3 * dim + 3 + i * dim + d];
         }
 
-    contact_nodes.clear();
+    std::vector<ContactNode<dim>> contact_nodes;
     for (auto &[key, node] : nodes)
       {
         const std::vector<Tensor<1, dim>> &constrained = rows[key];
@@ -562,6 +570,7 @@ namespace Contact
                     return a.location[d] < b.location[d];
                 return false;
               });
+    return contact_nodes;
   }
 
 
@@ -709,7 +718,8 @@ namespace Contact
     const Triangulation<dim> &) const;                                         \
   template void ContactProblem<dim>::setup_system();                           \
   template void ContactProblem<dim>::make_constraints();                       \
-  template void ContactProblem<dim>::setup_contact_nodes();                    \
+  template std::vector<ContactNode<dim>> ContactProblem<dim>::contact_nodes()  \
+    const;                                                                     \
   template std::map<types::global_dof_index, ContactNode<dim>>                 \
                       ContactProblem<dim>::integrate_contact_faces() const;    \
   template void       ContactProblem<dim>::setup_probes();                     \
