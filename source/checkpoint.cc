@@ -57,8 +57,10 @@ namespace Contact
                                &mass_times_velocity,
                                &elasticity_times_displacement})
       serialize_vector(archive, *vector);
+    // Member by member, as before the state was a struct of its own (the
+    // format stays that of the name above).
     FrictionState friction_state = friction_solver->state();
-    archive      &friction_state;
+    friction_state.serialize(archive, 0);
     friction_solver->set_state(friction_state);
     archive &energy.kinetic &energy.elastic &energy.initial &energy
       .external_work &energy.viscous_dissipation &energy
