@@ -4,7 +4,6 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <deal.II/dofs/dof_tools.h>
 
 #include <friction_solver.h>
 
