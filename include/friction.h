@@ -168,6 +168,11 @@ namespace Contact
                        Vector<double>                       &eta,
                        Vector<double>                       &v)>;
 
+  /** v_free, formed when first asked for: on the constraints path it costs
+   *  a solve with K that a step converging in one Newton step never needs
+   *  (every sticking step). */
+  using FreeVelocity = std::function<const Vector<double> &()>;
+
   /** The method with the linear algebra supplied by the caller (e.g. on the
    *  whole body instead of on D). */
   TrescaResult solve_tresca(const TrescaVelocity   &velocity,
@@ -241,8 +246,8 @@ namespace Contact
    * the true slope, a node just entering slip is pulled back towards
    * stick); once the sets repeat after a full step and max |F_p| is below
    * a tenth of max_p g_p(0), the true slope takes over for the quadratic
-   * convergence. A step that does not lower E is halved twice; if that
-   * fails, the other model (capped or true slope) is tried from the same
+   * convergence. A step that does not lower E is halved up to three times; if
+   * that fails, the other model (capped or true slope) is tried from the same
    * iterate (a failed true step also halves the residual below which the
    * true slope is taken again), and if both fail a convexification step
    * is taken instead (the Tresca problem with the
@@ -261,7 +266,7 @@ namespace Contact
                         const TrescaNewtonStep &newton_step,
                         const unsigned int      n_components,
                         const NodalLaw         &law,
-                        const Vector<double>   &v_free,
+                        const FreeVelocity     &v_free,
                         const Vector<double>   &c,
                         const unsigned int      max_iterations,
                         const unsigned int      max_active_set_iterations,

@@ -179,9 +179,9 @@ namespace Contact
 
   /**
    * The linear algebra of one path between the body and Gamma_3
-   * (contact_paths.cc). A step calls free_slip_velocity() first, then the
-   * methods on Gamma_3 call velocity_of_force() and newton_step(), and
-   * velocity() gives w_n for the final forces.
+   * (contact_paths.cc). A step calls begin_step() first, then the methods
+   * on Gamma_3 call free_slip_velocity(), velocity_of_force() and
+   * newton_step(), and velocity() gives w_n for the final forces.
    */
   template <int dim>
   class ContactPath
@@ -189,10 +189,12 @@ namespace Contact
   public:
     virtual ~ContactPath() = default;
 
-    /** v_free = C K^{-1} step_rhs; `velocity` becomes K^{-1} step_rhs where
-     *  the path forms it. */
-    virtual Vector<double> free_slip_velocity(const VectorType &step_rhs,
-                                              VectorType       &velocity) = 0;
+    /** A new step with this right-hand side; iterative solves start from
+     *  `last_velocity`, w_{n-1}. */
+    virtual void begin_step(const VectorType &step_rhs,
+                            const VectorType &last_velocity) = 0;
+    /** v_free = C K^{-1} step_rhs, formed at its first call in a step. */
+    virtual const Vector<double> &free_slip_velocity() = 0;
     /** v = v_free - D eta. */
     virtual void velocity_of_force(const Vector<double> &eta,
                                    Vector<double>       &v) = 0;
@@ -209,7 +211,7 @@ namespace Contact
     virtual std::string description() const = 0;
 
     /** Solves with K (or a variant) since the step began, and the wall time
-     *  of the step's solve for v_free (or its substitutions). */
+     *  of the step's first solve (or its substitutions). */
     unsigned int solves               = 0;
     double       substitution_seconds = 0;
   };
@@ -248,7 +250,8 @@ namespace Contact
     const FrictionState        &state() const;
     void                        set_state(const FrictionState &state);
     std::string                 description() const;
-    /** Wall time of the last step's solve for v_free. */
+    /** Wall time of the last step's first solve with K (or a variant), or
+     *  its substitutions. */
     double substitution_seconds() const;
 
   private:
@@ -256,14 +259,11 @@ namespace Contact
                        Factorization    &factorization);
     bool   delassus_operator_pays(const Factorization &factorization) const;
     double largest_weighted_delassus_eigenvalue(const double tolerance);
-    void   solve_friction_problem(const Vector<double> &free_slip_velocity,
-                                  const StepLabel      &label,
-                                  StepStatistics       &statistics);
-    bool   solve_by_newton(const Vector<double> &free_slip_velocity,
-                           StepStatistics       &statistics);
-    void   solve_by_convexification(const Vector<double> &free_slip_velocity,
-                                    const StepLabel      &label,
-                                    StepStatistics       &statistics);
+    void   solve_friction_problem(const StepLabel &label,
+                                  StepStatistics  &statistics);
+    bool   solve_by_newton(StepStatistics &statistics);
+    void   solve_by_convexification(const StepLabel &label,
+                                    StepStatistics  &statistics);
     std::pair<TrescaVelocity, TrescaNewtonStep> path_operators();
     TrescaResult solve_tresca_problem(const Vector<double>   &bound,
                                       Vector<double>         &eta,

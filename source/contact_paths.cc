@@ -135,6 +135,12 @@ namespace Contact
         delassus.vmult(y, x);
       }
 
+      // Formed by begin_step(): every Newton step on D needs it.
+      const Vector<double> &free_slip_velocity() override
+      {
+        return v_free;
+      }
+
     protected:
       DelassusOperator delassus;
       Vector<double>   v_free;
@@ -224,8 +230,7 @@ namespace Contact
         this->delassus = DelassusOperator(D, dim - 1);
       }
 
-      Vector<double> free_slip_velocity(const VectorType &step_rhs,
-                                        VectorType &) override
+      void begin_step(const VectorType &step_rhs, const VectorType &) override
       {
         Timer substitution;
         this->solves = 1;
@@ -233,7 +238,6 @@ namespace Contact
         this->substitution_seconds = substitution.wall_time();
         this->v_free.reinit(gamma3.n_unknowns());
         Y_transposed.vmult(this->v_free, y[0]);
-        return this->v_free;
       }
 
 
@@ -305,17 +309,16 @@ namespace Contact
         this->delassus = DelassusOperator(D, dim - 1);
       }
 
-      Vector<double> free_slip_velocity(const VectorType &step_rhs,
-                                        VectorType       &velocity) override
+      void begin_step(const VectorType &step_rhs,
+                      const VectorType &last_velocity) override
       {
         Timer substitution;
-        this->solves = 1;
-        factorization.solve(velocity, step_rhs);
+        this->solves  = 1;
+        free_velocity = last_velocity;
+        factorization.solve(free_velocity, step_rhs);
         this->substitution_seconds = substitution.wall_time();
-        gamma3.constraints.distribute(velocity);
-        free_velocity = velocity;
-        this->v_free  = gamma3.tangential_velocities(velocity);
-        return this->v_free;
+        gamma3.constraints.distribute(free_velocity);
+        this->v_free = gamma3.tangential_velocities(free_velocity);
       }
 
 
@@ -429,18 +432,28 @@ namespace Contact
         , factorization(factorization)
       {}
 
-      Vector<double> free_slip_velocity(const VectorType &step_rhs,
-                                        VectorType       &velocity) override
+      void begin_step(const VectorType &step_rhs,
+                      const VectorType &last_velocity) override
       {
         recent_newton_solves.clear();
-        rhs = step_rhs;
-        Timer substitution;
-        this->solves = 1;
-        factorization.solve(velocity, step_rhs);
-        this->substitution_seconds = substitution.wall_time();
-        gamma3.constraints.distribute(velocity);
-        free_velocity = velocity;
-        return gamma3.tangential_velocities(velocity);
+        rhs                        = step_rhs;
+        start                      = last_velocity;
+        this->solves               = 0;
+        this->substitution_seconds = 0;
+        v_free.reinit(0);
+      }
+
+      // Formed only when asked for: a step whose first Newton step already
+      // solves the friction problem (every sticking step) does without it.
+      const Vector<double> &free_slip_velocity() override
+      {
+        if (v_free.size() == 0)
+          {
+            VectorType w;
+            velocity(Vector<double>(gamma3.n_unknowns()), w);
+            v_free = gamma3.tangential_velocities(w);
+          }
+        return v_free;
       }
 
       void velocity_of_force(const Vector<double> &eta,
@@ -468,10 +481,8 @@ namespace Contact
             }
         VectorType load(rhs);
         load.add(-1., gamma3.friction_load(eta));
-        w.reinit(gamma3.locally_owned_dofs, gamma3.mpi_communicator);
-        ++this->solves;
-        factorization.solve(w, load);
-        gamma3.constraints.distribute(w);
+        w = start;
+        solve(factorization, w, load);
       }
 
       void apply_delassus(const Vector<double> &x, Vector<double> &y) override
@@ -488,11 +499,24 @@ namespace Contact
       }
 
     private:
+      // w = K'^{-1} load for K or a variant K', counted, and timed if it is
+      // the step's first solve.
+      void solve(Factorization &solver, VectorType &w, const VectorType &load)
+      {
+        Timer timer;
+        solver.solve(w, load);
+        if (this->solves++ == 0)
+          this->substitution_seconds = timer.wall_time();
+        gamma3.constraints.distribute(w);
+      }
+
       const ContactBoundary<dim> &gamma3;
       const MatrixType           &system_matrix;
       Factorization              &factorization;
       VectorType                  rhs;
-      VectorType                  free_velocity;
+      Vector<double>              v_free;
+      // Where CG starts: w_{n-1}, then the newest Newton step's velocity.
+      VectorType start;
       // The forces and velocities of the step's last Newton steps: the
       // methods on Gamma_3 ask again for the velocity of forces a Newton
       // step gave (the final forces, the start of a convexification step),
@@ -573,14 +597,8 @@ namespace Contact
       load.add(-1., gamma3.friction_load(slip_force));
       zero_rows_and_columns(stick_dof, matrix, load);
 
-      // CG starts from the velocity of the last Newton step, the first one
-      // from the free velocity.
-      VectorType w(recent_newton_solves.empty() ?
-                     free_velocity :
-                     recent_newton_solves.back().second);
-      ++this->solves;
-      factorization.for_variant(matrix)->solve(w, load);
-      gamma3.constraints.distribute(w);
+      VectorType w(start);
+      solve(*factorization.for_variant(matrix), w, load);
       v = gamma3.tangential_velocities(w);
 
       VectorType residual(rhs);
@@ -619,6 +637,7 @@ namespace Contact
       // Three: a convexification step inside the Newton method starts from
       // the iterate before a failed step and a failed step of the other
       // model.
+      start = w;
       recent_newton_solves.emplace_back(eta, std::move(w));
       if (recent_newton_solves.size() > 3)
         recent_newton_solves.pop_front();

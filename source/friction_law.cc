@@ -406,8 +406,10 @@ namespace Contact
   {
     // Backtracking on E from (eta, v) towards the Newton iterate
     // (new_eta, new_v), which (eta, v) move to together, v = v_free - D eta
-    // being affine in eta: halved at most twice. Returns the step length,
-    // 0 if E did not decrease.
+    // being affine in eta, so that a shorter step costs no solve: halved at
+    // most three times (a third halving saves convexification steps, a
+    // fourth was never taken in the 3D scenes). Returns the step length, 0
+    // if E did not decrease.
     double backtrack(const NodalLaw       &law,
                      const Vector<double> &v_free,
                      const Vector<double> &eta,
@@ -425,7 +427,7 @@ namespace Contact
       };
       if (lowered())
         return 1.;
-      for (double length = 0.5; length > 0.2; length /= 2)
+      for (double length = 0.5; length > 0.1; length /= 2)
         {
           new_eta = eta;
           new_eta.add(length, full_eta, -length, eta);
@@ -444,7 +446,7 @@ namespace Contact
                         const TrescaNewtonStep &newton_step,
                         const unsigned int      m,
                         const NodalLaw         &law,
-                        const Vector<double>   &v_free,
+                        const FreeVelocity     &v_free,
                         const Vector<double>   &c,
                         const unsigned int      max_iterations,
                         const unsigned int      max_active_set_iterations,
@@ -463,9 +465,11 @@ namespace Contact
     bool         capped    = has_cap;
 
     // The first step is taken from the previous step's state, which belongs
-    // to another v_free: its energy is not compared.
+    // to another v_free: its energy is not compared. The energy of the
+    // first iterate is only formed if a second step needs it, so that a
+    // step converging at once never asks for v_free.
     auto           linearisation = linearise_law(m, eta, v, law, c, capped);
-    double         energy        = std::numeric_limits<double>::infinity();
+    double         energy        = std::numeric_limits<double>::quiet_NaN();
     Vector<double> new_eta(eta), new_v(v);
     // The model switches to the true slope once the sets repeat after a
     // full step and the residual is below uncap_below. Where neither model
@@ -481,9 +485,14 @@ namespace Contact
         new_eta = eta;
         new_v   = v;
         newton_step(linearisation, new_eta, new_v);
-        double       new_energy = 0;
-        const double length =
-          backtrack(law, v_free, eta, v, energy, new_eta, new_v, new_energy);
+        double scale = 0, new_energy = energy, length = 1.;
+        if (result.iterations > 1)
+          {
+            if (std::isnan(energy))
+              energy = law.energy(v_free(), eta, v, scale);
+            length = backtrack(
+              law, v_free(), eta, v, energy, new_eta, new_v, new_energy);
+          }
         if (length == 0.)
           {
             (capped ? capped_failed : uncapped_failed) = true;
@@ -522,8 +531,7 @@ namespace Contact
             result.active_set_iterations += tresca.iterations;
             if (!tresca.converged)
               break;
-            double scale = 0;
-            new_energy   = law.energy(v_free, new_eta, new_v, scale);
+            new_energy = law.energy(v_free(), new_eta, new_v, scale);
           }
         else if (length < 1.)
           ++result.damped_steps;

@@ -200,25 +200,22 @@ namespace Contact
 
   // @sect4{FrictionSolver::solve_step}
 
-  // One step of (5.2)-(5.5) on the path: the free slip velocity, the
-  // friction forces from the problem on Gamma_3, then w_n. On the path from
-  // the factor of K the friction problem sits between the forward and the
-  // backward substitution of one solve.
+  // One step of (5.2)-(5.5) on the path: the friction forces from the
+  // problem on Gamma_3, then w_n. On the path from the factor of K the
+  // friction problem sits between the forward and the backward substitution
+  // of one solve. `velocity` is w_{n-1} on entry.
   template <int dim>
   StepStatistics FrictionSolver<dim>::solve_step(const VectorType &step_rhs,
                                                  VectorType       &velocity,
                                                  const StepLabel  &label)
   {
-    StepStatistics       statistics;
-    const Vector<double> free_slip_velocity =
-      path->free_slip_velocity(step_rhs, velocity);
+    StepStatistics statistics;
+    path->begin_step(step_rhs, velocity);
+    if (!friction_law.is_frictionless() && !gamma3.nodes.empty())
+      solve_friction_problem(label, statistics);
+    path->velocity(current.friction_force, velocity);
     if (friction_law.is_frictionless())
-      current.slip_velocity = free_slip_velocity;
-    else if (!gamma3.nodes.empty())
-      {
-        solve_friction_problem(free_slip_velocity, label, statistics);
-        path->velocity(current.friction_force, velocity);
-      }
+      current.slip_velocity = gamma3.tangential_velocities(velocity);
     add_contact_state(statistics);
     statistics.solves_with_K = path->solves;
     return statistics;
@@ -233,15 +230,13 @@ namespace Contact
   // converge; the convexification alone otherwise. A rate independent law
   // is one Tresca problem either way.
   template <int dim>
-  void FrictionSolver<dim>::solve_friction_problem(
-    const Vector<double> &free_slip_velocity,
-    const StepLabel      &label,
-    StepStatistics       &statistics)
+  void FrictionSolver<dim>::solve_friction_problem(const StepLabel &label,
+                                                   StepStatistics  &statistics)
   {
     const bool newton = parameters.solver.friction_method == "Newton" &&
                         !friction_law.is_rate_independent();
-    if (!newton || !solve_by_newton(free_slip_velocity, statistics))
-      solve_by_convexification(free_slip_velocity, label, statistics);
+    if (!newton || !solve_by_newton(statistics))
+      solve_by_convexification(label, statistics);
   }
 
 
@@ -253,9 +248,7 @@ namespace Contact
   // caps the weakening at 0.9 times the convexity limit, where the model is
   // still convex (friction.h).
   template <int dim>
-  bool
-  FrictionSolver<dim>::solve_by_newton(const Vector<double> &free_slip_velocity,
-                                       StepStatistics       &statistics)
+  bool FrictionSolver<dim>::solve_by_newton(StepStatistics &statistics)
   {
     Vector<double> eta(current.friction_force), v(current.slip_velocity);
     Vector<double> weights(gamma3.nodes.size());
@@ -268,7 +261,7 @@ namespace Contact
       newton_step,
       dim - 1,
       NodalLaw{friction_law, weights, 0.9 * convexity_limit},
-      free_slip_velocity,
+      [this]() -> const Vector<double>           &{ return path->free_slip_velocity(); },
       active_set_parameter,
       parameters.solver.max_newton_iterations,
       parameters.solver.max_active_set_iterations,
@@ -311,13 +304,12 @@ namespace Contact
   // iterate that does not decrease E is rejected and the plain step taken
   // instead, so the safeguard keeps the descent.
   template <int dim>
-  void FrictionSolver<dim>::solve_by_convexification(
-    const Vector<double> &free_slip_velocity,
-    const StepLabel      &label,
-    StepStatistics       &statistics)
+  void FrictionSolver<dim>::solve_by_convexification(const StepLabel &label,
+                                                     StepStatistics &statistics)
   {
-    const auto        &solver = parameters.solver;
-    const unsigned int n      = gamma3.nodes.size();
+    const auto           &solver             = parameters.solver;
+    const unsigned int    n                  = gamma3.nodes.size();
+    const Vector<double> &free_slip_velocity = path->free_slip_velocity();
 
     Vector<double> rate(n), bound(n), eta(current.friction_force),
       v(free_slip_velocity.size());

@@ -115,17 +115,18 @@ FrictionNewtonResult solve_from_rest(const FullMatrix<double> &D,
   eta.reinit(v_free.size());
   v = v_free;
   std::vector<NodeState> state;
-  return solve_friction_newton(velocity,
-                               step,
-                               m,
-                               NodalLaw{friction_law, weights},
-                               v_free,
-                               c,
-                               200,
-                               500,
-                               eta,
-                               v,
-                               state);
+  return solve_friction_newton(
+    velocity,
+    step,
+    m,
+    NodalLaw{friction_law, weights},
+    [&]() -> const Vector<double> & { return v_free; },
+    c,
+    200,
+    500,
+    eta,
+    v,
+    state);
 }
 
 void check(const std::string    &name,
