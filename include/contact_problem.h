@@ -318,6 +318,9 @@ namespace Contact
     std::vector<double>                         pending_report_times;
     StepStatistics                              totals;
     double                                      max_relative_energy_residual;
+    // Above it the energy identity (doc/algorithm.md) has failed, and the
+    // run ends with an error.
+    static constexpr double energy_identity_tolerance = 1e-8;
     // Mean wall time of one forward/back substitution with the factor of K
     // (measured on the solve for the free velocity of every step).
     double                                           substitution_time = 0;

@@ -110,11 +110,14 @@ namespace Contact
 
   struct TimeParameters
   {
-    double end_time;
-    double time_step;
+    double       end_time;
+    double       time_step;
+    unsigned int max_steps;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);
+    /** N = ceil(T/k), checked against max_steps when parsed. */
+    unsigned int n_steps() const;
   };
 
   struct SolverParameters

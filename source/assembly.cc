@@ -10,6 +10,7 @@
 #include <contact_problem.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace Contact
 {
@@ -285,6 +286,27 @@ namespace Contact
     constraints.distribute(displacement);
     VectorTools::interpolate(*mapping, dof_handler, *u1, velocity);
     constraints.distribute(velocity);
+    // Before anything is written: a NaN here would be blamed on step 1.
+    const auto check_finite = [](const VectorType  &values,
+                                 const std::string &entry,
+                                 const std::string &expression) {
+      // (The maximum norm skips NaN; the sum of the entries does not.)
+      AssertThrow(std::isfinite(values.linfty_norm()) &&
+                    !std::isnan(values.l1_norm()),
+                  ExcMessage("Entry 'Loads and initial values/" + entry +
+                             "' = '" + expression +
+                             "' is not a finite number at some node of the "
+                             "mesh (a division by zero, or the root or "
+                             "logarithm of a negative number there?); "
+                             "allowed are expressions finite on the whole "
+                             "body."));
+    };
+    check_finite(displacement,
+                 "Initial displacement",
+                 parameters.loads.initial_displacement);
+    check_finite(velocity,
+                 "Initial velocity",
+                 parameters.loads.initial_velocity);
     old_displacement = displacement;
     old_velocity     = velocity;
 

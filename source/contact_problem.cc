@@ -18,19 +18,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace Contact
 {
   namespace
   {
-    // N = ceil(T/k) steps of the uniform size T/N, so that the last step
-    // ends at T (the paper's T = 1.1 is not a multiple of its k = 1/128).
-    unsigned int number_of_steps(const TimeParameters &time)
-    {
-      return static_cast<unsigned int>(
-        std::ceil(time.end_time / time.time_step - 1e-9));
-    }
-
     template <int dim>
     std::unique_ptr<Triangulation<dim>>
     make_triangulation(const GeometryParameters &geometry,
@@ -96,7 +90,7 @@ namespace Contact
   ContactProblem<dim>::ContactProblem(const Parameters &parameters)
     : parameters(parameters)
     , friction_law(parameters.friction)
-    , n_time_steps(number_of_steps(parameters.time))
+    , n_time_steps(parameters.time.n_steps())
     , time_step(parameters.time.end_time / n_time_steps)
     , mpi_communicator(MPI_COMM_WORLD)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
@@ -229,6 +223,20 @@ namespace Contact
       }
     step_number = n_time_steps;
     print_summary();
+    std::ostringstream residual;
+    residual << std::setprecision(2) << max_relative_energy_residual
+             << " of the energies, above its tolerance "
+             << energy_identity_tolerance;
+    AssertThrow(max_relative_energy_residual < energy_identity_tolerance,
+                ExcMessage(
+                  "Self-check failed: the energy identity of the scheme "
+                  "holds only to " +
+                  residual.str() +
+                  ", which round-off alone never reaches. The results in '" +
+                  parameters.output.directory +
+                  "' are not a solution of the scheme; the column "
+                  "energy_residual of time_series.csv shows from which step "
+                  "on."));
 
     RunSummary summary;
     summary.cell_size =

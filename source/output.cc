@@ -435,9 +435,10 @@ namespace Contact
           << energy.numerical_dissipation << std::endl;
     pcout << "Energy identity: largest residual relative to the energies "
           << std::setprecision(2) << max_relative_energy_residual
-          << (max_relative_energy_residual < 1e-8 ? " (below 1e-8)" :
-                                                    " (ABOVE 1e-8)")
-          << std::endl;
+          << (max_relative_energy_residual < energy_identity_tolerance ?
+                " (below " :
+                " (ABOVE ")
+          << energy_identity_tolerance << ")" << std::endl;
     if (exact_solution)
       pcout << "Errors, largest over the steps: ||eps(u - u_h)|| "
             << std::setprecision(6) << max_errors.displacement_V

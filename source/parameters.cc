@@ -9,8 +9,11 @@
 #include <parameters.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
+#include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace Contact
@@ -57,7 +60,7 @@ namespace Contact
             {
               char        *end   = nullptr;
               const double value = std::strtod(coordinate.c_str(), &end);
-              numbers            = numbers && *end == '\0';
+              numbers = numbers && *end == '\0' && std::isfinite(value);
               values.push_back(value);
             }
           AssertThrow(numbers,
@@ -66,8 +69,8 @@ namespace Contact
                                  "point '" +
                                  point +
                                  "'; allowed are points "
-                                 "of exactly Dimension numbers 'x, y[, z]', "
-                                 "separated by ';'."));
+                                 "of exactly Dimension finite numbers "
+                                 "'x, y[, z]', separated by ';'."));
           points.push_back(values);
         }
       return points;
@@ -472,6 +475,12 @@ namespace Contact
         Patterns::Double(),
         "Time step k [s], 0 < k <= T. The run takes N = ceil(T/k) steps of the "
         "uniform size T/N, so that the last step ends at T.");
+      prm.declare_entry(
+        "Max steps",
+        "1000000",
+        Patterns::Integer(1, std::numeric_limits<int>::max()),
+        "The largest N = ceil(T/k) a run accepts: a guard against a mistyped "
+        "Time step that would run for days. Raise it for longer runs.");
     }
     prm.leave_subsection();
   }
@@ -482,14 +491,35 @@ namespace Contact
     {
       end_time  = prm.get_double("End time");
       time_step = prm.get_double("Time step");
+      max_steps = prm.get_integer("Max steps");
     }
     prm.leave_subsection();
 
-    check_entry(end_time > 0, "Time/End time", end_time, "T > 0");
-    check_entry(time_step > 0 && time_step <= end_time,
+    check_entry(std::isfinite(end_time) && end_time > 0,
+                "Time/End time",
+                end_time,
+                "T > 0");
+    check_entry(std::isfinite(time_step) && time_step > 0 &&
+                  time_step <= end_time,
                 "Time/Time step",
                 time_step,
                 "0 < k <= Time/End time");
+    // In floating point: ceil(T/k) may exceed every unsigned integer.
+    const double       steps = std::ceil(end_time / time_step - 1e-9);
+    std::ostringstream allowed;
+    allowed << std::setprecision(6)
+            << "k >= T / (Time/Max steps) = " << end_time / max_steps
+            << " (here N = ceil(T/k) = " << steps
+            << " steps against Time/Max steps = " << max_steps
+            << "; raise Max steps if the run is meant to be that long)";
+    check_entry(steps <= max_steps, "Time/Time step", time_step, allowed.str());
+  }
+
+  // N = ceil(T/k) steps of the uniform size T/N, so that the last step ends
+  // at T (the paper's T = 1.1 is not a multiple of its k = 1/128).
+  unsigned int TimeParameters::n_steps() const
+  {
+    return static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-9));
   }
 
 
@@ -871,6 +901,17 @@ namespace Contact
                            "that holds the body against rigid motions. "
                            "Allowed: at least one clamped boundary id, or a "
                            "density > 0."));
+    // A VTU file per step of a long run fills a disk without a word.
+    const unsigned int max_vtu_files = 10000;
+    check_entry(output.vtu_interval == 0 ||
+                  time.n_steps() / output.vtu_interval <= max_vtu_files,
+                "Output/VTU interval",
+                output.vtu_interval,
+                "0 (none) or at least N / " + std::to_string(max_vtu_files) +
+                  " = " + std::to_string(time.n_steps() / max_vtu_files + 1) +
+                  " for the N = " + std::to_string(time.n_steps()) +
+                  " steps of this run (at most " +
+                  std::to_string(max_vtu_files) + " VTU files)");
     AssertThrow(!(output.resume && convergence_study.levels > 0),
                 ExcMessage("Entry 'Output/Resume' (--resume): a convergence "
                            "study ('Convergence study/Levels' > 0) cannot be "

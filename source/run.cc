@@ -14,7 +14,9 @@
 
 #include <filesystem>
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -42,16 +44,18 @@ namespace Contact
     const char *usage =
       "Usage: contact [--set 'Section/Entry=value']... [--resume] "
       "scene.prm\n"
-      "       contact --print-parameters\n"
+      "       contact --print-parameters [scene.prm]\n"
+      "       contact --help\n"
       "  --resume continues from the checkpoint in the output directory\n"
       "  --set overrides an entry of the .prm file, e.g.\n"
       "  --set 'Friction/Friction bound S=2.5'\n"
-      "  --print-parameters prints every entry with its default, range and "
-      "documentation";
+      "  --print-parameters prints every entry with its value (the default, or "
+      "scene.prm's), range and documentation";
 
     struct CommandLine
     {
       bool                                             print_parameters = false;
+      bool                                             help             = false;
       std::string                                      parameter_file;
       std::vector<std::pair<std::string, std::string>> overrides;
     };
@@ -64,6 +68,8 @@ namespace Contact
           const std::string argument = argv[i];
           if (argument == "--print-parameters")
             command_line.print_parameters = true;
+          else if (argument == "--help" || argument == "-h")
+            command_line.help = true;
           else if (argument == "--resume")
             command_line.overrides.emplace_back("Output/Resume", "true");
           else if (argument == "--set" && i + 1 < argc)
@@ -88,9 +94,10 @@ namespace Contact
               command_line.parameter_file = argument;
             }
         }
-      AssertThrow(
-        command_line.print_parameters || !command_line.parameter_file.empty(),
-        ExcMessage(std::string("No parameter file given.\n") + usage));
+      AssertThrow(command_line.help || command_line.print_parameters ||
+                    !command_line.parameter_file.empty(),
+                  ExcMessage(std::string("No parameter file given.\n") +
+                             usage));
       return command_line;
     }
 
@@ -134,10 +141,31 @@ namespace Contact
     // A relative 'Geometry/Mesh file' is made relative to the file that sets
     // it, for the same reason (only in the full parse, where it is
     // declared).
-    void parse_parameter_file(ParameterHandler  &prm,
-                              const std::string &file,
-                              const bool         skip_undefined)
+    //
+    // `chain` holds the files that include this one: a file that includes
+    // itself, directly or through others, is refused instead of being read
+    // until the stack overflows.
+    void parse_parameter_file(ParameterHandler                  &prm,
+                              const std::string                 &file,
+                              const bool                         skip_undefined,
+                              std::vector<std::filesystem::path> chain = {})
     {
+      std::error_code             error;
+      const std::filesystem::path canonical =
+        std::filesystem::weakly_canonical(file, error);
+      std::string cycle;
+      for (const std::filesystem::path &including : chain)
+        cycle += (cycle.empty() ? "" : " -> ") + including.string();
+      AssertThrow(std::find(chain.begin(), chain.end(), canonical) ==
+                    chain.end(),
+                  ExcMessage("The parameter files include each other in a "
+                             "cycle: " +
+                             cycle + " -> " + canonical.string() +
+                             ". Remove the 'include' that closes it."));
+      chain.push_back(canonical);
+      AssertThrow(!std::filesystem::is_directory(file, error),
+                  ExcMessage("The parameter file '" + file +
+                             "' is a directory; give a .prm file."));
       std::ifstream in(file);
       AssertThrow(in,
                   ExcMessage("Cannot open the parameter file '" + file + "'."));
@@ -167,8 +195,12 @@ namespace Contact
             prm.leave_subsection();
           }
       };
+      unsigned int line_number = 0;
       for (std::string line; std::getline(in, line);)
         {
+          // A UTF-8 byte order mark, as some editors write it, is no text.
+          if (++line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0)
+            line.erase(0, 3);
           const std::string statement =
             Utilities::trim(line.substr(0, line.find('#')));
           const std::string keyword = statement.substr(0, statement.find(' '));
@@ -187,16 +219,25 @@ namespace Contact
                                  "': 'include' is allowed "
                                  "only outside of subsections."));
           flush();
+          AssertThrow(statement.size() > 7,
+                      ExcMessage("In '" + file + "', line " +
+                                 std::to_string(line_number) +
+                                 ": 'include' needs the name of a file."));
           std::filesystem::path included(Utilities::trim(statement.substr(7)));
           if (included.is_relative())
             included = directory / included;
           AssertThrow(std::ifstream(included).good(),
                       ExcMessage("In '" + file + "': cannot open the file '" +
                                  included.string() + "' it includes."));
-          parse_parameter_file(prm, included.string(), skip_undefined);
+          parse_parameter_file(prm, included.string(), skip_undefined, chain);
           blank_lines += '\n';
           chunk = blank_lines;
         }
+      AssertThrow(!in.bad(),
+                  ExcMessage("Reading the parameter file '" + file +
+                             "' failed after line " +
+                             std::to_string(line_number) + ": " +
+                             std::strerror(errno) + "."));
       flush();
     }
 
@@ -242,11 +283,10 @@ namespace Contact
                                    const Parameters  &base,
                                    const unsigned int level)
     {
-      using Refine             = ConvergenceStudyParameters::Refine;
-      const auto        &study = base.convergence_study;
-      const unsigned int n_steps =
-        std::ceil(base.time.end_time / base.time.time_step - 1e-9);
-      const double       factor = std::pow(0.5, level);
+      using Refine               = ConvergenceStudyParameters::Refine;
+      const auto        &study   = base.convergence_study;
+      const unsigned int n_steps = base.time.n_steps();
+      const double       factor  = std::pow(0.5, level);
       std::ostringstream h, k;
       h << std::setprecision(17)
         << base.geometry.cell_size *
@@ -443,10 +483,17 @@ namespace Contact
   void run_from_command_line(const int argc, const char *const *argv)
   {
     const CommandLine command_line = read_command_line(argc, argv);
-    ParameterHandler  prm;
+    if (command_line.help)
+      {
+        std::cout << usage << std::endl;
+        return;
+      }
+    ParameterHandler prm;
     Parameters::declare_parameters(prm);
     if (command_line.print_parameters)
       {
+        if (!command_line.parameter_file.empty())
+          read_parameters(command_line, prm);
         prm.print_parameters(std::cout,
                              ParameterHandler::PRM |
                                ParameterHandler::KeepDeclarationOrder);

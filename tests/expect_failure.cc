@@ -1,7 +1,7 @@
 /* Runs `contact <file.prm>` on a .prm that must be rejected, prints what the
    program printed (with the directory of the .prm removed, so that the
    output holds no absolute path) and whether it exited non-zero. Exits 0
-   only if the program failed, as a rejected input must. */
+   only if the program failed without crashing, as a rejected input must. */
 
 #include <array>
 #include <cstdio>
@@ -34,8 +34,16 @@ int main(int argc, char *argv[])
        at             = text.find(directory))
     text.erase(at, directory.size());
   std::cout << text;
-  const bool failed = !WIFEXITED(status) || WEXITSTATUS(status) != 0;
-  std::cout << (failed ? "exit status: non-zero" : "exit status: zero")
-            << std::endl;
-  return failed ? 0 : 1;
+  // A rejected input ends with an error message and exit status 1; a
+  // signal (the shell reports 128 + its number) or an uncaught C++
+  // exception is a crash, not a rejection.
+  const int  code = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+  const bool crashed =
+    code >= 128 || text.find("terminate called") != std::string::npos;
+  if (crashed)
+    std::cout << "exit status: crashed (" << code << ")" << std::endl;
+  else
+    std::cout << (code != 0 ? "exit status: non-zero" : "exit status: zero")
+              << std::endl;
+  return (code != 0 && !crashed) ? 0 : 1;
 }
