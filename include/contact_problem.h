@@ -214,11 +214,13 @@ namespace Contact
     void        require_checkpoint() const;
     void        save_checkpoint();
     void        load_checkpoint();
+    std::string read_checkpoint_payload() const;
     void        cut_output_back_to_checkpoint() const;
     template <class Archive>
     void serialize_checkpoint_state(Archive &archive);
 
     // output.cc
+    void           claim_output_directory();
     void           prepare_output_directory();
     void           write_vtu();
     void           write_pvd() const;
@@ -319,17 +321,22 @@ namespace Contact
     StepStatistics                              totals;
     double                                      max_relative_energy_residual;
     // Above it the energy identity (doc/algorithm.md) has failed, and the
-    // run ends with an error.
+    // run ends with an error (the summary prints it as text).
     static constexpr double energy_identity_tolerance = 1e-8;
-    // Mean wall time of one forward/back substitution with the factor of K
-    // (measured on the solve for the free velocity of every step).
+    // Wall time of the steps' first solves with K (or substitutions with
+    // its factor), summed over the steps computed by this process's run
+    // (not those before a resumed checkpoint), and their number.
     double                                           substitution_time = 0;
+    unsigned int                                     steps_timed       = 0;
     ErrorNorms                                       current_errors;
     ErrorNorms                                       max_errors;
     std::function<void(const ContactProblem<dim> &)> step_observer;
     Timer                                            run_timer;
     // Wall time since the last checkpoint, for 'Output/Checkpoint minutes'.
     Timer checkpoint_timer;
+    // The lock on the output directory (its file descriptor, closed with
+    // the last copy), held by the first process while the run lives.
+    std::shared_ptr<const int> output_directory_lock;
   };
 } // namespace Contact
 

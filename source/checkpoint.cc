@@ -3,6 +3,11 @@
    name and renamed, so a run killed at any moment leaves either the
    previous checkpoint or the new one, never half of one.
 
+   The file is a line naming the format, a line with the size and the
+   CRC-32 of the rest, and the rest: the shape of the discrete problem, the
+   entries of the .prm that define it, and the state. A damaged or
+   truncated file, or one of another problem, is refused by name.
+
    The mesh, the matrices and the factorisation are not stored: they follow
    from the .prm deterministically and are rebuilt on --resume, which then
    continues with bitwise the same numbers as the uninterrupted run
@@ -13,6 +18,8 @@
 
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
+#include <boost/crc.hpp>
+#include <boost/serialization/map.hpp>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
@@ -23,13 +30,84 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 namespace Contact
 {
   namespace
   {
-    const std::string checkpoint_format = "contact checkpoint 3";
+    const std::string checkpoint_format = "contact checkpoint 4";
+
+    std::uint32_t crc32(const std::string &bytes)
+    {
+      boost::crc_32_type crc;
+      crc.process_bytes(bytes.data(), bytes.size());
+      return crc.checksum();
+    }
+
+    // What a resumed run may change without changing the discrete problem
+    // (README, 'When a run fails'): the end and the solver, and the output
+    // except the probes and the time series, whose columns must continue.
+    // k itself is part of the checkpoint's shape.
+    bool may_change_on_resume(const std::string &entry)
+    {
+      if (entry == "Output/Probe points" || entry == "Output/Time series")
+        return false;
+      return entry.rfind("Output/", 0) == 0 || entry.rfind("Solver/", 0) == 0 ||
+             entry == "Time/End time" || entry == "Time/Time step" ||
+             entry == "Time/Max steps";
+    }
+
+    // 'Section/Entry' -> value for the entries of the .prm (its ShortPRM
+    // print) that define the discrete problem.
+    std::map<std::string, std::string>
+    problem_entries(const std::string &used_parameters)
+    {
+      std::map<std::string, std::string> entries;
+      std::vector<std::string>           sections;
+      std::istringstream                 in(used_parameters);
+      for (std::string line; std::getline(in, line);)
+        {
+          line = Utilities::trim(line);
+          if (line.rfind("subsection ", 0) == 0)
+            sections.push_back(Utilities::trim(line.substr(11)));
+          else if (line == "end" && !sections.empty())
+            sections.pop_back();
+          else if (line.rfind("set ", 0) == 0 &&
+                   line.find('=') != std::string::npos)
+            {
+              std::string entry;
+              for (const std::string &section : sections)
+                entry += section + "/";
+              const std::size_t equal = line.find('=');
+              entry += Utilities::trim(line.substr(4, equal - 4));
+              if (!may_change_on_resume(entry))
+                entries[entry] = Utilities::trim(line.substr(equal + 1));
+            }
+        }
+      return entries;
+    }
+
+    // The entries whose values differ, 'entry: checkpoint a, now b'.
+    std::string
+    differing_entries(const std::map<std::string, std::string> &stored,
+                      const std::map<std::string, std::string> &now)
+    {
+      std::string text;
+      const auto  value = [](const auto &entries, const std::string &entry) {
+        const auto found = entries.find(entry);
+        return found == entries.end() ? std::string("(not set)") :
+                                         "'" + found->second + "'";
+      };
+      std::map<std::string, std::string> all(stored);
+      all.insert(now.begin(), now.end());
+      for (const auto &[entry, unused] : all)
+        if (value(stored, entry) != value(now, entry))
+          text += "\n  " + entry + ": " + value(stored, entry) +
+                  " in the checkpoint, " + value(now, entry) + " now";
+      return text;
+    }
 
     template <class Archive>
     void serialize_vector(Archive &archive, VectorType &vector)
@@ -115,11 +193,24 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::require_checkpoint() const
   {
+    const std::string &directory = parameters.output.directory;
+    const unsigned int n_processes =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    std::string other;
+    if (n_processes > 1 && std::filesystem::exists(directory + "/checkpoint"))
+      other = " There is one written by 1 process ('" + directory +
+              "/checkpoint'): resume it with one process.";
+    else if (n_processes == 1 &&
+             std::filesystem::exists(directory + "/checkpoint.0"))
+      other = " There is one written by several processes ('" + directory +
+              "/checkpoint.0', ...): resume it with as many processes.";
     AssertThrow(std::filesystem::exists(checkpoint_name()),
                 ExcMessage("'Output/Resume' (--resume): there is no "
                            "checkpoint '" +
-                           checkpoint_name() +
-                           "'. Checkpoints are written with 'Output/"
+                           checkpoint_name() + "' for a run on " +
+                           std::to_string(n_processes) + " process(es)." +
+                           other +
+                           " Checkpoints are written with 'Output/"
                            "Checkpoint interval' or 'Output/Checkpoint "
                            "minutes' into the output directory."));
   }
@@ -152,15 +243,22 @@ namespace Contact
   void ContactProblem<dim>::save_checkpoint()
   {
     TimerOutput::Scope t(computing_timer, "Checkpoint");
-    const std::string  shape = checkpoint_shape();
-    const std::string  name  = checkpoint_name();
+    const std::string  name = checkpoint_name();
+    std::ostringstream payload(std::ios::binary);
     {
-      std::ofstream                   file(name + ".tmp", std::ios::binary);
-      boost::archive::binary_oarchive archive(file);
-      std::string                     format  = checkpoint_format;
-      std::string                     written = shape;
-      archive &format                &written;
+      boost::archive::binary_oarchive    archive(payload);
+      std::string                        shape = checkpoint_shape();
+      std::map<std::string, std::string> entries =
+        problem_entries(parameters.used_parameters);
+      archive &shape &entries;
       serialize_checkpoint_state(archive);
+    }
+    const std::string bytes = payload.str();
+    {
+      std::ofstream file(name + ".tmp", std::ios::binary);
+      file << checkpoint_format << '\n'
+           << bytes.size() << ' ' << crc32(bytes) << '\n';
+      file.write(bytes.data(), bytes.size());
       file.flush();
       AssertThrow(file,
                   ExcMessage("Cannot write the checkpoint '" + name +
@@ -176,26 +274,31 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::load_checkpoint()
   {
-    const std::string name = checkpoint_name();
-    std::ifstream     file(name, std::ios::binary);
-    AssertThrow(file, ExcMessage("Cannot read the checkpoint '" + name + "'."));
-    boost::archive::binary_iarchive archive(file);
-    std::string                     format;
-    std::string                     stored;
-    archive                        &format;
-    AssertThrow(format == checkpoint_format,
-                ExcMessage("'" + name + "' is a checkpoint of format '" +
-                           format + "', this program reads '" +
-                           checkpoint_format + "'."));
-    archive          &stored;
-    const std::string shape = checkpoint_shape();
-    AssertThrow(stored == shape,
+    const std::string                  bytes = read_checkpoint_payload();
+    std::istringstream                 payload(bytes, std::ios::binary);
+    boost::archive::binary_iarchive    archive(payload);
+    std::string                        stored_shape;
+    std::map<std::string, std::string> stored_entries;
+    archive &stored_shape             &stored_entries;
+    const std::string                  name  = checkpoint_name();
+    const std::string                  shape = checkpoint_shape();
+    AssertThrow(stored_shape == shape,
                 ExcMessage("The checkpoint '" + name +
                            "' belongs to another "
                            "discrete problem (" +
-                           stored + ") than this .prm gives (" + shape +
+                           stored_shape + ") than this .prm gives (" + shape +
                            "): resume with the scene, mesh, time step and "
                            "number of processes of the checkpointed run."));
+    const std::string differences =
+      differing_entries(stored_entries,
+                        problem_entries(parameters.used_parameters));
+    AssertThrow(differences.empty(),
+                ExcMessage("The checkpoint '" + name +
+                           "' belongs to another problem: these entries "
+                           "differ from the checkpointed run's, and only "
+                           "'Time/End time', 'Solver/...' and most of "
+                           "'Output/...' may change on --resume:" +
+                           differences));
 
     serialize_checkpoint_state(archive);
     AssertThrow(step_number <= n_time_steps,
@@ -208,6 +311,47 @@ namespace Contact
           << " (t = " << time << ")." << std::endl;
     cut_output_back_to_checkpoint();
     checkpoint_timer.restart();
+  }
+
+
+  // @sect4{ContactProblem::read_checkpoint_payload}
+
+  // The checkpoint's bytes after its two header lines, checked against the
+  // size and CRC-32 stored there.
+  template <int dim>
+  std::string ContactProblem<dim>::read_checkpoint_payload() const
+  {
+    const std::string name = checkpoint_name();
+    std::ifstream     file(name, std::ios::binary);
+    AssertThrow(file, ExcMessage("Cannot read the checkpoint '" + name + "'."));
+    std::string format;
+    std::getline(file, format);
+    AssertThrow(format == checkpoint_format,
+                ExcMessage("'" + name +
+                           "' is not a checkpoint this program "
+                           "reads: it does not begin with the line '" +
+                           checkpoint_format +
+                           "' (written by an older version, or damaged)."));
+    std::size_t   size     = 0;
+    std::uint32_t checksum = 0;
+    file >> size >> checksum;
+    file.get();
+    std::error_code error;
+    const auto      file_size = std::filesystem::file_size(name, error);
+    AssertThrow(file && !error &&
+                  file_size == static_cast<std::uintmax_t>(file.tellg()) + size,
+                ExcMessage("The checkpoint '" + name +
+                           "' is damaged: its size does not match its header "
+                           "(truncated?). Resume from another copy, or start "
+                           "the run again without --resume."));
+    std::string bytes(size, '\0');
+    file.read(bytes.data(), size);
+    AssertThrow(file && crc32(bytes) == checksum,
+                ExcMessage("The checkpoint '" + name +
+                           "' is damaged: its checksum does not match its "
+                           "contents. Resume from another copy, or start the "
+                           "run again without --resume."));
+    return bytes;
   }
 
 
@@ -247,13 +391,14 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                                \
-  template std::string ContactProblem<dim>::checkpoint_name() const;    \
-  template std::string ContactProblem<dim>::checkpoint_shape() const;   \
-  template bool        ContactProblem<dim>::checkpoint_due() const;     \
-  template void        ContactProblem<dim>::require_checkpoint() const; \
-  template void        ContactProblem<dim>::save_checkpoint();          \
-  template void        ContactProblem<dim>::load_checkpoint();          \
+#define INSTANTIATE(dim)                                                     \
+  template std::string ContactProblem<dim>::checkpoint_name() const;         \
+  template std::string ContactProblem<dim>::checkpoint_shape() const;        \
+  template bool        ContactProblem<dim>::checkpoint_due() const;          \
+  template void        ContactProblem<dim>::require_checkpoint() const;      \
+  template void        ContactProblem<dim>::save_checkpoint();               \
+  template void        ContactProblem<dim>::load_checkpoint();               \
+  template std::string ContactProblem<dim>::read_checkpoint_payload() const; \
   template void ContactProblem<dim>::cut_output_back_to_checkpoint() const;
 
   INSTANTIATE(2)

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 
@@ -146,6 +147,7 @@ namespace Contact
   RunSummary ContactProblem<dim>::run()
   {
     run_timer.restart();
+    claim_output_directory();
     if (parameters.output.resume)
       require_checkpoint();
     make_grid();
@@ -181,6 +183,7 @@ namespace Contact
       {
         time                            = step_number * time_step;
         const StepStatistics statistics = advance(parameters.solver.step_cuts);
+        ++steps_timed;
         AssertThrow(std::isfinite(velocity.linfty_norm()) &&
                       std::isfinite(energy.residual()),
                     ExcMessage("Step " + std::to_string(step_number) +
@@ -223,6 +226,14 @@ namespace Contact
       }
     step_number = n_time_steps;
     print_summary();
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        // Removed only if empty: what a killed run left there stays.
+        std::error_code error;
+        std::filesystem::remove(parameters.output.directory + "/.partial",
+                                error);
+      }
+    output_directory_lock.reset();
     std::ostringstream residual;
     residual << std::setprecision(2) << max_relative_energy_residual
              << " of the energies, above its tolerance "

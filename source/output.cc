@@ -10,14 +10,98 @@
 
 #include <contact_problem.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
 namespace Contact
 {
+  namespace
+  {
+    // The output directory, created, and locked with flock() on its file
+    // '.lock' (which then holds the pid): the kernel releases the lock when
+    // the process ends, however it ends. Returns the reason on failure.
+    std::string lock_output_directory(const std::string          &directory,
+                                      std::shared_ptr<const int> &lock)
+    {
+      std::error_code error;
+      std::filesystem::create_directories(directory, error);
+      if (error)
+        return "Cannot create the directory '" + directory +
+               "' of the entry 'Output/Output directory': " + error.message();
+      const std::string name = directory + "/.lock";
+      const int         fd   = open(name.c_str(), O_RDWR | O_CREAT, 0644);
+      if (fd < 0)
+        return "Cannot create '" + name + "': " + std::strerror(errno);
+      if (flock(fd, LOCK_EX | LOCK_NB) != 0)
+        {
+          std::ifstream holder(name);
+          std::string   pid;
+          std::getline(holder, pid);
+          close(fd);
+          return "The output directory '" + directory +
+                 "' is in use by another run (process " +
+                 (pid.empty() ? std::string("unknown") : pid) +
+                 "). Wait for it to end, or give this run another "
+                 "'Output/Output directory'.";
+        }
+      const std::string pid = std::to_string(getpid()) + "\n";
+      if (ftruncate(fd, 0) != 0 || write(fd, pid.data(), pid.size()) < 0)
+        {
+          close(fd);
+          return "Cannot write '" + name + "': " + std::strerror(errno);
+        }
+      lock = std::shared_ptr<const int>(new int(fd), [](const int *fd) {
+        close(*fd);
+        delete fd;
+      });
+      return "";
+    }
+
+    // Whether a file of the output directory is one this program writes.
+    bool is_result_file(const std::string &name)
+    {
+      const auto starts = [&](const std::string &prefix) {
+        return name.rfind(prefix, 0) == 0;
+      };
+      return starts("checkpoint") || starts("solution") ||
+             starts("time_series.csv") || name == "parameters.prm";
+    }
+  } // namespace
+
+
+  // @sect4{ContactProblem::claim_output_directory}
+
+  // An output directory belongs to one run at a time: two runs writing the
+  // same time series would interleave their rows. Collective: the first
+  // process takes the lock, all throw the same error if it fails.
+  template <int dim>
+  void ContactProblem<dim>::claim_output_directory()
+  {
+    std::string failure;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      failure = lock_output_directory(parameters.output.directory,
+                                      output_directory_lock);
+    failure = Utilities::MPI::broadcast(mpi_communicator, failure, 0);
+    AssertThrow(failure.empty(), ExcMessage(failure));
+  }
+
+
   // @sect4{ContactProblem::prepare_output_directory}
 
+  // A fresh run first removes the results an earlier run left in the
+  // directory (VTU/PVD, time series, parameters, checkpoints; other files
+  // stay), so that its PVD lists only its own files and a later --resume
+  // cannot resume the earlier run. A resumed run keeps them, cut back to
+  // the checkpoint (load_checkpoint).
   template <int dim>
   void ContactProblem<dim>::prepare_output_directory()
   {
@@ -25,25 +109,34 @@ namespace Contact
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
     std::error_code error;
-    std::filesystem::create_directories(directory, error);
-    AssertThrow(!error,
-                ExcMessage("Cannot create the directory '" + directory +
-                           "' of the entry 'Output/Output directory': " +
-                           error.message()));
+    if (!parameters.output.resume)
+      {
+        for (const auto &entry :
+             std::filesystem::directory_iterator(directory, error))
+          if (is_result_file(entry.path().filename().string()))
+            std::filesystem::remove(entry.path(), error);
+        std::filesystem::remove_all(directory + "/.partial", error);
+      }
     // VTU pieces are written here first and renamed into the directory
     // when complete (write_vtu).
     std::filesystem::create_directories(directory + "/.partial", error);
+    AssertThrow(!error,
+                ExcMessage("Cannot create '" + directory +
+                           "/.partial': " + error.message()));
     std::ofstream used(directory + "/parameters.prm");
     used << parameters.used_parameters;
     AssertThrow(used, ExcMessage("Cannot write into '" + directory + "'."));
 
     // On resume, load_checkpoint has cut the series back to the
-    // checkpoint's step; rows are appended from there.
-    if (parameters.output.write_time_series && parameters.output.resume)
-      time_series.open(directory + "/time_series.csv", std::ios::app);
+    // checkpoint's step; rows are appended from there (if the file is gone,
+    // a new one starts with the header at the checkpoint's step).
+    const std::string series = directory + "/time_series.csv";
+    if (parameters.output.write_time_series && parameters.output.resume &&
+        std::filesystem::exists(series))
+      time_series.open(series, std::ios::app);
     else if (parameters.output.write_time_series)
       {
-        time_series.open(directory + "/time_series.csv");
+        time_series.open(series);
         time_series
           << "step,time,convexification_iterations,active_set_iterations,"
              "rejected_accelerations,active_set_cycles,step_cuts,"
@@ -436,9 +529,9 @@ namespace Contact
     pcout << "Energy identity: largest residual relative to the energies "
           << std::setprecision(2) << max_relative_energy_residual
           << (max_relative_energy_residual < energy_identity_tolerance ?
-                " (below " :
-                " (ABOVE ")
-          << energy_identity_tolerance << ")" << std::endl;
+                " (below 1e-8)" :
+                " (ABOVE 1e-8)")
+          << std::endl;
     if (exact_solution)
       pcout << "Errors, largest over the steps: ||eps(u - u_h)|| "
             << std::setprecision(6) << max_errors.displacement_V
@@ -448,9 +541,11 @@ namespace Contact
       {
         pcout << "Wall time: " << std::setprecision(4) << run_timer.wall_time()
               << " s" << std::endl;
-        const double step_time = computing_timer.get_summary_data(
+        const unsigned int steps     = std::max(steps_timed, 1u);
+        const double       step_time = computing_timer.get_summary_data(
                                    TimerOutput::total_wall_time)["Time steps"] /
-                                 n_time_steps;
+                                 steps;
+        const double substitution = substitution_time / steps;
         if (!friction_law.is_frictionless())
           pcout << "Contact solver: " << friction_solver->description()
                 << std::endl;
@@ -458,13 +553,13 @@ namespace Contact
           pcout << "Factor of K: "
                 << static_cast<long long>(factorization->factor_size())
                 << " nonzeros" << std::endl;
-        if (substitution_time > 0)
+        if (substitution > 0)
           pcout << "Time per step " << 1e3 * step_time
-                << " ms = " << step_time / substitution_time
+                << " ms = " << step_time / substitution
                 << (factorization->iterations() > 0 ?
                       " solves with K (one: " :
                       " substitutions with the factor of K (one: ")
-                << 1e3 * substitution_time << " ms)" << std::endl;
+                << 1e3 * substitution << " ms)" << std::endl;
         Utilities::System::MemoryStats memory;
         Utilities::System::get_memory_stats(memory);
         const auto peak =
@@ -479,6 +574,7 @@ namespace Contact
 
 
 #define INSTANTIATE(dim)                                                    \
+  template void ContactProblem<dim>::claim_output_directory();              \
   template void ContactProblem<dim>::prepare_output_directory();            \
   template void ContactProblem<dim>::write_time_series_row(                 \
     const StepStatistics &);                                                \

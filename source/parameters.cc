@@ -764,7 +764,11 @@ namespace Contact
                         "results-barboteu2015",
                         Patterns::Anything(),
                         "Directory for VTU/PVD, time_series.csv and "
-                        "parameters.prm, relative to where the program runs.");
+                        "parameters.prm, relative to where the program runs. "
+                        "A run that is not resumed replaces the results of "
+                        "an earlier run there (its VTU/PVD, time series, "
+                        "parameters and checkpoints); one run at a time "
+                        "may use it (the lock file .lock names the run).");
       prm.declare_entry("VTU interval",
                         "8",
                         Patterns::Integer(0),

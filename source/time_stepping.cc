@@ -125,8 +125,7 @@ namespace Contact
       statistics =
         friction_solver->solve_step(step_rhs, velocity, step_label());
       statistics.cg_iterations = factorization->iterations() - cg_before;
-      substitution_time +=
-        friction_solver->substitution_seconds() / n_time_steps;
+      substitution_time += friction_solver->substitution_seconds();
       displacement = old_displacement;
       displacement.add(time_step, velocity);
     }

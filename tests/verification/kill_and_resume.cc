@@ -261,7 +261,8 @@ void kill_and_resume(const unsigned int processes)
                 << std::endl;
     }
 
-  bool leftovers = !fs::is_empty(killed + "/.partial");
+  bool leftovers =
+    fs::exists(killed + "/.partial") && !fs::is_empty(killed + "/.partial");
   for (const auto &entry : fs::directory_iterator(killed))
     leftovers = leftovers || entry.path().extension() == ".tmp";
   std::cout << "no temporary or partial files left: " << yes_no(!leftovers)

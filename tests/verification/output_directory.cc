@@ -1,0 +1,184 @@
+/* What the program does with an output directory and its checkpoint when
+   they are not what the run expects (the paper's scene, h = k = 1/16 unless
+   said otherwise; the program runs as a separate process):
+   - a checkpoint with bytes flipped, or cut short, is refused by name;
+   - a checkpoint of another problem (other Young's modulus, other friction
+     bound S) with the same mesh and time step is refused, naming the
+     entries that differ; a longer End time is accepted;
+   - a checkpoint of one process resumed on two says so;
+   - a fresh run in a directory holding another run's results (VTU files of
+     more steps, a checkpoint) removes them: its PVD lists only its own
+     files, and a later --resume finds no checkpoint of the earlier run;
+   - a second run in a directory that a running one uses is refused,
+     naming the first run's process. */
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+const std::string scene = CONTACT_PRM_DIR "/barboteu2015.prm";
+
+// Runs the program with these --set entries in `directory`; returns its
+// exit status and its last line of output (the error, if it failed).
+std::pair<int, std::string> run(const std::string              &directory,
+                                const std::vector<std::string> &sets,
+                                const std::string              &launcher = "")
+{
+  std::string command = launcher + CONTACT_BINARY;
+  for (const std::string &set :
+       std::vector<std::string>{"Geometry/Cell size=0.0625",
+                                "Time/Time step=0.0625",
+                                "Output/Progress interval=0",
+                                "Output/Print timings=false",
+                                "Output/Output directory=" + directory})
+    command += " --set \"" + set + "\"";
+  for (const std::string &set : sets)
+    command += " --set \"" + set + "\"";
+  command += " " + scene + " 2>&1";
+  FILE                  *pipe = popen(command.c_str(), "r");
+  std::string            last, error;
+  bool                   in_error = false;
+  std::array<char, 4096> buffer;
+  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr)
+    {
+      const std::string line = buffer.data();
+      const bool blank = line.find_first_not_of(" \n") == std::string::npos;
+      if (!blank)
+        last = line;
+      // The error and the lines that continue it, of the first process
+      // that reports.
+      in_error =
+        (in_error && !blank) || (error.empty() && line.rfind("Error", 0) == 0);
+      if (in_error)
+        error += line;
+    }
+  const int status = pclose(pipe);
+  if (!error.empty())
+    {
+      last = error;
+      // Which of several processes reports first varies (and names its
+      // own checkpoint file).
+      const std::size_t piece = last.find("/checkpoint.");
+      if (piece != std::string::npos)
+        last.replace(piece + 12, 1, "N");
+      const std::size_t process = last.find(" (process ");
+      if (process != std::string::npos &&
+          last.find(" of ", process) < last.find(')', process))
+        last.erase(process, last.find(')', process) + 1 - process);
+    }
+  while (!last.empty() && last.back() == '\n')
+    last.pop_back();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, last};
+}
+
+void report(const std::string &what, const std::pair<int, std::string> &result)
+{
+  const std::size_t text = result.second.find_first_not_of(' ');
+  std::cout << what << ": exit " << (result.first == 0 ? "0" : "non-zero")
+            << "\n  "
+            << (text == std::string::npos ? "" : result.second.substr(text))
+            << std::endl;
+}
+
+void copy(const std::string &from, const std::string &to)
+{
+  fs::remove_all(to);
+  fs::copy(from, to, fs::copy_options::recursive);
+}
+
+int main()
+{
+  const std::vector<std::string> checkpoint = {"Output/Checkpoint interval=6",
+                                               "Output/VTU interval=6",
+                                               "Time/End time=0.75"};
+  fs::remove_all("original");
+  report("run with a checkpoint at step 12", run("original", checkpoint));
+
+  // Damaged checkpoints.
+  copy("original", "flipped");
+  {
+    std::fstream file("flipped/checkpoint",
+                      std::ios::in | std::ios::out | std::ios::binary);
+    file.seekp(fs::file_size("flipped/checkpoint") / 2);
+    file.write("\x55\xAA\x55\xAA\x55\xAA\x55\xAA", 8);
+  }
+  report("8 bytes flipped", run("flipped", {"Output/Resume=true"}));
+  copy("original", "truncated");
+  fs::resize_file("truncated/checkpoint",
+                  fs::file_size("truncated/checkpoint") - 100);
+  report("100 bytes cut off", run("truncated", {"Output/Resume=true"}));
+
+  // Another problem, and a legitimate change.
+  copy("original", "other");
+  report("other Young's modulus and S",
+         run("other",
+             {"Output/Resume=true",
+              "Time/End time=0.75",
+              "Material/Young's modulus=3000",
+              "Friction/Friction bound S=50"}));
+  report("longer End time (16 steps of the same k)",
+         run("other", {"Output/Resume=true", "Time/End time=1"}));
+  copy("original", "two");
+  report("one process's checkpoint on two",
+         run("two",
+             {"Output/Resume=true", "Time/End time=0.75"},
+             "mpirun --allow-run-as-root --oversubscribe -np 2 "));
+
+  // A fresh run where another one left its results.
+  copy("original", "reused");
+  report("fresh run of 4 steps in a directory of a 12-step run",
+         run("reused", {"Time/End time=0.25", "Output/VTU interval=2"}));
+  unsigned int vtu = 0;
+  for (const auto &entry : fs::directory_iterator("reused"))
+    vtu += (entry.path().extension() == ".pvtu");
+  std::ifstream pvd("reused/solution.pvd");
+  std::string   records((std::istreambuf_iterator<char>(pvd)),
+                      std::istreambuf_iterator<char>());
+  std::cout << "  VTU records left: " << vtu << ", checkpoint left: "
+            << (fs::exists("reused/checkpoint") ? "yes" : "no")
+            << ", PVD lists step 12: "
+            << (records.find("00012") != std::string::npos ? "yes" : "no")
+            << std::endl;
+  report("--resume there",
+         run("reused", {"Output/Resume=true", "Time/End time=0.75"}));
+
+  // Two runs in one directory at once: the first one runs long enough
+  // (h = k = 1/128) for the second to start while it holds the lock.
+  fs::remove_all("shared");
+  const pid_t first = fork();
+  if (first == 0)
+    {
+      execl("/bin/sh",
+            "sh",
+            "-c",
+            (std::string("exec ") + CONTACT_BINARY +
+             " --set 'Output/Output directory=shared' --set "
+             "'Output/VTU interval=0' " +
+             scene + " > /dev/null 2>&1")
+              .c_str(),
+            nullptr);
+      _exit(127);
+    }
+  while (!fs::exists("shared/.lock") || fs::file_size("shared/.lock") == 0)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  auto              second = run("shared", {});
+  const std::string pid    = std::to_string(first);
+  const auto        at     = second.second.find(pid);
+  if (at != std::string::npos)
+    second.second.replace(at, pid.size(), "<pid of the first run>");
+  report("second run in the directory of a running one", second);
+  kill(first, SIGKILL);
+  waitpid(first, nullptr, 0);
+}
