@@ -21,6 +21,11 @@ inline FullMatrix<double> make_delassus(const unsigned int n,
         stiffness(i, i - 1) = stiffness(i - 1, i) = -1;
     }
   stiffness.invert();
+  // Exactly symmetric, as DelassusOperator requires (the inverse is so up
+  // to round-off).
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = 0; j < i; ++j)
+      stiffness(i, j) = stiffness(j, i);
   const double       coupling[2][2] = {{1., 0.4}, {0.4, 0.8}};
   FullMatrix<double> D(n * m, n * m);
   for (unsigned int i = 0; i < n; ++i)
