@@ -278,7 +278,13 @@ namespace Contact
                       factor->is_ll,
                     ExcMessage("CHOLMOD could not factorise K = (1/k) M + A + "
                                "k B: it is not positive definite (status " +
-                               std::to_string(common.status) + ")."));
+                               std::to_string(common.status) +
+                               "). Its entries overflow or span more than "
+                               "the range of double precision if "
+                               "'Material/Young's modulus', 'Material/"
+                               "Density', the viscosities or 'Time/Time "
+                               "step' are extreme (e.g. E = 1e308, k = "
+                               "1e-300)."));
         // A matrix that is singular in exact arithmetic (a body free to
         // move rigidly) may still factorise in floating point; CHOLMOD's
         // estimate of the reciprocal condition number tells.
@@ -290,10 +296,15 @@ namespace Contact
                                "precision (CHOLMOD's reciprocal condition "
                                "estimate " +
                                rcond_text.str() +
-                               "): the body is not fixed against a rigid "
-                               "motion. Clamp a boundary ('Boundary "
-                               "conditions/Clamped boundary ids') or give it "
-                               "mass ('Material/Density' > 0)."));
+                               "): either the body is not fixed against a "
+                               "rigid motion (clamp a boundary, 'Boundary "
+                               "conditions/Clamped boundary ids', or give it "
+                               "mass, 'Material/Density' > 0), or its terms "
+                               "differ by more than 14 orders of magnitude "
+                               "(extreme 'Material/Young's modulus', "
+                               "'Material/Density', viscosities or 'Time/Time "
+                               "step'), or a cell of the mesh is degenerate "
+                               "(zero area)."));
       }
 
       std::unique_ptr<Factorization>

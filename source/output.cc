@@ -470,8 +470,12 @@ namespace Contact
                 ++n_slip;
               }
           pcout << "Report t = " << std::setprecision(6) << *t << " (step "
-                << step_number << ", t_n = " << time << "): " << n_stick
-                << " stick, " << n_slip << " slip";
+                << step_number << ", t_n = " << time
+                << (*t - time > 0.5 * time_step * (1 + 1e-12) ?
+                      ", the last step: the report time is after "
+                      "'Time/End time'" :
+                      "")
+                << "): " << n_stick << " stick, " << n_slip << " slip";
           if (n_slip > 0)
             pcout << ", slip zone x in [" << slip_from << ", " << slip_to
                   << "]";
@@ -481,7 +485,7 @@ namespace Contact
           for (unsigned int p = 0; p < contact_nodes.size(); ++p)
             friction += contact_nodes[p].tangential_vector(friction_force, p);
           pcout << "; friction force ";
-          if (dim == 2)
+          if (dim == 2 && !contact_nodes.empty())
             pcout << friction * contact_nodes[0].tangents[0];
           else
             pcout << friction;

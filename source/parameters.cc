@@ -210,6 +210,20 @@ namespace Contact
                   "a value above the matching Geometry/Lower corner in "
                   "every coordinate");
     check_entry(cell_size > 0, "Geometry/Cell size", cell_size, "h > 0");
+    double shortest_edge = std::numeric_limits<double>::max();
+    for (unsigned int d = 0; d < dim; ++d)
+      shortest_edge =
+        std::min(shortest_edge, upper_corner[d] - lower_corner[d]);
+    check_entry(!mesh_file.empty() || cell_size <= shortest_edge,
+                "Geometry/Cell size",
+                cell_size,
+                "h at most the shortest edge of the box, " +
+                  Utilities::to_string(shortest_edge));
+    // FE_SimplexP of deal.II 9.4 has degrees 1 and 2 only.
+    check_entry(!simplex_cells || fe_degree <= 2,
+                "Geometry/Finite element degree",
+                fe_degree,
+                "1 or 2 with 'Cell shape = simplex'");
     // Gauss-Lobatto nodes and local refinement exist for hypercubes only
     // in deal.II 9.4.
     AssertThrow(!(simplex_cells && lumped_mass),
@@ -285,6 +299,12 @@ namespace Contact
                                  id_text +
                                  "' is not a boundary id (an integer from 0 "
                                  "to 254)."));
+          AssertThrow(tractions.count(Utilities::string_to_int(id_text)) == 0,
+                      ExcMessage("Entry 'Boundary conditions/Tractions': "
+                                 "boundary id " +
+                                 id_text +
+                                 " is given twice; allowed is one traction "
+                                 "per boundary id."));
           tractions[Utilities::string_to_int(id_text)] =
             Utilities::trim(piece.substr(colon + 1));
         }
@@ -562,8 +582,9 @@ namespace Contact
                         "then the convexification takes over.");
       prm.declare_entry("Max convexification iterations",
                         "200",
-                        Patterns::Integer(1),
-                        "Iteration limit of the convexification per step.");
+                        Patterns::Integer(2),
+                        "Iteration limit of the convexification per step (at "
+                        "least 2: it stops when the slip set repeats).");
       prm.declare_entry("Max active set iterations",
                         "500",
                         Patterns::Integer(1),
@@ -847,6 +868,20 @@ namespace Contact
     AssertThrow(!directory.empty(),
                 ExcMessage("The entry 'Output/Output directory' is empty: "
                            "allowed is a directory name."));
+    // The used parameters are written to <directory>/parameters.prm, where
+    // '#' would start a comment and a newline end the entry.
+    AssertThrow(directory.find_first_of("#\n\\") == std::string::npos,
+                ExcMessage("The entry 'Output/Output directory' = '" +
+                           directory +
+                           "' contains '#', '\\' or a line break, which "
+                           "parameters.prm cannot hold; allowed is a "
+                           "directory name without them."));
+    for (const double t : report_times)
+      check_entry(t > 0,
+                  "Output/Report times",
+                  t,
+                  "times t > 0 (t = 0 is the initial state; times after "
+                  "'Time/End time' are reported at the last step)");
   }
 
 
