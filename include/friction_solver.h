@@ -22,6 +22,7 @@
 #define contact_friction_solver_h
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/timer.h>
 
@@ -168,6 +169,11 @@ namespace Contact
   };
 
 
+  /** A step's friction problem not solved within the iteration limits: the
+   *  one failure that 'Solver/Step cuts' retries with k/2 (every process
+   *  throws it together: the decisions are reduced over the processes). */
+  DeclException1(ExcStepNotConverged, std::string, << arg1);
+
   /** Which step is solved, for the messages of a failure. */
   struct StepLabel
   {
@@ -271,6 +277,7 @@ namespace Contact
                                       std::vector<NodeState> &state);
     std::string  convexification_failure(const double     residual,
                                          const StepLabel &label) const;
+    bool         all_processes(const bool condition) const;
     void         add_contact_state(StepStatistics &statistics) const;
 
     const Parameters         &parameters;

@@ -215,9 +215,34 @@ namespace Contact
     class CholmodFactorization : public Factorization
     {
     public:
+      // CHOLMOD's objects are freed if the factorisation fails (the
+      // destructor does not run for a constructor that throws), and the
+      // class is not copied (the copies would free them twice).
       explicit CholmodFactorization(const TrilinosWrappers::SparseMatrix &K)
       {
         cholmod_start(&common);
+        try
+          {
+            factorise(K);
+          }
+        catch (...)
+          {
+            release();
+            throw;
+          }
+      }
+
+      CholmodFactorization(const CholmodFactorization &)            = delete;
+      CholmodFactorization &operator=(const CholmodFactorization &) = delete;
+
+      ~CholmodFactorization() override
+      {
+        release();
+      }
+
+    private:
+      void factorise(const TrilinosWrappers::SparseMatrix &K)
+      {
         const Epetra_CrsMatrix &matrix = K.trilinos_matrix();
         AssertThrow(matrix.Comm().NumProc() == 1,
                     ExcMessage("'Solver/Linear solver = CHOLMOD' runs on one "
@@ -307,6 +332,7 @@ namespace Contact
                                "(zero area)."));
       }
 
+    public:
       std::unique_ptr<Factorization>
       for_variant(const TrilinosWrappers::SparseMatrix &variant) const override
       {
@@ -318,7 +344,7 @@ namespace Contact
         return common.lnz;
       }
 
-      ~CholmodFactorization() override
+      void release()
       {
         cholmod_free_dense(&solution, &common);
         cholmod_free_dense(&workspace_y, &common);

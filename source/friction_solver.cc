@@ -3,6 +3,7 @@
    convexification of the paper around Tresca problems. */
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 
 
 #include <friction_solver.h>
@@ -271,7 +272,7 @@ namespace Contact
     statistics.convexification_iterations += result.convexification_steps;
     statistics.active_set_iterations += result.active_set_iterations;
     statistics.newton_iterations += result.iterations;
-    if (!result.converged)
+    if (!all_processes(result.converged))
       {
         ++statistics.newton_fallbacks;
         return false;
@@ -351,8 +352,8 @@ namespace Contact
         statistics.active_set_iterations += tresca.iterations;
         statistics.cycles_cured += tresca.cycles_cured;
         AssertThrow(
-          tresca.converged,
-          ExcMessage(
+          all_processes(tresca.converged),
+          ExcStepNotConverged(
             "The active set method for the Tresca problem did not converge "
             "in step " +
             std::to_string(label.step_number) + " (t = " +
@@ -402,9 +403,10 @@ namespace Contact
             slip_set[p] = (state[p] != NodeState::stick);
           }
         residual /= scale;
-        converged = friction_law.is_rate_independent() ||
-                    (residual <= solver.convexification_tolerance &&
-                     slip_set == previous_slip_set);
+        converged =
+          all_processes(friction_law.is_rate_independent() ||
+                        (residual <= solver.convexification_tolerance &&
+                         slip_set == previous_slip_set));
         previous_slip_set = slip_set;
         anderson.next_iterate(rate, new_rate);
         for (double &r : rate)
@@ -412,7 +414,7 @@ namespace Contact
       }
 
     AssertThrow(converged,
-                ExcMessage(convexification_failure(residual, label)));
+                ExcStepNotConverged(convexification_failure(residual, label)));
   }
 
 
@@ -455,6 +457,18 @@ namespace Contact
                         eta,
                         v,
                         state);
+  }
+
+
+  // @sect4{FrictionSolver::all_processes}
+
+  // Every process solves the same problem on Gamma_3 from the same summed
+  // data, so its decisions agree; they are reduced anyway, so that no
+  // process can leave a loop that another one stays in.
+  template <int dim>
+  bool FrictionSolver<dim>::all_processes(const bool condition) const
+  {
+    return Utilities::MPI::min(condition ? 1 : 0, gamma3.mpi_communicator) == 1;
   }
 
 

@@ -74,7 +74,7 @@ namespace Contact
       {
         return do_time_step();
       }
-    catch (const ExceptionBase &failure)
+    catch (const ExcStepNotConverged &)
       {
         step_state() = saved;
         friction_solver->set_state(saved_friction_state);
