@@ -26,7 +26,9 @@
 
 #include <contact_problem.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -262,7 +264,7 @@ namespace Contact
       file.flush();
       AssertThrow(file,
                   ExcMessage("Cannot write the checkpoint '" + name +
-                             ".tmp' (disk full?)."));
+                             ".tmp': " + std::strerror(errno) + "."));
     }
     std::filesystem::rename(name + ".tmp", name);
     checkpoint_timer.restart();
@@ -384,7 +386,9 @@ namespace Contact
             out << line << '\n';
           }
         out.flush();
-        AssertThrow(out, ExcMessage("Cannot write '" + name + ".tmp'."));
+        AssertThrow(out,
+                    ExcMessage("Cannot write '" + name +
+                               ".tmp': " + std::strerror(errno) + "."));
         std::filesystem::rename(name + ".tmp", name);
       }
     write_pvd();

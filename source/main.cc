@@ -8,6 +8,7 @@
 
 #include <dlfcn.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -86,6 +87,10 @@ namespace
 
 int main(int argc, char *argv[])
 {
+  // Beyond a file size limit (ulimit -f) a write then fails with EFBIG,
+  // which the program reports with the file like a full disk, instead of
+  // the signal killing it mid-write.
+  std::signal(SIGXFSZ, SIG_IGN);
   use_one_blas_thread();
   quick_singleton_start();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);

@@ -125,7 +125,10 @@ namespace Contact
                            "/.partial': " + error.message()));
     std::ofstream used(directory + "/parameters.prm");
     used << parameters.used_parameters;
-    AssertThrow(used, ExcMessage("Cannot write into '" + directory + "'."));
+    used.flush();
+    AssertThrow(used,
+                ExcMessage("Cannot write '" + directory +
+                           "/parameters.prm': " + std::strerror(errno) + "."));
 
     // On resume, load_checkpoint has cut the series back to the
     // checkpoint's step; rows are appended from there (if the file is gone,
@@ -229,6 +232,9 @@ namespace Contact
                     << current_errors.displacement_L2;
       }
     time_series << std::endl;
+    AssertThrow(time_series,
+                ExcMessage("Cannot write '" + parameters.output.directory +
+                           "/time_series.csv': " + std::strerror(errno) + "."));
   }
 
 
@@ -367,8 +373,23 @@ namespace Contact
     // killed at any point leaves only complete files, and the PVD lists
     // only files that exist.
     const std::string &directory = parameters.output.directory;
-    const std::string  record    = data_out.write_vtu_with_pvtu_record(
-      directory + "/.partial/", "solution", step_number, mpi_communicator, 5);
+    std::string        record;
+    try
+      {
+        record = data_out.write_vtu_with_pvtu_record(directory + "/.partial/",
+                                                     "solution",
+                                                     step_number,
+                                                     mpi_communicator,
+                                                     5);
+      }
+    catch (const ExceptionBase &)
+      {
+        AssertThrow(false,
+                    ExcMessage("Cannot write the VTU files of step " +
+                               std::to_string(step_number) + " into '" +
+                               directory +
+                               "/.partial': " + std::strerror(errno) + "."));
+      }
     const int ierr = MPI_Barrier(mpi_communicator);
     AssertThrowMPI(ierr);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
@@ -403,7 +424,9 @@ namespace Contact
       std::ofstream pvd(name + ".tmp");
       DataOutBase::write_pvd_record(pvd, pvd_records);
       pvd.flush();
-      AssertThrow(pvd, ExcMessage("Cannot write '" + name + ".tmp'."));
+      AssertThrow(pvd,
+                  ExcMessage("Cannot write '" + name +
+                             ".tmp': " + std::strerror(errno) + "."));
     }
     std::filesystem::rename(name + ".tmp", name);
   }

@@ -9,6 +9,8 @@
    - a fresh run in a directory holding another run's results (VTU files of
      more steps, a checkpoint) removes them: its PVD lists only its own
      files, and a later --resume finds no checkpoint of the earlier run;
+   - a write that fails (a full disk, here a file size limit) names the
+     file and the system's error;
    - a second run in a directory that a running one uses is refused,
      naming the first run's process. */
 
@@ -85,11 +87,12 @@ std::pair<int, std::string> run(const std::string              &directory,
 
 void report(const std::string &what, const std::pair<int, std::string> &result)
 {
+  // The error of a failed run; nothing of a run that ended normally.
   const std::size_t text = result.second.find_first_not_of(' ');
   std::cout << what << ": exit " << (result.first == 0 ? "0" : "non-zero")
-            << "\n  "
-            << (text == std::string::npos ? "" : result.second.substr(text))
             << std::endl;
+  if (result.first != 0 && text != std::string::npos)
+    std::cout << "  " << result.second.substr(text) << std::endl;
 }
 
 void copy(const std::string &from, const std::string &to)
@@ -153,6 +156,13 @@ int main()
             << std::endl;
   report("--resume there",
          run("reused", {"Output/Resume=true", "Time/End time=0.75"}));
+
+  // A full disk, as a file size limit (2 blocks) makes it: the first file
+  // written, parameters.prm, cannot be; the message names it and the
+  // system's error.
+  fs::remove_all("full");
+  report("file size limit (ulimit -f 2)",
+         run("full", {"Output/VTU interval=1"}, "ulimit -f 2; "));
 
   // Two runs in one directory at once: the first one runs long enough
   // (h = k = 1/128) for the second to start while it holds the lock.
