@@ -185,6 +185,8 @@ namespace Contact
                                    const bool   with_body_force,
                                    const bool   with_surface_loads) const;
     void             set_initial_values();
+    void             warn_of_normal_component(const VectorType  &values,
+                                              const std::string &entry) const;
     void             condensed_product(const MatrixType &matrix,
                                        const VectorType &x,
                                        VectorType       &product) const;

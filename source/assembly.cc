@@ -283,8 +283,13 @@ namespace Contact
         u1 = exact_u1.get();
       }
     VectorTools::interpolate(*mapping, dof_handler, *u0, displacement);
-    constraints.distribute(displacement);
     VectorTools::interpolate(*mapping, dof_handler, *u1, velocity);
+    if (!exact_solution)
+      {
+        warn_of_normal_component(displacement, "Initial displacement");
+        warn_of_normal_component(velocity, "Initial velocity");
+      }
+    constraints.distribute(displacement);
     constraints.distribute(velocity);
     // Before anything is written: a NaN here would be blamed on step 1.
     const auto check_finite = [](const VectorType  &values,
@@ -320,6 +325,35 @@ namespace Contact
     energy.kinetic = 0.5 * (mass_times_velocity * velocity);
     energy.elastic = 0.5 * (elasticity_times_displacement * displacement);
     energy.initial = energy.kinetic + energy.elastic;
+  }
+
+
+  // @sect4{ContactProblem::warn_of_normal_component}
+
+  // The bilateral contact holds u.n = w.n = 0 on Gamma_3, and the
+  // constraints of V_h set the normal component of the initial values
+  // there to zero; where the .prm gives one that is not, the user is told
+  // that it was removed.
+  template <int dim>
+  void
+  ContactProblem<dim>::warn_of_normal_component(const VectorType  &values,
+                                                const std::string &entry) const
+  {
+    double normal = 0, largest = values.linfty_norm();
+    for (const ContactNode<dim> &node : friction_solver->boundary().nodes)
+      if (node.locally_owned)
+        {
+          double component = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            component += node.normal[d] * values[node.dofs[d]];
+          normal = std::max(normal, std::abs(component));
+        }
+    normal = Utilities::MPI::max(normal, mpi_communicator);
+    if (normal > 1e-12 * largest)
+      pcout << "Warning: 'Loads and initial values/" << entry
+            << "' has a normal component on Gamma_3 (up to " << normal
+            << "), which the bilateral contact (u.n = w.n = 0 there) "
+            << "does not allow; it is set to zero." << std::endl;
   }
 
 
@@ -415,6 +449,8 @@ namespace Contact
                                                    const bool,              \
                                                    const bool) const;       \
   template void ContactProblem<dim>::set_initial_values();                  \
+  template void ContactProblem<dim>::warn_of_normal_component(              \
+    const VectorType &, const std::string &) const;                         \
   template void ContactProblem<dim>::condensed_product(const MatrixType &,  \
                                                        const VectorType &,  \
                                                        VectorType &) const; \

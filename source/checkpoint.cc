@@ -369,7 +369,8 @@ namespace Contact
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
     const std::string &directory = parameters.output.directory;
-    if (parameters.output.write_time_series)
+    if (parameters.output.write_time_series &&
+        std::filesystem::exists(directory + "/time_series.csv"))
       {
         const std::string name = directory + "/time_series.csv";
         std::ifstream     in(name);

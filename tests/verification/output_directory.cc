@@ -4,7 +4,8 @@
    - a checkpoint with bytes flipped, or cut short, is refused by name;
    - a checkpoint of another problem (other Young's modulus, other friction
      bound S) with the same mesh and time step is refused, naming the
-     entries that differ; a longer End time is accepted;
+     entries that differ; a longer End time is accepted, also where
+     time_series.csv was deleted (a new one starts with its header);
    - a checkpoint of one process resumed on two says so;
    - a fresh run in a directory holding another run's results (VTU files of
      more steps, a checkpoint) removes them: its PVD lists only its own
@@ -32,6 +33,9 @@ namespace fs = std::filesystem;
 
 const std::string scene = CONTACT_PRM_DIR "/barboteu2015.prm";
 
+// All that the last run printed.
+std::string whole_output;
+
 // Runs the program with these --set entries in `directory`; returns its
 // exit status and its last line of output (the error, if it failed).
 std::pair<int, std::string> run(const std::string              &directory,
@@ -49,6 +53,7 @@ std::pair<int, std::string> run(const std::string              &directory,
   for (const std::string &set : sets)
     command += " --set \"" + set + "\"";
   command += " " + scene + " 2>&1";
+  whole_output.clear();
   FILE                  *pipe = popen(command.c_str(), "r");
   std::string            last, error;
   bool                   in_error = false;
@@ -56,6 +61,7 @@ std::pair<int, std::string> run(const std::string              &directory,
   while (fgets(buffer.data(), buffer.size(), pipe) != nullptr)
     {
       const std::string line = buffer.data();
+      whole_output += line;
       const bool blank = line.find_first_not_of(" \n") == std::string::npos;
       if (!blank)
         last = line;
@@ -133,11 +139,32 @@ int main()
               "Friction/Friction bound S=50"}));
   report("longer End time (16 steps of the same k)",
          run("other", {"Output/Resume=true", "Time/End time=1"}));
+  copy("original", "no_series");
+  fs::remove("no_series/time_series.csv");
+  report("resume after time_series.csv was deleted",
+         run("no_series", {"Output/Resume=true", "Time/End time=1"}));
+  std::ifstream series("no_series/time_series.csv");
+  std::string   header;
+  std::getline(series, header);
+  unsigned int rows = 0;
+  for (std::string row; std::getline(series, row);)
+    ++rows;
+  std::cout << "  time_series.csv: header "
+            << (header.rfind("step,time", 0) == 0 ? "yes" : "no") << ", rows "
+            << rows << " (steps 13 to 16)" << std::endl;
+  // (Both processes report; their lines may interleave, so only the
+  // point of the message is printed.)
   copy("original", "two");
-  report("one process's checkpoint on two",
-         run("two",
-             {"Output/Resume=true", "Time/End time=0.75"},
-             "mpirun --allow-run-as-root --oversubscribe -np 2 "));
+  const auto two = run("two",
+                       {"Output/Resume=true", "Time/End time=0.75"},
+                       "mpirun --allow-run-as-root --oversubscribe -np 2 ");
+  std::cout << "one process's checkpoint on two: exit "
+            << (two.first == 0 ? "0" : "non-zero") << ", says it was written "
+            << "by 1 process: "
+            << (whole_output.find("written by 1 process") != std::string::npos ?
+                  "yes" :
+                  "no")
+            << std::endl;
 
   // A fresh run where another one left its results.
   copy("original", "reused");
