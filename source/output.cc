@@ -507,8 +507,16 @@ namespace Contact
           Tensor<1, dim> friction;
           for (unsigned int p = 0; p < contact_nodes.size(); ++p)
             friction += contact_nodes[p].tangential_vector(friction_force, p);
+          // A scalar along the tangent where Gamma_3 is straight (all its
+          // nodes share one tangent), the vector otherwise. (The slip zone
+          // is given by its x range, which locates it on any Gamma_3.)
+          bool straight = (dim == 2 && !contact_nodes.empty());
+          for (const ContactNode<dim> &node : contact_nodes)
+            straight =
+              straight &&
+              (node.tangents[0] - contact_nodes[0].tangents[0]).norm() < 1e-12;
           pcout << "; friction force ";
-          if (dim == 2 && !contact_nodes.empty())
+          if (straight)
             pcout << friction * contact_nodes[0].tangents[0];
           else
             pcout << friction;
