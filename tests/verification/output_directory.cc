@@ -114,6 +114,8 @@ int main()
                                                "Time/End time=0.75"};
   fs::remove_all("original");
   report("run with a checkpoint at step 12", run("original", checkpoint));
+  std::cout << "  .partial/ left: "
+            << (fs::exists("original/.partial") ? "yes" : "no") << std::endl;
 
   // Damaged checkpoints.
   copy("original", "flipped");
