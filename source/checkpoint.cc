@@ -84,8 +84,12 @@ namespace Contact
                 entry += section + "/";
               const std::size_t equal = line.find('=');
               entry += Utilities::trim(line.substr(4, equal - 4));
+              std::string value = Utilities::trim(line.substr(equal + 1));
+              // The same mesh file however the .prm's path was typed.
+              if (entry == "Geometry/Mesh file" && !value.empty())
+                value = std::filesystem::weakly_canonical(value).string();
               if (!may_change_on_resume(entry))
-                entries[entry] = Utilities::trim(line.substr(equal + 1));
+                entries[entry] = value;
             }
         }
       return entries;
@@ -266,6 +270,12 @@ namespace Contact
                   ExcMessage("Cannot write the checkpoint '" + name +
                              ".tmp': " + std::strerror(errno) + "."));
     }
+    // Every process's new checkpoint is complete before any replaces its
+    // old one, so a job killed in between leaves one set of checkpoints of
+    // one step (of the old or the new one per process; load_checkpoint
+    // refuses a set of different steps).
+    const int ierr = MPI_Barrier(mpi_communicator);
+    AssertThrowMPI(ierr);
     std::filesystem::rename(name + ".tmp", name);
     checkpoint_timer.restart();
   }
@@ -303,6 +313,14 @@ namespace Contact
                            differences));
 
     serialize_checkpoint_state(archive);
+    AssertThrow(Utilities::MPI::min(step_number, mpi_communicator) ==
+                  Utilities::MPI::max(step_number, mpi_communicator),
+                ExcMessage("The checkpoints of the processes in '" +
+                           parameters.output.directory +
+                           "' are of different steps (the job was killed "
+                           "while they were written): resume from a "
+                           "complete set, or start the run again without "
+                           "--resume."));
     AssertThrow(step_number <= n_time_steps,
                 ExcMessage("The checkpoint is at step " +
                            std::to_string(step_number) +

@@ -372,8 +372,9 @@ namespace Contact
             std::to_string(solver.active_set_parameter) + ")."));
 
         const double energy_now = energy_on_gamma3();
-        if (anderson.last_step_was_accelerated() &&
-            energy_now > accepted_energy + 1e-13 * std::abs(accepted_energy))
+        if (!all_processes(!(anderson.last_step_was_accelerated() &&
+                             energy_now > accepted_energy +
+                                            1e-13 * std::abs(accepted_energy))))
           {
             // Safeguard: back to the plain step from the accepted iterate.
             ++statistics.rejected_accelerations;

@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <regex>
 #include <sstream>
 
 namespace Contact
@@ -43,6 +44,13 @@ namespace Contact
         return "Cannot create '" + name + "': " + std::strerror(errno);
       if (flock(fd, LOCK_EX | LOCK_NB) != 0)
         {
+          if (errno != EWOULDBLOCK)
+            {
+              // A file system without flock (some parallel or network
+              // ones): the run goes on unlocked.
+              close(fd);
+              return "";
+            }
           std::ifstream holder(name);
           std::string   pid;
           std::getline(holder, pid);
@@ -66,14 +74,16 @@ namespace Contact
       return "";
     }
 
-    // Whether a file of the output directory is one this program writes.
+    // Whether a file of the output directory has exactly the name of one
+    // this program writes (solution_00012.3.vtu, checkpoint.1.tmp, ...):
+    // a user's 'solution_notes.txt' or 'checkpoint.bak' is not one.
     bool is_result_file(const std::string &name)
     {
-      const auto starts = [&](const std::string &prefix) {
-        return name.rfind(prefix, 0) == 0;
-      };
-      return starts("checkpoint") || starts("solution") ||
-             starts("time_series.csv") || name == "parameters.prm";
+      static const std::regex written(
+        "solution_[0-9]{5}\\.([0-9]+\\.vtu|pvtu)|solution\\.pvd(\\.tmp)?|"
+        "time_series\\.csv(\\.tmp)?|checkpoint(\\.[0-9]+)?(\\.tmp)?|"
+        "parameters\\.prm");
+      return std::regex_match(name, written);
     }
   } // namespace
 
@@ -113,7 +123,8 @@ namespace Contact
       {
         for (const auto &entry :
              std::filesystem::directory_iterator(directory, error))
-          if (is_result_file(entry.path().filename().string()))
+          if (entry.is_regular_file() &&
+              is_result_file(entry.path().filename().string()))
             std::filesystem::remove(entry.path(), error);
         std::filesystem::remove_all(directory + "/.partial", error);
       }

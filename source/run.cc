@@ -281,7 +281,8 @@ namespace Contact
     // Sets the entries that differ from one level to the next, and parses.
     Parameters parameters_of_level(ParameterHandler  &prm,
                                    const Parameters  &base,
-                                   const unsigned int level)
+                                   const unsigned int level,
+                                   const bool         announce = true)
     {
       using Refine               = ConvergenceStudyParameters::Refine;
       const auto        &study   = base.convergence_study;
@@ -310,6 +311,8 @@ namespace Contact
       apply_override(prm, "Convergence study/Levels", "0");
       Parameters parameters;
       parameters.parse_parameters(prm);
+      if (!announce)
+        return parameters;
       console() << "Convergence study, level " << level << ": "
                 << (mesh_file ? "mesh refinements = " + refinements :
                                 "h = " + h.str())
@@ -337,6 +340,11 @@ namespace Contact
       const unsigned int       L     = study.levels;
       const bool               exact = base.verification.manufactured_solution;
       std::vector<LevelResult> results(L + 1);
+      // Every level's entries are checked before the first level runs, so
+      // that a study does not fail at its finest level (e.g. over
+      // 'Time/Max steps' or the number of VTU files).
+      for (unsigned int level = 0; level <= L; ++level)
+        parameters_of_level(prm, base, level, /*announce=*/false);
 
       // Collects the displacement at the common times (every 2^l-th step of
       // level l when k is refined), interpolated onto the reference mesh.

@@ -170,6 +170,8 @@ int main()
 
   // A fresh run where another one left its results.
   copy("original", "reused");
+  for (const std::string name : {"solution_notes.txt", "checkpoint.bak"})
+    std::ofstream("reused/" + name) << "a user's file\n";
   report("fresh run of 4 steps in a directory of a 12-step run",
          run("reused", {"Time/End time=0.25", "Output/VTU interval=2"}));
   unsigned int vtu = 0;
@@ -182,6 +184,11 @@ int main()
             << (fs::exists("reused/checkpoint") ? "yes" : "no")
             << ", PVD lists step 12: "
             << (records.find("00012") != std::string::npos ? "yes" : "no")
+            << ", the user's solution_notes.txt and checkpoint.bak kept: "
+            << (fs::exists("reused/solution_notes.txt") &&
+                    fs::exists("reused/checkpoint.bak") ?
+                  "yes" :
+                  "no")
             << std::endl;
   report("--resume there",
          run("reused", {"Output/Resume=true", "Time/End time=0.75"}));
