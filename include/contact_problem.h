@@ -166,7 +166,9 @@ namespace Contact
     void         make_grid();
     void         build_mesh(Triangulation<dim> &mesh);
     unsigned int make_box(Triangulation<dim> &mesh);
-    void         check_memory_of_box() const;
+    void         check_memory(const double       cells,
+                              const double       unknowns,
+                              const std::string &entry) const;
     unsigned int read_mesh_file(Triangulation<dim> &mesh);
     void         grade_towards_points(Triangulation<dim> &mesh);
     void         check_boundary_ids(const Triangulation<dim> &mesh) const;

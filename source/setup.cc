@@ -103,8 +103,20 @@ namespace Contact
   template <int dim>
   unsigned int ContactProblem<dim>::make_box(Triangulation<dim> &mesh)
   {
-    check_memory_of_box();
-    const auto               &geometry = parameters.geometry;
+    const auto &geometry = parameters.geometry;
+    {
+      double cells = 1, unknowns = dim;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const double parts = std::max(1.,
+                                        std::round((geometry.upper_corner[d] -
+                                                    geometry.lower_corner[d]) /
+                                                   geometry.cell_size));
+          cells *= parts;
+          unknowns *= parts * geometry.fe_degree + 1;
+        }
+      check_memory(cells, unknowns, "Geometry/Cell size");
+    }
     Point<dim>                lower, upper;
     std::vector<unsigned int> subdivisions(dim);
     for (unsigned int d = 0; d < dim; ++d)
@@ -146,29 +158,21 @@ namespace Contact
   }
 
 
-  // @sect4{ContactProblem::check_memory_of_box}
+  // @sect4{ContactProblem::check_memory}
 
-  // A cell size far too small for the machine would end in std::bad_alloc
-  // (or the swap) somewhere in the setup; the box's unknowns are known
-  // beforehand, and a run needs about 3 kB per unknown in 2D and 6 kB in
-  // 3D on its leanest path (measured: 439 MB at 66 000 unknowns in 2D,
-  // bench/results.md; 3.7 GB per process at 1.1 million unknowns on two
-  // processes in 3D, bench/scaling.md). Refused if that exceeds the
-  // machine's memory per process.
+  // A mesh far too fine for the machine would end in std::bad_alloc (or
+  // the swap) somewhere in the setup, so its unknowns are counted (or, for
+  // a refined mesh file, estimated from below) before it is built. A run
+  // needs about 3 kB per unknown in 2D and 6 kB in 3D on its leanest path
+  // (measured: 439 MB at 66 000 unknowns in 2D, bench/results.md; 3.7 GB
+  // per process at 1.1 million unknowns on two processes in 3D,
+  // bench/scaling.md); a mesh that needs more than the machine's memory
+  // per process is refused, naming the entry that made it.
   template <int dim>
-  void ContactProblem<dim>::check_memory_of_box() const
+  void ContactProblem<dim>::check_memory(const double       cells,
+                                         const double       unknowns,
+                                         const std::string &entry) const
   {
-    const auto &geometry = parameters.geometry;
-    double      cells = 1, unknowns = dim;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        const double parts = std::max(1.,
-                                      std::round((geometry.upper_corner[d] -
-                                                  geometry.lower_corner[d]) /
-                                                 geometry.cell_size));
-        cells *= parts;
-        unknowns *= parts * geometry.fe_degree + 1;
-      }
     std::ifstream meminfo("/proc/meminfo");
     std::string   name;
     double        total_kB = 0;
@@ -177,14 +181,12 @@ namespace Contact
     const double needed = (dim == 3 ? 6e3 : 3e3) * unknowns /
                           Utilities::MPI::n_mpi_processes(mpi_communicator);
     std::ostringstream text;
-    text << std::setprecision(3)
-         << "Entry 'Geometry/Cell size' = " << geometry.cell_size
-         << ": the box would have " << cells << " cells and " << unknowns
+    text << std::setprecision(3) << "Entry '" << entry
+         << "': the mesh would have " << cells << " cells and " << unknowns
          << " unknowns, which need about " << needed / 1e9
          << " GB per process (" << (dim == 3 ? 6 : 3)
          << " kB per unknown, measured), more than this machine's memory. "
-         << "Allowed is a larger cell size, or more processes on more "
-         << "machines.";
+         << "Allowed is a coarser mesh, or more processes on more machines.";
     AssertThrow(total_kB == 0 || needed <= 1e3 * total_kB,
                 ExcMessage(text.str()));
   }
@@ -224,6 +226,15 @@ namespace Contact
     };
     Triangulation<dim> serial;
     read(serial);
+    // From below: a refined cell has 2^dim children, and at least
+    // p^dim / 6 (tetrahedra) of its own nodes.
+    const auto  &geometry = parameters.geometry;
+    const double cells =
+      serial.n_active_cells() * std::pow(2., dim * geometry.mesh_refinements);
+    check_memory(cells,
+                 dim * cells * std::pow(geometry.fe_degree, dim) /
+                   (geometry.simplex_cells ? 6. : 1.),
+                 "Geometry/Mesh refinements");
     const bool simplices = serial.all_reference_cells_are_simplex();
     AssertThrow(simplices == parameters.geometry.simplex_cells &&
                   (simplices || serial.all_reference_cells_are_hyper_cube()),
@@ -752,24 +763,26 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                                       \
-  template void         ContactProblem<dim>::make_grid();                      \
-  template void         ContactProblem<dim>::build_mesh(Triangulation<dim> &); \
-  template unsigned int ContactProblem<dim>::make_box(Triangulation<dim> &);   \
-  template void         ContactProblem<dim>::check_memory_of_box() const;      \
-  template unsigned int ContactProblem<dim>::read_mesh_file(                   \
-    Triangulation<dim> &);                                                     \
-  template void ContactProblem<dim>::grade_towards_points(                     \
-    Triangulation<dim> &);                                                     \
-  template void ContactProblem<dim>::check_boundary_ids(                       \
-    const Triangulation<dim> &) const;                                         \
-  template void ContactProblem<dim>::setup_system();                           \
-  template void ContactProblem<dim>::make_constraints();                       \
-  template std::vector<ContactNode<dim>> ContactProblem<dim>::contact_nodes()  \
-    const;                                                                     \
-  template std::map<types::global_dof_index, ContactNode<dim>>                 \
-                      ContactProblem<dim>::integrate_contact_faces() const;    \
-  template void       ContactProblem<dim>::setup_probes();                     \
+#define INSTANTIATE(dim)                                                              \
+  template void         ContactProblem<dim>::make_grid();                             \
+  template void         ContactProblem<dim>::build_mesh(Triangulation<dim> &);        \
+  template unsigned int ContactProblem<dim>::make_box(Triangulation<dim> &);          \
+  template void         ContactProblem<dim>::check_memory(const double,               \
+                                                  const double,               \
+                                                  const std::string &) const; \
+  template unsigned int ContactProblem<dim>::read_mesh_file(                          \
+    Triangulation<dim> &);                                                            \
+  template void ContactProblem<dim>::grade_towards_points(                            \
+    Triangulation<dim> &);                                                            \
+  template void ContactProblem<dim>::check_boundary_ids(                              \
+    const Triangulation<dim> &) const;                                                \
+  template void ContactProblem<dim>::setup_system();                                  \
+  template void ContactProblem<dim>::make_constraints();                              \
+  template std::vector<ContactNode<dim>> ContactProblem<dim>::contact_nodes()         \
+    const;                                                                            \
+  template std::map<types::global_dof_index, ContactNode<dim>>                        \
+                      ContactProblem<dim>::integrate_contact_faces() const;           \
+  template void       ContactProblem<dim>::setup_probes();                            \
   template VectorType ContactProblem<dim>::ghosted(const VectorType &) const;
 
   INSTANTIATE(2)

@@ -1,7 +1,8 @@
 /* The command line of `contact` where no scene runs: --help prints the
    usage; --print-parameters with a scene prints the scene's values, not
    the defaults; a directory or a file that cannot be read as the scene is
-   an error naming it, not a run of the default scene. */
+   an error naming it, not a run of the default scene; an output directory
+   with a line break is refused. */
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -62,6 +63,9 @@ int main(int argc, char *argv[])
                              << "end\n";
   run({"--print-parameters", "scene.prm"}, "set End time");
   run({"--print-parameters"}, "set End time");
+
+  // A line break in the output directory (possible with --set only).
+  run({"--set", "Output/Output directory=first\nsecond", "scene.prm"});
 
   run({"."});
   run({"/proc/self/mem"});
