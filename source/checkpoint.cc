@@ -86,8 +86,14 @@ namespace Contact
               entry += Utilities::trim(line.substr(4, equal - 4));
               std::string value = Utilities::trim(line.substr(equal + 1));
               // The same mesh file however the .prm's path was typed.
+              std::error_code unresolved;
               if (entry == "Geometry/Mesh file" && !value.empty())
-                value = std::filesystem::weakly_canonical(value).string();
+                {
+                  const auto path =
+                    std::filesystem::weakly_canonical(value, unresolved);
+                  if (!unresolved)
+                    value = path.string();
+                }
               if (!may_change_on_resume(entry))
                 entries[entry] = value;
             }
