@@ -12,6 +12,7 @@
  *   time_stepping.cc    factorisation of K, the step and its cuts
  *   output.cc           VTU/PVD, time_series.csv, console
  *   checkpoint.cc       checkpoint and restart
+ *   self_checks.cc      the checks every run makes of its own results
  *   verification.cc     errors against a manufactured solution
  * Each file instantiates its own members for dim = 2 and 3. The friction
  * problem on Gamma_3 (its nodes, the path to the body, the Newton method
@@ -38,6 +39,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
@@ -95,6 +97,73 @@ namespace Contact
                        viscous_dissipation + std::abs(friction_dissipation) +
                          numerical_dissipation});
     }
+
+    template <class Archive>
+    void serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &kinetic &elastic &initial &external_work &viscous_dissipation
+        &friction_dissipation &numerical_dissipation;
+    }
+  };
+
+
+  /**
+   * The self-checks of a run (self_checks.cc, doc/verification.md), each a
+   * relative violation that round-off keeps far below
+   * ContactProblem::self_check_tolerance:
+   *   - algebraic_energy: the energy identity from the products of the
+   *     step's matrices with w_n. It holds whenever each step solves its
+   *     linear system with the eta it reports, whatever the matrices, the
+   *     loads or the friction law: it checks the solve and the bookkeeping.
+   *   - quadrature_energy: the same identity with every term integrated
+   *     from the fields (1/2 int rho |w_h|^2, 1/2 int B eps(u_h):eps(u_h),
+   *     ...) and the loads' expressions, not from the matrices and the
+   *     load vector: it catches wrong matrices, loads or constraints.
+   *   - friction_law: the friction law (5.3) at the converged slip rates,
+   *     FrictionSolver::law_residual: it catches a wrong coefficient, sign
+   *     or stick condition.
+   *   - negative_friction_power: a step whose friction dissipation
+   *     decreases, relative to the energies (friction only dissipates).
+   */
+  struct SelfCheckValues
+  {
+    double algebraic_energy        = 0;
+    double quadrature_energy       = 0;
+    double friction_law            = 0;
+    double negative_friction_power = 0;
+
+    void take_largest(const SelfCheckValues &other)
+    {
+      algebraic_energy  = std::max(algebraic_energy, other.algebraic_energy);
+      quadrature_energy = std::max(quadrature_energy, other.quadrature_energy);
+      friction_law      = std::max(friction_law, other.friction_law);
+      negative_friction_power =
+        std::max(negative_friction_power, other.negative_friction_power);
+    }
+
+    template <class Archive>
+    void serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &algebraic_energy &quadrature_energy &friction_law
+        &negative_friction_power;
+    }
+  };
+
+
+  /** deal.II's own distributed vector, for the cell loops that read a
+   *  field's entries (self_checks.cc). */
+  using FastVector = LinearAlgebra::distributed::Vector<double>;
+
+
+  /** The integrals of the fields that the energy identity by quadrature
+   *  adds up (self_checks.cc). */
+  struct FieldIntegrals
+  {
+    double kinetic       = 0; // 1/2 int rho |w_n|^2
+    double velocity_jump = 0; // 1/2 int rho |w_n - w_{n-1}|^2
+    double elastic       = 0; // 1/2 int B eps(u_n) : eps(u_n)
+    double viscous_power = 0; // int A eps(w_n) : eps(w_n)
+    double elastic_power = 0; // int B eps(w_n) : eps(w_n)
   };
 
 
@@ -146,6 +215,10 @@ namespace Contact
     void set_step_observer(
       const std::function<void(const ContactProblem<dim> &)> &observer);
 
+    /** Errors injected on purpose: for the tests of the self-checks only,
+     *  before run(). */
+    void set_sabotage(const Sabotage<dim> &sabotage);
+
     unsigned int           get_step_number() const;
     const DoFHandler<dim> &get_dof_handler() const;
     const VectorType      &get_displacement() const;
@@ -180,18 +253,30 @@ namespace Contact
     void setup_probes();
 
     // assembly.cc
-    void             assemble_matrices();
-    void             form_system_matrix();
-    void             assemble_load(const double time,
-                                   VectorType  &load_vector,
-                                   const bool   with_body_force,
-                                   const bool   with_surface_loads) const;
-    void             set_initial_values();
-    void             warn_of_normal_component(const VectorType  &values,
-                                              const std::string &entry) const;
-    void             condensed_product(const MatrixType &matrix,
-                                       const VectorType &x,
-                                       VectorType       &product) const;
+    using CellVisitor =
+      std::function<void(const typename DoFHandler<dim>::active_cell_iterator &,
+                         const Vector<double> &)>;
+    using NodeVisitor =
+      std::function<void(const ContactNode<dim> &, const Tensor<1, dim> &)>;
+    void   assemble_matrices();
+    void   form_system_matrix();
+    void   visit_loads(const double       time,
+                       const bool         with_body_force,
+                       const bool         with_surface_loads,
+                       const CellVisitor &visit_cell,
+                       const NodeVisitor &visit_node) const;
+    void   assemble_load(const double time,
+                         VectorType  &load_vector,
+                         const bool   with_body_force,
+                         const bool   with_surface_loads) const;
+    void   assemble_constant_body_load();
+    double load_power(const double time, const FastVector &w_ghosted) const;
+    void   set_initial_values();
+    void   warn_of_normal_component(const VectorType  &values,
+                                    const std::string &entry) const;
+    void   condensed_product(const MatrixType &matrix,
+                             const VectorType &x,
+                             VectorType       &product) const;
     Tensor<1, dim>   momentum() const;
     VelocityProducts velocity_products() const;
     void             update_energy_balance(const VelocityProducts &products);
@@ -207,6 +292,16 @@ namespace Contact
     // cells and faces of the mesh's shape.
     Quadrature<dim>     gauss_rule(const unsigned int n_points) const;
     Quadrature<dim - 1> face_gauss_rule(const unsigned int n_points) const;
+
+    // self_checks.cc
+    FastVector     fast_ghosted(const VectorType &v) const;
+    FieldIntegrals field_integrals(const FastVector &u,
+                                   const FastVector &w,
+                                   const FastVector &old_w) const;
+    void           start_self_checks();
+    void           check_step();
+    void           print_self_checks() const;
+    void           require_self_checks() const;
 
     // verification.cc
     void       check_manufactured_setup() const;
@@ -257,9 +352,12 @@ namespace Contact
     // With 'Verification/Manufactured solution', the exact solution that
     // replaces the load data above.
     std::unique_ptr<const ManufacturedSolution<dim>> exact_solution;
-    // A body force that does not depend on t is assembled once.
-    const bool body_force_is_constant;
-    VectorType constant_body_load;
+    // A body force that does not depend on t is assembled once; its cell
+    // vectors (of the locally owned cells, in the order of the cell loop)
+    // give its power in load_power().
+    const bool                  body_force_is_constant;
+    VectorType                  constant_body_load;
+    std::vector<Vector<double>> constant_body_cell_loads;
 
     // Mesh and finite element space: p4est's distributed triangulation and
     // Q_p for hypercubes, a plain triangulation with P_p (FE_SimplexP and
@@ -312,6 +410,15 @@ namespace Contact
     std::unique_ptr<FrictionSolver<dim>> friction_solver;
 
     EnergyBalance energy;
+    // The self-checks: the energy identity's terms by quadrature, and the
+    // checks' values of the last step and their largest over the steps.
+    EnergyBalance   energy_by_quadrature;
+    SelfCheckValues step_checks;
+    SelfCheckValues largest_checks;
+    // Above it a self-check has failed, and the run ends with an error
+    // (the summary prints which).
+    static constexpr double self_check_tolerance = 1e-8;
+    Sabotage<dim>           sabotage;
 
     // Output state. A probe is the cell around an 'Output/Probe points'
     // entry and the point in its reference cell; of the processes that own
@@ -324,10 +431,6 @@ namespace Contact
     std::vector<std::pair<double, std::string>> pvd_records;
     std::vector<double>                         pending_report_times;
     StepStatistics                              totals;
-    double                                      max_relative_energy_residual;
-    // Above it the energy identity (doc/algorithm.md) has failed, and the
-    // run ends with an error (the summary prints it as text).
-    static constexpr double energy_identity_tolerance = 1e-8;
     // Wall time of the steps' first solves with K (or substitutions with
     // its factor), summed over the steps computed by this process's run
     // (not those before a resumed checkpoint), and their number.

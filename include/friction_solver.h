@@ -24,6 +24,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/point.h>
 #include <deal.II/base/timer.h>
 
 #include <deal.II/lac/affine_constraints.h>
@@ -36,6 +37,7 @@
 #include <parameters.h>
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -174,6 +176,24 @@ namespace Contact
    *  throws it together: the decisions are reduced over the processes). */
   DeclException1(ExcStepNotConverged, std::string, << arg1);
 
+  /**
+   * Errors injected on purpose, to see that the self-checks of a run
+   * (ContactProblem::check_step) catch them: only the tests set these. The
+   * friction solver then solves with the bound S mu(s) times
+   * `bound_factor(x_p)` at node p (a wrong coefficient; 0 removes the
+   * friction there) while the checks use the true law, and with
+   * `reversed_friction_force` it applies and reports -eta instead of eta.
+   * The time stepping multiplies its load vector by `load_factor`.
+   */
+  template <int dim>
+  struct Sabotage
+  {
+    std::function<double(const Point<dim> &)> bound_factor;
+    bool                                      reversed_friction_force = false;
+    double                                    load_factor             = 1.;
+  };
+
+
   /** Which step is solved, for the messages of a failure. */
   struct StepLabel
   {
@@ -252,6 +272,21 @@ namespace Contact
                               VectorType       &velocity,
                               const StepLabel  &label);
 
+    /**
+     * The largest violation of the discrete friction law (5.3)-(5.4) by the
+     * current forces eta and the slip velocities v = C w of a velocity w,
+     * relative to max_p g_p(0): at every node the distance
+     * |eta_p - P_{B(g_p)}(eta_p + c_p v_p)| with g_p = m_p S mu(|v_p|) of
+     * the true law. It is c_p |v_p| where the node sticks
+     * (|eta_p + c_p v_p| <= g_p), the slip that the law forbids there, and
+     * the distance of eta_p from g_p times the slip direction where it
+     * slips; zero exactly where the law holds.
+     */
+    double law_residual(const VectorType &velocity) const;
+
+    /** For the tests of the self-checks only. */
+    void set_sabotage(const Sabotage<dim> &sabotage);
+
     const ContactBoundary<dim> &boundary() const;
     const FrictionState        &state() const;
     void                        set_state(const FrictionState &state);
@@ -293,6 +328,10 @@ namespace Contact
     // this (largest_weighted_delassus_eigenvalue).
     double        convexity_limit = std::numeric_limits<double>::infinity();
     FrictionState current;
+    // m_p times the sabotaged factor of the bound (the tests' only): the
+    // weights with which the solver applies the law.
+    Vector<double> solver_weights;
+    bool           reversed_friction_force = false;
   };
 
 

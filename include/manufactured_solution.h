@@ -13,8 +13,9 @@
  *
  *   f_0 = rho u_tt - div sigma,  f_2 = sigma n on the other sides,
  *   f_3 = sigma_tau + S mu(|w_tau|) sign(w_tau) on Gamma_3 where it slips,
- *   f_3 = sigma_tau where it sticks (friction force 0, strictly inside
- *         the bound),
+ *   f_3 = sigma_tau + xi(x) S mu(0) e_x where it sticks, xi = 1/2 + x:
+ *         a friction force strictly inside the bound (0 < xi < 1 on
+ *         x < 1/2), so that the stick condition binds,
  *
  * with sigma = A eps(w) + B eps(u) of (3.1); f_3 is a tangential load on
  * Gamma_3, applied with the nodal weights of the friction term. The front
@@ -52,6 +53,10 @@ namespace Contact
     Tensor<1, dim> contact_load(const Point<dim>     &p,
                                 const Tensor<1, dim> &normal,
                                 const double          t) const;
+
+    /** xi(p) in (0, 1): the friction force in the stick zone x < 1/2 as a
+     *  fraction of the bound S mu(0). */
+    static double stick_fraction(const Point<dim> &p);
 
     /** u or w as a deal.II Function, for interpolating u_0 and u_1. */
     class Field : public Function<dim>

@@ -135,41 +135,42 @@ namespace Contact
   }
 
 
-  // @sect4{ContactProblem::assemble_load}
+  // @sect4{ContactProblem::visit_loads}
 
   // F_n = f(t_n) of (5.2): the body force f_0 in Omega and the tractions
-  // f_2 on Gamma_2, condensed with the constraints like the matrices. With
-  // a manufactured solution they come from it (f_2 = sigma n on every side
-  // that is neither clamped nor in contact), and its tangential load f_3 on
-  // Gamma_3 is added with the nodal weights m_p of the friction term.
+  // f_2 on Gamma_2. With a manufactured solution they come from it (f_2 =
+  // sigma n on every side that is neither clamped nor in contact), and its
+  // tangential load f_3 on Gamma_3 acts with the nodal weights m_p of the
+  // friction term. Every cell that carries a load is handed to `visit_cell`
+  // with its (unassembled) cell vector, every node of Gamma_3 with a force
+  // to `visit_node`: assemble_load() assembles them, load_power() tests
+  // them with a velocity.
   template <int dim>
-  void ContactProblem<dim>::assemble_load(const double time,
-                                          VectorType  &load_vector,
-                                          const bool   with_body_force,
-                                          const bool   with_surface_loads) const
+  void ContactProblem<dim>::visit_loads(const double       time,
+                                        const bool         with_body_force,
+                                        const bool         with_surface_loads,
+                                        const CellVisitor &visit_cell,
+                                        const NodeVisitor &visit_node) const
   {
-    TimerOutput::Scope t(computing_timer, "Assembly");
-
     body_force->set_time(time);
     for (const auto &traction : tractions)
       traction.second->set_time(time);
 
-    FEValues<dim>                        fe_values(*mapping,
+    FEValues<dim>                    fe_values(*mapping,
                             fe,
                             quadrature,
                             update_values | update_quadrature_points |
                               update_JxW_values);
-    FEFaceValues<dim>                    fe_face_values(*mapping,
+    FEFaceValues<dim>                fe_face_values(*mapping,
                                      fe,
                                      face_quadrature,
                                      update_values | update_quadrature_points |
                                        update_normal_vectors |
                                        update_JxW_values);
-    const FEValuesExtractors::Vector     displacements(0);
-    const unsigned int                   n_dofs = fe.n_dofs_per_cell();
-    Vector<double>                       cell_rhs(n_dofs);
-    Vector<double>                       value(dim);
-    std::vector<types::global_dof_index> dof_indices(n_dofs);
+    const FEValuesExtractors::Vector displacements(0);
+    const unsigned int               n_dofs = fe.n_dofs_per_cell();
+    Vector<double>                   cell_rhs(n_dofs);
+    Vector<double>                   value(dim);
 
     const auto add_force = [&](const FEValuesBase<dim> &values,
                                const auto              &force_at) {
@@ -211,7 +212,6 @@ namespace Contact
 
     // The surface loads alone (every step, when the body force is constant)
     // touch the boundary cells only.
-    load_vector = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && (with_body_force || cell->at_boundary()))
         {
@@ -243,22 +243,114 @@ namespace Contact
                     loaded = true;
                   }
               }
-          if (!loaded)
-            continue;
-          cell->get_dof_indices(dof_indices);
-          constraints.distribute_local_to_global(cell_rhs,
-                                                 dof_indices,
-                                                 load_vector);
+          if (loaded)
+            visit_cell(cell, cell_rhs);
         }
 
     if (exact_solution && with_surface_loads)
       for (const ContactNode<dim> &node : friction_solver->boundary().nodes)
-        friction_solver->boundary().add_nodal_force(
-          node,
-          node.weight *
-            exact_solution->contact_load(node.location, node.normal, time),
-          load_vector);
+        visit_node(node,
+                   node.weight * exact_solution->contact_load(node.location,
+                                                              node.normal,
+                                                              time));
+  }
+
+
+  // @sect4{ContactProblem::assemble_load}
+
+  // The load vector, condensed with the constraints like the matrices.
+  template <int dim>
+  void ContactProblem<dim>::assemble_load(const double time,
+                                          VectorType  &load_vector,
+                                          const bool   with_body_force,
+                                          const bool   with_surface_loads) const
+  {
+    TimerOutput::Scope                   t(computing_timer, "Assembly");
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    load_vector = 0;
+    visit_loads(
+      time,
+      with_body_force,
+      with_surface_loads,
+      [&](const auto &cell, const Vector<double> &cell_rhs) {
+        cell->get_dof_indices(dof_indices);
+        constraints.distribute_local_to_global(cell_rhs,
+                                               dof_indices,
+                                               load_vector);
+      },
+      [&](const ContactNode<dim> &node, const Tensor<1, dim> &force) {
+        friction_solver->boundary().add_nodal_force(node, force, load_vector);
+      });
     load_vector.compress(VectorOperation::add);
+  }
+
+
+  // @sect4{ContactProblem::assemble_constant_body_load}
+
+  // A body force that does not depend on t is assembled once; its cell
+  // vectors are kept for load_power().
+  template <int dim>
+  void ContactProblem<dim>::assemble_constant_body_load()
+  {
+    TimerOutput::Scope                   t(computing_timer, "Assembly");
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    constant_body_load.reinit(locally_owned_dofs, mpi_communicator);
+    constant_body_cell_loads.clear();
+    visit_loads(
+      0.,
+      true,
+      false,
+      [&](const auto &cell, const Vector<double> &cell_rhs) {
+        constant_body_cell_loads.push_back(cell_rhs);
+        cell->get_dof_indices(dof_indices);
+        constraints.distribute_local_to_global(cell_rhs,
+                                               dof_indices,
+                                               constant_body_load);
+      },
+      [](const ContactNode<dim> &, const Tensor<1, dim> &) {});
+    constant_body_load.compress(VectorOperation::add);
+  }
+
+
+  // @sect4{ContactProblem::load_power}
+
+  // F(t) . w for a velocity in V_h, from the loads' expressions at time t
+  // and the velocity's values on each cell, without the assembled load
+  // vector: int f_0 . w_h dx + int_Gamma2 f_2 . w_h ds (+ the nodal f_3 of
+  // a manufactured solution), with the quadrature of the assembly. A body
+  // force constant in time is integrated once (constant_body_power holds
+  // its cell vectors).
+  template <int dim>
+  double ContactProblem<dim>::load_power(const double      time,
+                                         const FastVector &w_ghosted) const
+  {
+    Vector<double> w_cell(fe.n_dofs_per_cell());
+    double         power      = 0;
+    const auto     visit_cell = [&](const auto           &cell,
+                                const Vector<double> &cell_rhs) {
+      cell->get_dof_values(w_ghosted, w_cell);
+      power += cell_rhs * w_cell;
+    };
+    visit_loads(time,
+                !body_force_is_constant,
+                true,
+                visit_cell,
+                [&](const ContactNode<dim> &node, const Tensor<1, dim> &force) {
+                  if (node.locally_owned)
+                    for (unsigned int d = 0; d < dim; ++d)
+                      power += force[d] * w_ghosted[node.dofs[d]];
+                });
+    if (body_force_is_constant)
+      {
+        unsigned int index = 0;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              cell->get_dof_values(w_ghosted, w_cell);
+              power += constant_body_cell_loads[index++] * w_cell;
+            }
+      }
+    return Utilities::MPI::sum(power, mpi_communicator);
   }
 
 
@@ -441,22 +533,30 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                                    \
-  template void ContactProblem<dim>::assemble_matrices();                   \
-  template void ContactProblem<dim>::form_system_matrix();                  \
-  template void ContactProblem<dim>::assemble_load(const double,            \
-                                                   VectorType &,            \
-                                                   const bool,              \
-                                                   const bool) const;       \
-  template void ContactProblem<dim>::set_initial_values();                  \
-  template void ContactProblem<dim>::warn_of_normal_component(              \
-    const VectorType &, const std::string &) const;                         \
-  template void ContactProblem<dim>::condensed_product(const MatrixType &,  \
-                                                       const VectorType &,  \
-                                                       VectorType &) const; \
-  template void ContactProblem<dim>::update_energy_balance(                 \
-    const VelocityProducts &);                                              \
-  template VelocityProducts ContactProblem<dim>::velocity_products() const; \
+#define INSTANTIATE(dim)                                                       \
+  template void   ContactProblem<dim>::assemble_matrices();                    \
+  template void   ContactProblem<dim>::form_system_matrix();                   \
+  template void   ContactProblem<dim>::assemble_load(const double,             \
+                                                   VectorType &,             \
+                                                   const bool,               \
+                                                   const bool) const;        \
+  template void   ContactProblem<dim>::visit_loads(const double,               \
+                                                 const bool,                 \
+                                                 const bool,                 \
+                                                 const CellVisitor &,        \
+                                                 const NodeVisitor &) const; \
+  template void   ContactProblem<dim>::assemble_constant_body_load();          \
+  template double ContactProblem<dim>::load_power(const double,                \
+                                                  const FastVector &) const;   \
+  template void   ContactProblem<dim>::set_initial_values();                   \
+  template void   ContactProblem<dim>::warn_of_normal_component(               \
+    const VectorType &, const std::string &) const;                          \
+  template void ContactProblem<dim>::condensed_product(const MatrixType &,     \
+                                                       const VectorType &,     \
+                                                       VectorType &) const;    \
+  template void ContactProblem<dim>::update_energy_balance(                    \
+    const VelocityProducts &);                                                 \
+  template VelocityProducts ContactProblem<dim>::velocity_products() const;    \
   template Tensor<1, dim>   ContactProblem<dim>::momentum() const;
 
   INSTANTIATE(2)

@@ -39,7 +39,7 @@ namespace Contact
 {
   namespace
   {
-    const std::string checkpoint_format = "contact checkpoint 4";
+    const std::string checkpoint_format = "contact checkpoint 5";
 
     std::uint32_t crc32(const std::string &bytes)
     {
@@ -152,15 +152,12 @@ namespace Contact
     FrictionState friction_state = friction_solver->state();
     friction_state.serialize(archive, 0);
     friction_solver->set_state(friction_state);
-    archive &energy.kinetic &energy.elastic &energy.initial &energy
-      .external_work &energy.viscous_dissipation &energy
-      .friction_dissipation                      &energy.numerical_dissipation;
+    archive &energy &energy_by_quadrature &largest_checks;
     archive &totals.convexification_iterations &totals.active_set_iterations;
     archive &totals.rejected_accelerations &totals.cycles_cured;
     archive &totals.step_cuts &totals.newton_iterations;
     archive &totals.newton_fallbacks &totals.solves_with_K;
     archive                          &totals.cg_iterations;
-    archive                          &max_relative_energy_residual;
     for (ErrorNorms *errors : {&current_errors, &max_errors})
       archive & errors->displacement_V & errors->velocity_L2 &
         errors->displacement_L2;

@@ -45,6 +45,21 @@ namespace Contact
                               friction_law.is_frictionless() ?
                                 NodeState::slip :
                                 NodeState::stick);
+    solver_weights.reinit(gamma3.nodes.size());
+    for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
+      solver_weights[p] = gamma3.nodes[p].weight;
+  }
+
+
+  template <int dim>
+  void FrictionSolver<dim>::set_sabotage(const Sabotage<dim> &sabotage)
+  {
+    for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
+      solver_weights[p] = gamma3.nodes[p].weight *
+                          (sabotage.bound_factor ?
+                             sabotage.bound_factor(gamma3.nodes[p].location) :
+                             1.);
+    reversed_friction_force = sabotage.reversed_friction_force;
   }
 
 
@@ -214,6 +229,8 @@ namespace Contact
     path->begin_step(step_rhs, velocity);
     if (!friction_law.is_frictionless() && !gamma3.nodes.empty())
       solve_friction_problem(label, statistics);
+    if (reversed_friction_force)
+      current.friction_force *= -1.;
     path->velocity(current.friction_force, velocity);
     if (friction_law.is_frictionless())
       current.slip_velocity = gamma3.tangential_velocities(velocity);
@@ -252,16 +269,13 @@ namespace Contact
   bool FrictionSolver<dim>::solve_by_newton(StepStatistics &statistics)
   {
     Vector<double> eta(current.friction_force), v(current.slip_velocity);
-    Vector<double> weights(gamma3.nodes.size());
     std::vector<NodeState> state;
-    for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
-      weights[p] = gamma3.nodes[p].weight;
     const auto [velocity_of_force, newton_step] = path_operators();
     const FrictionNewtonResult result           = solve_friction_newton(
       velocity_of_force,
       newton_step,
       dim - 1,
-      NodalLaw{friction_law, weights, 0.9 * convexity_limit},
+      NodalLaw{friction_law, solver_weights, 0.9 * convexity_limit},
       [this]() -> const Vector<double>           &{ return path->free_slip_velocity(); },
       active_set_parameter,
       parameters.solver.max_newton_iterations,
@@ -346,7 +360,7 @@ namespace Contact
         for (unsigned int p = 0; p < n; ++p)
           bound[p] = friction_law.is_frictionless() ?
                        0. :
-                       gamma3.nodes[p].weight * friction_law.bound(rate[p]);
+                       solver_weights[p] * friction_law.bound(rate[p]);
 
         const TrescaResult tresca = solve_tresca_problem(bound, eta, v, state);
         statistics.active_set_iterations += tresca.iterations;
@@ -512,6 +526,39 @@ namespace Contact
             << "'Solver/Step cuts') and a smaller 'Friction/Friction bound S' "
             << "make the step's problem more convex.";
     return message.str();
+  }
+
+
+  // @sect4{FrictionSolver::law_residual}
+
+  // The check of the law is independent of the method that solved it: v
+  // comes from the body's velocity, not from the solver's iterate, and
+  // the bound is that of the law at the converged slip rate (the
+  // convexification solves with the rates of its previous iterate).
+  template <int dim>
+  double FrictionSolver<dim>::law_residual(const VectorType &velocity) const
+  {
+    if (friction_law.is_frictionless() || gamma3.nodes.empty())
+      return 0.;
+    const Vector<double> v             = gamma3.tangential_velocities(velocity);
+    double               largest_bound = std::numeric_limits<double>::min();
+    double               residual      = 0;
+    for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
+      {
+        const ContactNode<dim> &node = gamma3.nodes[p];
+        const Tensor<1, dim>    eta =
+          node.tangential_vector(current.friction_force, p);
+        const Tensor<1, dim> z =
+          eta + active_set_parameter[p] * node.tangential_vector(v, p);
+        const double g =
+          node.weight * friction_law.bound(node.tangential_vector(v, p).norm());
+        const Tensor<1, dim> projection =
+          (z.norm() > g ? (g / z.norm()) * z : z);
+        residual = std::max(residual, (eta - projection).norm());
+        largest_bound =
+          std::max(largest_bound, node.weight * friction_law.bound(0.));
+      }
+    return residual / largest_bound;
   }
 
 

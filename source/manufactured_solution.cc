@@ -102,8 +102,17 @@ namespace Contact
   }
 
   // f_3 = sigma_tau + eta with the exact friction density eta: the
-  // friction law (3.6) where the body slips, 0 (inside the bound) where it
-  // sticks.
+  // friction law (3.6) where the body slips, and where it sticks a force
+  // strictly inside the bound, eta = xi(x) S mu(0) e_x with
+  // xi(x) = 1/2 + x in (0, 1) on x < 1/2 (continuous with the slip side at
+  // the front), so that the stick condition binds: without it the body
+  // would slip there.
+  template <int dim>
+  double ManufacturedSolution<dim>::stick_fraction(const Point<dim> &p)
+  {
+    return 0.5 + p[0];
+  }
+
   template <int dim>
   Tensor<1, dim>
   ManufacturedSolution<dim>::contact_load(const Point<dim>     &p,
@@ -116,8 +125,10 @@ namespace Contact
     const Tensor<1, dim> sigma_tau = tangential(stress(p, t) * normal);
     const Tensor<1, dim> w_tau     = tangential(velocity(p, t));
     const double         rate      = w_tau.norm();
-    return sigma_tau + (rate == 0. ? Tensor<1, dim>() :
-                                     friction_law.bound(rate) / rate * w_tau);
+    if (rate > 0.)
+      return sigma_tau + friction_law.bound(rate) / rate * w_tau;
+    return sigma_tau + stick_fraction(p) * friction_law.bound(0.) *
+                         tangential(Point<dim>::unit_vector(0));
   }
 
   template <int dim>

@@ -157,7 +157,8 @@ namespace Contact
              "newton_iterations,newton_fallbacks,solves_with_K,cg_iterations,"
              "n_stick,n_slip,max_slip_rate,friction_force,"
              "kinetic_energy,elastic_energy,external_work,viscous_dissipation,"
-             "friction_dissipation,numerical_dissipation,energy_residual,momentum_x,"
+             "friction_dissipation,numerical_dissipation,algebraic_energy_residual,"
+             "quadrature_energy_residual,friction_law_residual,momentum_x,"
              "momentum_y"
           << (dim == 3 ? ",momentum_z" : "");
         for (unsigned int i = 0; i < probes.size(); ++i)
@@ -230,7 +231,9 @@ namespace Contact
                 << ',' << energy.kinetic << ',' << energy.elastic << ','
                 << energy.external_work << ',' << energy.viscous_dissipation
                 << ',' << energy.friction_dissipation << ','
-                << energy.numerical_dissipation << ',' << energy.residual();
+                << energy.numerical_dissipation << ',' << energy.residual()
+                << ',' << energy_by_quadrature.residual() << ','
+                << step_checks.friction_law;
     for (unsigned int d = 0; d < dim; ++d)
       time_series << ',' << p[d];
     for (const Tensor<1, dim> &u : probe_values)
@@ -572,12 +575,7 @@ namespace Contact
           << energy.viscous_dissipation << ", friction "
           << energy.friction_dissipation << ", numerical "
           << energy.numerical_dissipation << std::endl;
-    pcout << "Energy identity: largest residual relative to the energies "
-          << std::setprecision(2) << max_relative_energy_residual
-          << (max_relative_energy_residual < energy_identity_tolerance ?
-                " (below 1e-8)" :
-                " (ABOVE 1e-8)")
-          << std::endl;
+    print_self_checks();
     if (exact_solution)
       pcout << "Errors, largest over the steps: ||eps(u - u_h)|| "
             << std::setprecision(6) << max_errors.displacement_V

@@ -551,7 +551,7 @@ namespace Contact
     {
       prm.declare_entry(
         "Convexification tolerance",
-        "1e-10",
+        "1e-12",
         Patterns::Double(0),
         "The convexification stops when the slip rates on Gamma_3 change by "
         "less than this, relative to the largest tangential velocity, and the "

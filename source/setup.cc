@@ -410,6 +410,7 @@ namespace Contact
                                                             mpi_communicator,
                                                             pcout,
                                                             computing_timer);
+    friction_solver->set_sabotage(sabotage);
     setup_probes();
 
     pcout << "Mesh: " << triangulation->n_global_active_cells() << " cells, "

@@ -64,7 +64,9 @@ namespace Contact
                       displacement,
                       mass_times_velocity,
                       elasticity_times_displacement,
-                      energy);
+                      energy,
+                      energy_by_quadrature,
+                      largest_checks);
     };
     const auto saved = std::apply(
       [](const auto &...values) { return std::make_tuple(values...); },
@@ -112,6 +114,8 @@ namespace Contact
     assemble_load(time, load, !body_force_is_constant, true);
     if (body_force_is_constant)
       load += constant_body_load;
+    if (sabotage.load_factor != 1.)
+      load *= sabotage.load_factor;
 
     StepStatistics statistics;
     {
@@ -134,6 +138,7 @@ namespace Contact
     update_energy_balance(products);
     mass_times_velocity = products.mass;
     elasticity_times_displacement.add(time_step, products.elasticity);
+    check_step();
     return statistics;
   }
 
