@@ -121,7 +121,9 @@ namespace Contact
    *     load vector: it catches wrong matrices, loads or constraints.
    *   - friction_law: the friction law (5.3) at the converged slip rates,
    *     FrictionSolver::law_residual: it catches a wrong coefficient, sign
-   *     or stick condition.
+   *     or stick condition. It fails where it exceeds the tolerance and
+   *     twice what the convexification's own tolerance allows
+   *     (friction_law_allowance, FrictionSolver::law_residual_allowance).
    *   - negative_friction_power: a step whose friction dissipation
    *     decreases, relative to the energies (friction only dissipates).
    */
@@ -130,6 +132,8 @@ namespace Contact
     double algebraic_energy        = 0;
     double quadrature_energy       = 0;
     double friction_law            = 0;
+    double friction_law_allowance  = 0;
+    double friction_law_excess     = 0;
     double negative_friction_power = 0;
 
     void take_largest(const SelfCheckValues &other)
@@ -137,6 +141,10 @@ namespace Contact
       algebraic_energy  = std::max(algebraic_energy, other.algebraic_energy);
       quadrature_energy = std::max(quadrature_energy, other.quadrature_energy);
       friction_law      = std::max(friction_law, other.friction_law);
+      friction_law_allowance =
+        std::max(friction_law_allowance, other.friction_law_allowance);
+      friction_law_excess =
+        std::max(friction_law_excess, other.friction_law_excess);
       negative_friction_power =
         std::max(negative_friction_power, other.negative_friction_power);
     }
@@ -145,7 +153,7 @@ namespace Contact
     void serialize(Archive &archive, const unsigned int /*version*/)
     {
       archive &algebraic_energy &quadrature_energy &friction_law
-        &negative_friction_power;
+        &friction_law_allowance &friction_law_excess &negative_friction_power;
     }
   };
 

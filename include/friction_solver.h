@@ -284,6 +284,17 @@ namespace Contact
      */
     double law_residual(const VectorType &velocity) const;
 
+    /**
+     * How far from the law the last step's solution may be by the
+     * solver's own tolerance, on the scale of law_residual(): 0 after
+     * Newton's method (which solves the law itself to 1e-12); after the
+     * convexification, whose Tresca problem has the bounds of the slip
+     * rates s of its last iterate, the largest change of the bound that the
+     * remaining change of s allows, S (a - b) alpha max_p |s_p - |v_p||
+     * / (S mu(0)).
+     */
+    double law_residual_allowance() const;
+
     /** For the tests of the self-checks only. */
     void set_sabotage(const Sabotage<dim> &sabotage);
 
@@ -331,7 +342,8 @@ namespace Contact
     // m_p times the sabotaged factor of the bound (the tests' only): the
     // weights with which the solver applies the law.
     Vector<double> solver_weights;
-    bool           reversed_friction_force = false;
+    bool           reversed_friction_force     = false;
+    double         last_law_residual_allowance = 0;
   };
 
 

@@ -226,6 +226,7 @@ namespace Contact
                                                  const StepLabel  &label)
   {
     StepStatistics statistics;
+    last_law_residual_allowance = 0;
     path->begin_step(step_rhs, velocity);
     if (!friction_law.is_frictionless() && !gamma3.nodes.empty())
       solve_friction_problem(label, statistics);
@@ -338,6 +339,7 @@ namespace Contact
     AndersonAcceleration   anderson(solver.anderson_depth);
     double                 accepted_energy = std::numeric_limits<double>::max();
     double                 residual        = 0;
+    double                 rate_scale      = 0;
     bool                   converged       = false;
 
     const auto energy_on_gamma3 = [&]() {
@@ -402,8 +404,9 @@ namespace Contact
         current.slip_velocity  = v;
         current.node_state     = state;
 
-        double scale = std::numeric_limits<double>::min();
-        residual     = 0;
+        double &scale = rate_scale;
+        scale         = std::numeric_limits<double>::min();
+        residual      = 0;
         slip_set.resize(n);
         Vector<double> new_rate(n);
         for (unsigned int p = 0; p < n; ++p)
@@ -430,6 +433,10 @@ namespace Contact
 
     AssertThrow(converged,
                 ExcStepNotConverged(convexification_failure(residual, label)));
+    if (!friction_law.is_rate_independent())
+      last_law_residual_allowance =
+        friction_law.one_sided_lipschitz_constant() /
+        friction_law.coefficient(0.) * residual * rate_scale;
   }
 
 
@@ -583,6 +590,12 @@ namespace Contact
     statistics.friction_force = resultant.norm();
   }
 
+
+  template <int dim>
+  double FrictionSolver<dim>::law_residual_allowance() const
+  {
+    return last_law_residual_allowance;
+  }
 
   template <int dim>
   const ContactBoundary<dim> &FrictionSolver<dim>::boundary() const
