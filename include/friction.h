@@ -100,14 +100,15 @@ namespace Contact
    * i.e. the nodal form of the friction condition (5.3) with the
    * coefficient frozen. It is solved by the primal-dual active set method,
    * the semismooth Newton method on the complementarity function
-   * eta_p = P_{B(g_p)}(z_p), z_p = eta_p + c_p v_p (Hueber, Stadler and
-   * Wohlmuth 2008): stick where |z_p| <= g_p (impose v_p = 0), slip
-   * elsewhere. On a slip node the generalised derivative of the projection,
-   * (g_p / |z_p|) (I - zhat zhat^T), gives two conditions in the local
-   * basis (zhat, tangents of zhat): eta_p . zhat = g_p, and
-   * v_p . t = beta_p eta_p . t with beta_p = (|z_p| - g_p) / (g_p c_p) >= 0
-   * along the other directions. Every Newton step is then one SPD solve,
-   * on the body (contact_paths.cc) or on D (DelassusOperator,
+   * eta_p = P_{B(g_p)}(z_p), z_p = eta_p + c_p v_p (the formulation of
+   * Hueber, Stadler and Wohlmuth 2008; the step below is the plain
+   * generalised derivative of the projection, not their damped variant):
+   * stick where |z_p| <= g_p (impose v_p = 0), slip elsewhere. On a slip node
+   * the generalised derivative of the projection, (g_p / |z_p|) (I - zhat
+   * zhat^T), gives two conditions in the local basis (zhat, tangents of zhat):
+   * eta_p . zhat = g_p, and v_p . t = beta_p eta_p . t with beta_p = (|z_p| -
+   * g_p) / (g_p c_p) >= 0 along the other directions. Every Newton step is then
+   * one SPD solve, on the body (contact_paths.cc) or on D (DelassusOperator,
    * which solves for the forces or for the velocities, whichever set is
    * smaller). For m = 1 (2D)
    * there are no such directions: the slip set fixes eta_p = g_p sign(z_p)

@@ -231,7 +231,8 @@ namespace Contact
                 Vector<double>                       &v) = 0;
     /** w_n = K^{-1} (step_rhs - C^T eta). */
     virtual void velocity(const Vector<double> &eta, VectorType &w) = 0;
-    /** y = D x, outside of a step (the power method). */
+    /** y = D x, outside of a step (the Lanczos method for the convexity
+     *  limit). */
     virtual void apply_delassus(const Vector<double> &x, Vector<double> &y) = 0;
     /** What the summary prints about the path. */
     virtual std::string description() const = 0;
@@ -307,15 +308,16 @@ namespace Contact
     double substitution_seconds() const;
 
   private:
-    void   choose_path(const MatrixType &system_matrix,
-                       Factorization    &factorization);
-    bool   delassus_operator_pays(const Factorization &factorization) const;
-    double largest_weighted_delassus_eigenvalue(const double tolerance);
-    void   solve_friction_problem(const StepLabel &label,
+    void choose_path(const MatrixType &system_matrix,
+                     Factorization    &factorization);
+    bool delassus_operator_pays(const Factorization &factorization) const;
+    std::pair<double, bool>
+         largest_weighted_delassus_eigenvalue(const double tolerance);
+    void solve_friction_problem(const StepLabel &label,
+                                StepStatistics  &statistics);
+    bool solve_by_newton(StepStatistics &statistics);
+    void solve_by_convexification(const StepLabel &label,
                                   StepStatistics  &statistics);
-    bool   solve_by_newton(StepStatistics &statistics);
-    void   solve_by_convexification(const StepLabel &label,
-                                    StepStatistics  &statistics);
     std::pair<TrescaVelocity, TrescaNewtonStep> path_operators();
     TrescaResult solve_tresca_problem(const Vector<double>   &bound,
                                       Vector<double>         &eta,
@@ -337,8 +339,10 @@ namespace Contact
     Vector<double> active_set_parameter;
     // A step's friction problem is convex while S (a - b) alpha is below
     // this (largest_weighted_delassus_eigenvalue).
-    double        convexity_limit = std::numeric_limits<double>::infinity();
-    FrictionState current;
+    double convexity_limit = std::numeric_limits<double>::infinity();
+    // The Lanczos steps that estimate it at most (each a product with D).
+    static constexpr unsigned int max_lanczos_steps = 100;
+    FrictionState                 current;
     // m_p times the sabotaged factor of the bound (the tests' only): the
     // weights with which the solver applies the law.
     Vector<double> solver_weights;
