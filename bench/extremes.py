@@ -58,7 +58,7 @@ def run(contact, sets, directory):
     for key in ["convexification_iterations", "active_set_iterations"]:
         values = [int(r[key]) for r in steps]
         result[key] = (sum(values) / len(values) if values else 0, max(values, default=0))
-    match = re.search(r"largest residual relative to the energies ([0-9.e+-]+)", text)
+    match = re.search(r"energy identity from the matrices \(the solve\): ([0-9.e+-]+)", text)
     result["energy"] = match.group(1) if match else "-"
     match = re.search(r"convex while S \(a - b\) alpha < ([0-9.e+-]+)", text)
     result["limit"] = float(match.group(1)) if match else None
