@@ -124,8 +124,9 @@ namespace Contact
    *     or stick condition. It fails where it exceeds the tolerance and
    *     twice what the convexification's own tolerance allows
    *     (friction_law_allowance, FrictionSolver::law_residual_allowance).
-   *   - negative_friction_power: a step whose friction dissipation
-   *     decreases, relative to the energies (friction only dissipates).
+   *   - negative_friction_power: a step whose friction power on the
+   *     slipping nodes is negative, relative to the energies (friction
+   *     only dissipates; FrictionSolver::slip_power).
    */
   struct SelfCheckValues
   {

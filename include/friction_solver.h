@@ -276,12 +276,15 @@ namespace Contact
     /**
      * The largest violation of the discrete friction law (5.3)-(5.4) by the
      * current forces eta and the slip velocities v = C w of a velocity w,
-     * relative to max_p g_p(0): at every node the distance
-     * |eta_p - P_{B(g_p)}(eta_p + c_p v_p)| with g_p = m_p S mu(|v_p|) of
-     * the true law. It is c_p |v_p| where the node sticks
-     * (|eta_p + c_p v_p| <= g_p), the slip that the law forbids there, and
-     * the distance of eta_p from g_p times the slip direction where it
-     * slips; zero exactly where the law holds.
+     * relative to max_p g_p(0), with g_p = m_p S mu(|v_p|) of the true law
+     * at the converged slip rate: |eta_p| - g_p where the node sticks, and
+     * where it slips the distance |eta_p - P_{B(g_p)}(eta_p + c_p v_p)|,
+     * which is that of eta_p from g_p v_p / |v_p| (measured along
+     * eta_p + c_p v_p, so that a slip rate just above zero gives no
+     * spurious direction). A sticking node's v_p is not part of it: that is
+     * the forward error of the solve with K, which a body held only by
+     * friction and little inertia amplifies far beyond 1e-8
+     * (doc/verification.md).
      */
     double law_residual(const VectorType &velocity) const;
 
@@ -295,6 +298,11 @@ namespace Contact
      * / (S mu(0)).
      */
     double law_residual_allowance() const;
+
+    /** sum_p eta_p . v_p over the nodes that slip, v = C w: the friction
+     *  power, which the law makes >= 0. (Where a node sticks its v_p is
+     *  round-off, which law_residual() measures.) */
+    double slip_power(const VectorType &velocity) const;
 
     /** For the tests of the self-checks only. */
     void set_sabotage(const Sabotage<dim> &sabotage);

@@ -183,7 +183,10 @@ namespace Contact
     // less than `tolerance` relative or the Krylov space is invariant.
     std::vector<Vector<double>> basis;
     std::vector<double>         diagonal, off_diagonal;
-    x = 1.;
+    // A start vector without the symmetries of Gamma_3, which could make it
+    // orthogonal to the top eigenvector (the same on every process).
+    for (unsigned int i = 0; i < x.size(); ++i)
+      x[i] = 1. + 0.5 * std::sin(1.7 * i + 0.3);
     x /= x.l2_norm();
     double estimate = 0;
     for (unsigned int j = 0; j < max_lanczos_steps; ++j)
@@ -597,11 +600,29 @@ namespace Contact
           node.weight * friction_law.bound(node.tangential_vector(v, p).norm());
         const Tensor<1, dim> projection =
           (z.norm() > g ? (g / z.norm()) * z : z);
-        residual = std::max(residual, (eta - projection).norm());
+        residual = std::max(residual,
+                            current.node_state[p] == NodeState::stick ?
+                              eta.norm() - g :
+                              (eta - projection).norm());
         largest_bound =
           std::max(largest_bound, node.weight * friction_law.bound(0.));
       }
     return residual / largest_bound;
+  }
+
+
+  template <int dim>
+  double FrictionSolver<dim>::slip_power(const VectorType &velocity) const
+  {
+    if (friction_law.is_frictionless() || gamma3.nodes.empty())
+      return 0.;
+    const Vector<double> v     = gamma3.tangential_velocities(velocity);
+    double               power = 0;
+    for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
+      if (current.node_state[p] == NodeState::slip)
+        power += gamma3.nodes[p].tangential_vector(current.friction_force, p) *
+                 gamma3.nodes[p].tangential_vector(v, p);
+    return power;
   }
 
 

@@ -28,6 +28,7 @@ Parameters scene(const std::string &directory)
 {
   return read_parameters(CONTACT_PRM_DIR "/manufactured_slip_front.prm",
                          {"Geometry/Cell size=0.03125",
+                          "Time/Time step=0.03125",
                           "Output/Print timings=false",
                           "Output/Output directory=" + directory});
 }
