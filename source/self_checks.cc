@@ -268,8 +268,8 @@ namespace Contact
         "friction_dissipation");
     std::ostringstream message;
     message << "Self-check failed (tolerance " << self_check_tolerance
-            << "):" << failures.str()
-            << "\nThe results in '" << parameters.output.directory
+            << "):" << failures.str() << "\nThe results in '"
+            << parameters.output.directory
             << "' are not a solution of the scheme.";
     AssertThrow(failures.str().empty(), ExcMessage(message.str()));
   }
