@@ -2,7 +2,9 @@
    usage; --print-parameters with a scene prints the scene's values, not
    the defaults; a directory or a file that cannot be read as the scene is
    an error naming it, not a run of the default scene; an output directory
-   with a line break is refused. */
+   with a line break is refused; doc/parameters.prm, the documented list of
+   every entry, is what --print-parameters prints (regenerate it with
+   `cmake --build build --target parameters_doc`). */
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -17,6 +19,49 @@
 
 namespace
 {
+  // Runs the command line without printing it; returns its output.
+  std::string output_of(const std::vector<std::string> &arguments)
+  {
+    std::vector<const char *> argv{"contact"};
+    for (const std::string &argument : arguments)
+      argv.push_back(argument.c_str());
+    std::ostringstream captured;
+    std::streambuf    *console = std::cout.rdbuf(captured.rdbuf());
+    Contact::run_from_command_line(argv.size(), argv.data());
+    std::cout.rdbuf(console);
+    return captured.str();
+  }
+
+  // Whether the committed doc/parameters.prm is the current list of
+  // entries, and where it first differs if not.
+  void compare_documented_parameters()
+  {
+    std::ifstream      file(CONTACT_DOC_DIR "/parameters.prm");
+    std::ostringstream documented;
+    documented << file.rdbuf();
+    std::istringstream current(output_of({"--print-parameters"})),
+      committed(documented.str());
+    std::string  a, b;
+    unsigned int line = 0;
+    bool         same = true;
+    while (same)
+      {
+        const bool more_a = static_cast<bool>(std::getline(current, a));
+        const bool more_b = static_cast<bool>(std::getline(committed, b));
+        ++line;
+        if (!more_a && !more_b)
+          break;
+        same = (more_a == more_b && a == b);
+      }
+    std::cout << "doc/parameters.prm is what --print-parameters prints: "
+              << (same ? "yes" :
+                         "no, from line " + std::to_string(line) + " on ('" +
+                           a + "' against '" + b +
+                           "'): cmake --build build --target "
+                           "parameters_doc")
+              << std::endl;
+  }
+
   // Runs the command line; prints its error, or the lines of its output
   // that contain `wanted` (all of it if empty).
   void run(const std::vector<std::string> &arguments,
@@ -63,6 +108,7 @@ int main(int argc, char *argv[])
                              << "end\n";
   run({"--print-parameters", "scene.prm"}, "set End time");
   run({"--print-parameters"}, "set End time");
+  compare_documented_parameters();
 
   // A line break in the output directory (possible with --set only).
   run({"--set", "Output/Output directory=first\nsecond", "scene.prm"});
