@@ -14,7 +14,9 @@
 
 #include <filesystem>
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <cstdlib>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -101,6 +103,138 @@ namespace Contact
       return command_line;
     }
 
+    // Every declared subsection ("A/B/") and entry ("A/B/name") of the
+    // handler, from its own listing.
+    std::vector<std::string> declared_paths(const ParameterHandler &prm)
+    {
+      std::ostringstream listing;
+      prm.print_parameters(listing, ParameterHandler::ShortPRM);
+      std::vector<std::string> sections, paths;
+      const auto               prefix = [&]() {
+        std::string path;
+        for (const std::string &section : sections)
+          path += section + '/';
+        return path;
+      };
+      std::istringstream lines(listing.str());
+      for (std::string line; std::getline(lines, line);)
+        {
+          line = Utilities::trim(line);
+          if (line.rfind("subsection ", 0) == 0)
+            {
+              sections.push_back(Utilities::trim(line.substr(11)));
+              paths.push_back(prefix());
+            }
+          else if (line == "end" && !sections.empty())
+            sections.pop_back();
+          else if (line.rfind("set ", 0) == 0)
+            paths.push_back(
+              prefix() + Utilities::trim(line.substr(4, line.find('=') - 4)));
+        }
+      return paths;
+    }
+
+    // The number of single-character edits between two names, ignoring
+    // case.
+    unsigned int edit_distance(const std::string &a, const std::string &b)
+    {
+      std::vector<unsigned int> row(b.size() + 1);
+      for (unsigned int j = 0; j <= b.size(); ++j)
+        row[j] = j;
+      for (unsigned int i = 1; i <= a.size(); ++i)
+        {
+          unsigned int diagonal = row[0];
+          row[0]                = i;
+          for (unsigned int j = 1; j <= b.size(); ++j)
+            {
+              const unsigned int above = row[j];
+              row[j]                   = std::min(
+                {row[j] + 1,
+                                   row[j - 1] + 1,
+                                   diagonal +
+                                     (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1)});
+              diagonal = above;
+            }
+        }
+      return row[b.size()];
+    }
+
+    // For ParameterHandler's message about an undeclared entry or
+    // subsection: the declared ones whose names are closest to it (within
+    // a third of its length), as " Did you mean 'A/B/name'?", or "".
+    std::string closest_declared(const ParameterHandler &prm,
+                                 const std::string      &message)
+    {
+      const std::string entry_markers[] = {"No entry with name <",
+                                           "You can't ask for entry <"};
+      const std::string section_marker =
+        "There is no such subsection to be entered: ";
+      std::string name;
+      bool        section = false;
+      for (const std::string &marker : entry_markers)
+        if (const auto at = message.find(marker);
+            name.empty() && at != std::string::npos)
+          {
+            const auto begin = at + marker.size();
+            name = message.substr(begin, message.find('>', begin) - begin);
+          }
+      if (const auto at = message.find(section_marker);
+          name.empty() && at != std::string::npos)
+        {
+          name    = Utilities::trim(message.substr(at + section_marker.size()));
+          name    = name.substr(0, name.find('\n'));
+          section = true;
+        }
+      if (name.empty())
+        return "";
+      std::vector<std::pair<unsigned int, std::string>> candidates;
+      for (const std::string &path : declared_paths(prm))
+        {
+          const bool is_section = (path.back() == '/');
+          if (is_section != section)
+            continue;
+          const std::string trimmed =
+            is_section ? path.substr(0, path.size() - 1) : path;
+          const std::string  last     = trimmed.substr(trimmed.rfind('/') + 1);
+          const unsigned int distance = edit_distance(name, last);
+          if (distance <= std::max<std::size_t>(1, name.size() / 3))
+            candidates.emplace_back(distance, trimmed);
+        }
+      if (candidates.empty())
+        return "";
+      std::sort(candidates.begin(), candidates.end());
+      std::string suggestion = " Did you mean ";
+      for (unsigned int i = 0; i < std::min<std::size_t>(3, candidates.size());
+           ++i)
+        suggestion += (i == 0 ? "'" : " or '") + candidates[i].second + "'";
+      return suggestion + "?";
+    }
+
+    // A ParameterHandler error with the closest declared names added.
+    [[noreturn]] void rethrow_with_suggestion(const ParameterHandler &prm,
+                                              const ExceptionBase    &exc,
+                                              const std::string      &context)
+    {
+      std::ostringstream reason;
+      exc.print_info(reason);
+      std::string       text       = Utilities::trim(reason.str());
+      const std::string suggestion = closest_declared(prm, text);
+      if (!suggestion.empty() && text.back() != '.')
+        text += '.';
+      // A value outside its pattern is shown with the allowed ones already.
+      const bool undeclared =
+        text.find("declared") != std::string::npos ||
+        text.find("no such subsection") != std::string::npos;
+      AssertThrow(false,
+                  ExcMessage(context + text + suggestion +
+                             (undeclared || !context.empty() ?
+                                " (contact --print-parameters lists every "
+                                "entry with its allowed values)" :
+                                "")));
+      std::abort();
+    }
+
+
     // Sets "Section/Subsection/Entry" = value; ParameterHandler itself
     // rejects entries that are not declared and values that do not match
     // the entry's pattern.
@@ -120,13 +254,9 @@ namespace Contact
         }
       catch (const ExceptionBase &exc)
         {
-          std::ostringstream reason;
-          exc.print_info(reason);
-          AssertThrow(false,
-                      ExcMessage("--set '" + path + "=" + value +
-                                 "': " + Utilities::trim(reason.str()) +
-                                 " (contact --print-parameters lists every "
-                                 "entry with its allowed values)"));
+          rethrow_with_suggestion(prm,
+                                  exc,
+                                  "--set '" + path + "=" + value + "': ");
         }
     }
 
@@ -182,7 +312,14 @@ namespace Contact
       const auto flush = [&]() {
         const std::string  mesh_before = skip_undefined ? "" : mesh_file();
         std::istringstream text(chunk);
-        prm.parse_input(text, file, "", skip_undefined);
+        try
+          {
+            prm.parse_input(text, file, "", skip_undefined);
+          }
+        catch (const ExceptionBase &exc)
+          {
+            rethrow_with_suggestion(prm, exc, "");
+          }
         chunk.clear();
         if (skip_undefined)
           return;
