@@ -1,7 +1,6 @@
 /* Matrices and loads of the scheme (5.2)-(5.5), initial values, energies. */
 
 #include <deal.II/base/exceptions.h>
-#include <deal.II/base/thread_management.h>
 
 #include <deal.II/fe/fe_values.h>
 
@@ -482,21 +481,16 @@ namespace Contact
   // @sect4{ContactProblem::velocity_products}
 
   // M w_n, A w_n and B w_n: what the energy balance and the next step's
-  // right-hand side need of the new velocity. The three products only read
-  // w and write their own vector: they run as concurrent tasks (memory
-  // bound, so the second core helps).
+  // right-hand side need of the new velocity. (The program runs one thread
+  // per process, main.cc, so the three products are taken one after the
+  // other.)
   template <int dim>
   VelocityProducts ContactProblem<dim>::velocity_products() const
   {
-    VelocityProducts         products{velocity, velocity, velocity};
-    Threads::TaskGroup<void> tasks;
-    tasks += Threads::new_task(
-      [&]() { condensed_product(mass_matrix, velocity, products.mass); });
-    tasks += Threads::new_task([&]() {
-      condensed_product(viscosity_matrix, velocity, products.viscosity);
-    });
+    VelocityProducts products{velocity, velocity, velocity};
+    condensed_product(mass_matrix, velocity, products.mass);
+    condensed_product(viscosity_matrix, velocity, products.viscosity);
     condensed_product(elasticity_matrix, velocity, products.elasticity);
-    tasks.join_all();
     return products;
   }
 
