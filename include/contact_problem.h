@@ -451,6 +451,9 @@ namespace Contact
     Timer                                            run_timer;
     // Wall time since the last checkpoint, for 'Output/Checkpoint minutes'.
     Timer checkpoint_timer;
+    // Wall time of the time loop of this run (not the setup before it), for
+    // the time left in the progress line.
+    Timer time_loop_timer;
     // The lock on the output directory (its file descriptor, closed with
     // the last copy), held by the first process while the run lives.
     std::shared_ptr<const int> output_directory_lock;

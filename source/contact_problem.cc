@@ -176,6 +176,7 @@ namespace Contact
           write_vtu();
       }
 
+    time_loop_timer.restart();
     for (++step_number; step_number <= n_time_steps; ++step_number)
       {
         time                            = step_number * time_step;

@@ -456,8 +456,13 @@ namespace Contact
     if (interval == 0 ||
         (step_number % interval != 0 && step_number != n_time_steps))
       return;
+    // The time left from the steps of this run alone: the setup before the
+    // first step (factorisation, Delassus operator) would make the first
+    // estimates several times too large.
     const double elapsed = run_timer.wall_time();
-    const double left    = elapsed / step_number * (n_time_steps - step_number);
+    const double left    = time_loop_timer.wall_time() /
+                        std::max(steps_timed, 1u) *
+                        (n_time_steps - step_number);
     pcout << "Step " << std::setw(5) << step_number << '/' << n_time_steps
           << "  t = " << std::setw(9) << std::setprecision(5) << time
           << "  iterations "
