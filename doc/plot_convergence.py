@@ -30,7 +30,7 @@ def main():
         h = [float(v) for v in table["h"]]
         for column in table:
             if not ("error" in column or "difference" in column) \
-                    or "rate" in column:
+                    or "rate" in column or "relative" in column:
                 continue
             error = [float(v) for v in table[column]]
             name = f"{label}: {column}"

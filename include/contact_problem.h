@@ -206,6 +206,8 @@ namespace Contact
     double                  wall_time = 0;
     /** Largest error over the steps 1..N, with a manufactured solution. */
     ErrorNorms max_errors;
+    /** ||eps(u_h(T))||: the scale of the V-errors. */
+    double displacement_V_norm = 0;
   };
 
 

@@ -234,11 +234,12 @@ namespace Contact
       parameters.geometry.mesh_file.empty() ?
         parameters.geometry.cell_size :
         GridTools::maximal_cell_diameter(*triangulation, *mapping);
-    summary.time_step  = time_step;
-    summary.n_steps    = n_time_steps;
-    summary.n_dofs     = dof_handler.n_dofs();
-    summary.wall_time  = run_timer.wall_time();
-    summary.max_errors = max_errors;
+    summary.time_step           = time_step;
+    summary.n_steps             = n_time_steps;
+    summary.n_dofs              = dof_handler.n_dofs();
+    summary.wall_time           = run_timer.wall_time();
+    summary.max_errors          = max_errors;
+    summary.displacement_V_norm = strain_norm(displacement);
     return summary;
   }
 

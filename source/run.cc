@@ -2,7 +2,7 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/table_handler.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
@@ -22,6 +22,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -530,13 +531,13 @@ namespace Contact
           results[level].run = problem.run();
         }
 
-      ConvergenceTable         table;
-      std::vector<std::string> error_columns;
-      const auto add_error = [&](const std::string &column, const double e) {
-        table.add_value(column, e);
-        if (std::find(error_columns.begin(), error_columns.end(), column) ==
-            error_columns.end())
-          error_columns.push_back(column);
+      // Per level: each error with the name of its column and of its rate
+      // column (log2 of the ratio to the level before).
+      struct Error
+      {
+        std::string name;
+        std::string rate_name;
+        double      value;
       };
       const auto difference_norm = [&](const VectorType &a,
                                        const VectorType &b) {
@@ -544,7 +545,42 @@ namespace Contact
         difference -= b;
         return reference->strain_norm(difference);
       };
-      for (unsigned int level = 0; level < (exact ? L + 1 : L); ++level)
+      const unsigned int              n_levels = (exact ? L + 1 : L);
+      std::vector<std::vector<Error>> errors(n_levels);
+      for (unsigned int level = 0; level < n_levels; ++level)
+        if (exact)
+          {
+            const ErrorNorms &e = results[level].run.max_errors;
+            errors[level]       = {{"max V-error", "V rate", e.displacement_V},
+                                   {"max L2 velocity error",
+                                    "velocity rate",
+                                    e.velocity_L2},
+                                   {"max L2 displacement error",
+                                    "displacement rate",
+                                    e.displacement_L2}};
+          }
+        else
+          {
+            const auto &u       = results[level].displacements;
+            const auto &u_ref   = results[L].displacements;
+            double      largest = 0;
+            for (unsigned int n = 0; n < u.size(); ++n)
+              largest = std::max(largest, difference_norm(u[n], u_ref[n]));
+            errors[level] = {
+              {"V-error at T",
+               "rate at T",
+               difference_norm(u.back(), u_ref.back())},
+              {"max V-error", "max rate", largest},
+              {"V-difference to next level at T",
+               "difference rate",
+               difference_norm(u.back(),
+                               results[level + 1].displacements.back())}};
+          }
+      // The scale of the V-errors: ||eps(u_h(T))|| of the finest level.
+      const double solution_norm = results[L].run.displacement_V_norm;
+
+      TableHandler table;
+      for (unsigned int level = 0; level < n_levels; ++level)
         {
           const RunSummary &run = results[level].run;
           table.add_value("level", level);
@@ -552,46 +588,40 @@ namespace Contact
           table.add_value("k", run.time_step);
           table.add_value("unknowns", run.n_dofs);
           table.add_value("steps", run.n_steps);
-          if (exact)
+          for (unsigned int i = 0; i < errors[level].size(); ++i)
             {
-              add_error("max V-error", run.max_errors.displacement_V);
-              add_error("max L2 velocity error", run.max_errors.velocity_L2);
-              add_error("max L2 displacement error",
-                        run.max_errors.displacement_L2);
+              const Error &e = errors[level][i];
+              table.add_value(e.name, e.value);
+              table.set_precision(e.name, 4);
+              table.set_scientific(e.name, true);
+              if (level == 0)
+                table.add_value(e.rate_name, std::string("-"));
+              else
+                table.add_value(e.rate_name,
+                                std::log2(errors[level - 1][i].value /
+                                          e.value));
+              table.set_precision(e.rate_name, 2);
             }
-          else
-            {
-              const auto &u       = results[level].displacements;
-              const auto &u_ref   = results[L].displacements;
-              double      largest = 0;
-              for (unsigned int n = 0; n < u.size(); ++n)
-                largest = std::max(largest, difference_norm(u[n], u_ref[n]));
-              add_error("V-error at T",
-                        difference_norm(u.back(), u_ref.back()));
-              add_error("max V-error", largest);
-              add_error("V-difference to next level at T",
-                        difference_norm(
-                          u.back(), results[level + 1].displacements.back()));
-            }
+          table.add_value("relative V-error",
+                          errors[level][0].value /
+                            std::max(solution_norm,
+                                     std::numeric_limits<double>::min()));
+          table.set_precision("relative V-error", 2);
+          table.set_scientific("relative V-error", true);
           if (base.output.print_timings)
             table.add_value("wall time [s]", run.wall_time);
         }
-
       for (const std::string column : {"h", "k"})
         table.set_scientific(column, true);
-      for (const std::string &column : error_columns)
-        {
-          table.set_precision(column, 4);
-          table.set_scientific(column, true);
-          table.evaluate_convergence_rates(
-            column, ConvergenceTable::reduction_rate_log2);
-        }
       console() << std::endl
                 << "Convergence study (refining "
                 << (study.refine == Refine::space ? "h" :
                     study.refine == Refine::time  ? "k" :
                                                     "h and k")
-                << "; rates log2(e_{l-1}/e_l)";
+                << "; rates log2(e_{l-1}/e_l); relative V-error: the first "
+                << "error column over ||eps(u_h(T))|| = "
+                << std::setprecision(4) << solution_norm
+                << " of the finest level";
       if (!exact)
         console() << "; reference: level " << L << std::setprecision(6)
                   << ", h = " << results[L].run.cell_size
