@@ -127,14 +127,27 @@ namespace Contact
     unsigned int max_active_set_iterations;
     double       active_set_parameter;
     unsigned int anderson_depth;
-    std::string  linear_solver;
+    /** 'Linear solver' with 'auto' resolved: CHOLMOD, CG-AMG or the name of
+     *  an Amesos solver, for Factorization::create(). */
+    std::string linear_solver;
+    /** CG-AMG: every solve with K is iterative (and costs CG iterations). */
+    bool iterative_linear_solver = false;
     /** Halvings of k allowed for a step that does not converge. */
     unsigned int step_cuts;
-    /** 'auto', 'Delassus' or 'constraints'. */
-    std::string contact_solver;
-    /** 'Newton' or 'convexification'. */
-    std::string  friction_method;
-    unsigned int max_newton_iterations;
+    enum class ContactSolver
+    {
+      automatic,
+      delassus,
+      constraints
+    };
+    ContactSolver contact_solver = ContactSolver::automatic;
+    enum class FrictionMethod
+    {
+      newton,
+      convexification
+    };
+    FrictionMethod friction_method = FrictionMethod::convexification;
+    unsigned int   max_newton_iterations;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);

@@ -107,7 +107,7 @@ namespace Contact
     if (!friction_law.is_rate_independent() &&
         !friction_law.is_frictionless() && !gamma3.nodes.empty())
       {
-        const bool rough = (parameters.solver.linear_solver == "CG-AMG");
+        const bool rough = parameters.solver.iterative_linear_solver;
         const auto [eigenvalue, converged] =
           largest_weighted_delassus_eigenvalue(rough ? 1e-3 : 1e-8);
         convexity_limit = 1. / eigenvalue;
@@ -133,11 +133,13 @@ namespace Contact
   void FrictionSolver<dim>::choose_path(const MatrixType &system_matrix,
                                         Factorization    &factorization)
   {
-    const std::string &choice = parameters.solver.contact_solver;
-    const bool         delassus =
-      !friction_law.is_frictionless() && !gamma3.nodes.empty() &&
-      (choice == "Delassus" ||
-       (choice == "auto" && delassus_operator_pays(factorization)));
+    using ContactSolver          = SolverParameters::ContactSolver;
+    const ContactSolver choice   = parameters.solver.contact_solver;
+    const bool          delassus = !friction_law.is_frictionless() &&
+                          !gamma3.nodes.empty() &&
+                          (choice == ContactSolver::delassus ||
+                           (choice == ContactSolver::automatic &&
+                            delassus_operator_pays(factorization)));
     path = make_contact_path(
       gamma3, system_matrix, factorization, delassus, computing_timer);
   }
@@ -248,7 +250,7 @@ namespace Contact
       Utilities::MPI::max(static_cast<double>(
                             gamma3.locally_owned_dofs.n_elements()),
                           gamma3.mpi_communicator);
-    return parameters.solver.linear_solver != "CG-AMG" &&
+    return !parameters.solver.iterative_linear_solver &&
            largest_part * n_columns * sizeof(double) <= 1e9;
   }
 
@@ -291,7 +293,8 @@ namespace Contact
   void FrictionSolver<dim>::solve_friction_problem(const StepLabel &label,
                                                    StepStatistics  &statistics)
   {
-    const bool newton = parameters.solver.friction_method == "Newton" &&
+    const bool newton = parameters.solver.friction_method ==
+                          SolverParameters::FrictionMethod::newton &&
                         !friction_law.is_rate_independent();
     if (!newton || !solve_by_newton(statistics))
       solve_by_convexification(label, statistics);

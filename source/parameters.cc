@@ -666,8 +666,14 @@ namespace Contact
         linear_solver = (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ?
                            "CHOLMOD" :
                            "Amesos_Mumps");
-      contact_solver        = prm.get("Contact solver");
-      friction_method       = prm.get("Friction method");
+      iterative_linear_solver   = (linear_solver == "CG-AMG");
+      const std::string contact = prm.get("Contact solver");
+      contact_solver        = (contact == "Delassus" ? ContactSolver::delassus :
+                               contact == "constraints" ? ContactSolver::constraints :
+                                                          ContactSolver::automatic);
+      friction_method       = (prm.get("Friction method") == "Newton" ?
+                                 FrictionMethod::newton :
+                                 FrictionMethod::convexification);
       max_newton_iterations = prm.get_integer("Max Newton iterations");
       step_cuts             = prm.get_integer("Step cuts");
     }

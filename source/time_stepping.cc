@@ -21,7 +21,7 @@ namespace Contact
   {
     TimerOutput::Scope             t(computing_timer, "Factorization");
     std::vector<std::vector<bool>> constant_modes;
-    if (parameters.solver.linear_solver == "CG-AMG")
+    if (parameters.solver.iterative_linear_solver)
       DoFTools::extract_constant_modes(dof_handler,
                                        ComponentMask(),
                                        constant_modes);
