@@ -1,9 +1,11 @@
 /**
  * Parameters of a run, one struct per subsection of the .prm file (the
  * step-44 / Lethe habit). Every entry carries a Pattern with its allowed
- * range and a documentation string with units; checks that involve more
- * than one entry, or the mesh, live in Parameters::check() and in
- * ContactProblem::check_boundary_ids().
+ * range and a documentation string with units; each struct's
+ * parse_parameters() checks its entries (check_entry() in parameters.cc
+ * names the entry and the allowed range), Parameters::parse_parameters()
+ * the checks that involve entries of several subsections, and
+ * ContactProblem::check_boundary_ids() those that need the mesh.
  */
 #ifndef contact_parameters_h
 #define contact_parameters_h
