@@ -57,6 +57,7 @@
 #include <deque>
 #include <fstream>
 #include <functional>
+#include <future>
 #include <limits>
 #include <map>
 #include <memory>
@@ -216,6 +217,7 @@ namespace Contact
   {
   public:
     explicit ContactProblem(const Parameters &parameters);
+    ~ContactProblem();
 
     RunSummary run();
 
@@ -299,6 +301,9 @@ namespace Contact
     StepStatistics do_time_step();
     StepLabel      step_label() const;
 
+    // contact_problem.cc
+    void time_loop();
+
     // contact_problem.cc: Gauss rules of n points per direction on the
     // cells and faces of the mesh's shape.
     Quadrature<dim>     gauss_rule(const unsigned int n_points) const;
@@ -331,14 +336,24 @@ namespace Contact
     void serialize_checkpoint_state(Archive &archive);
 
     // output.cc
-    void           claim_output_directory();
-    void           prepare_output_directory();
-    void           write_vtu();
-    void           write_pvd() const;
-    void           write_time_series_row(const StepStatistics &statistics);
+    void claim_output_directory();
+    void prepare_output_directory();
+    struct VtuOutput;
+    std::string vtu_piece_name(const unsigned int step,
+                               const unsigned int process) const;
+    void        write_vtu();
+    void        cell_average_stress(VtuOutput &output) const;
+    void        add_vtu_fields(VtuOutput &output) const;
+    void write_vtu_piece(VtuOutput &output, const std::string &file) const;
+    void finish_vtu();
+    void write_pvd() const;
+    void write_time_series_row(const StepStatistics &statistics);
+    void write_gamma3_history_rows();
     Tensor<1, dim> probe_displacement(const unsigned int probe,
                                       const VectorType  &u_ghosted) const;
     void           print_progress(const StepStatistics &statistics) const;
+    bool           is_nearest_step(const double t) const;
+    bool           report_due() const;
     void           report_contact_state();
     void           print_summary() const;
 
@@ -439,6 +454,7 @@ namespace Contact
       std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>>
                                                 probes;
     std::ofstream                               time_series;
+    std::ofstream                               gamma3_history;
     std::vector<std::pair<double, std::string>> pvd_records;
     std::vector<double>                         pending_report_times;
     StepStatistics                              totals;
@@ -459,6 +475,10 @@ namespace Contact
     // The lock on the output directory (its file descriptor, closed with
     // the last copy), held by the first process while the run lives.
     std::shared_ptr<const int> output_directory_lock;
+    // The VTU output being written in the background (output.cc), last so
+    // that it is destroyed first: its destructor waits for the thread,
+    // which reads the members above.
+    std::shared_ptr<VtuOutput> pending_vtu;
   };
 } // namespace Contact
 

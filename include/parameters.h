@@ -188,6 +188,7 @@ namespace Contact
     std::string         directory;
     unsigned int        vtu_interval;
     bool                write_time_series;
+    bool                write_gamma3_history;
     std::vector<double> report_times;
     /** Points whose displacement goes into time_series.csv. */
     std::vector<std::vector<double>> probe_points;

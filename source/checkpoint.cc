@@ -251,6 +251,8 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::save_checkpoint()
   {
+    // The checkpoint lists the VTU records written so far.
+    finish_vtu();
     TimerOutput::Scope t(computing_timer, "Checkpoint");
     const std::string  name = checkpoint_name();
     std::ostringstream payload(std::ios::binary);
@@ -382,37 +384,40 @@ namespace Contact
 
   // The killed run may have written rows and VTU records after its last
   // checkpoint; the resumed run recomputes those steps, so the time series
-  // keeps the rows up to the checkpoint's step and the PVD the records
-  // stored with it. Both are rewritten atomically.
+  // and the Gamma_3 history keep the rows up to the checkpoint's step and the
+  // PVD the records stored with it. Both are rewritten atomically.
   template <int dim>
   void ContactProblem<dim>::cut_output_back_to_checkpoint() const
   {
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
     const std::string &directory = parameters.output.directory;
-    if (parameters.output.write_time_series &&
-        std::filesystem::exists(directory + "/time_series.csv"))
-      {
-        const std::string name = directory + "/time_series.csv";
-        std::ifstream     in(name);
-        std::ofstream     out(name + ".tmp");
-        std::string       line;
-        if (std::getline(in, line))
-          out << line << '\n';
-        while (std::getline(in, line) && in.good() && !line.empty())
-          {
-            const unsigned int step =
-              std::stoul(line.substr(0, line.find(',')));
-            if (step > step_number)
-              break;
+    for (const auto &[name, written] :
+         {std::make_pair(directory + "/time_series.csv",
+                         parameters.output.write_time_series),
+          std::make_pair(directory + "/gamma3_history.csv",
+                         parameters.output.write_gamma3_history)})
+      if (written && std::filesystem::exists(name))
+        {
+          std::ifstream in(name);
+          std::ofstream out(name + ".tmp");
+          std::string   line;
+          if (std::getline(in, line))
             out << line << '\n';
-          }
-        out.flush();
-        AssertThrow(out,
-                    ExcMessage("Cannot write '" + name +
-                               ".tmp': " + std::strerror(errno) + "."));
-        std::filesystem::rename(name + ".tmp", name);
-      }
+          while (std::getline(in, line) && in.good() && !line.empty())
+            {
+              const unsigned int step =
+                std::stoul(line.substr(0, line.find(',')));
+              if (step > step_number)
+                break;
+              out << line << '\n';
+            }
+          out.flush();
+          AssertThrow(out,
+                      ExcMessage("Cannot write '" + name +
+                                 ".tmp': " + std::strerror(errno) + "."));
+          std::filesystem::rename(name + ".tmp", name);
+        }
     write_pvd();
   }
 

@@ -162,8 +162,7 @@ namespace Contact
     friction_solver->reinit(system_matrix, *factorization);
     friction_solver->set_initial_velocity(velocity);
 
-    const unsigned int vtu_interval = parameters.output.vtu_interval;
-    step_number                     = 0;
+    step_number = 0;
     if (parameters.output.resume)
       load_checkpoint();
     prepare_output_directory();
@@ -172,10 +171,47 @@ namespace Contact
         if (exact_solution)
           current_errors = compute_errors();
         write_time_series_row(StepStatistics());
-        if (vtu_interval > 0)
+        write_gamma3_history_rows();
+        if (parameters.output.vtu_interval > 0)
           write_vtu();
       }
+    time_loop();
+    finish_vtu();
+    step_number = n_time_steps;
+    print_summary();
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        // Removed only if empty: what a killed run left there stays.
+        std::error_code error;
+        std::filesystem::remove(parameters.output.directory + "/.partial",
+                                error);
+      }
+    output_directory_lock.reset();
+    require_self_checks();
 
+    RunSummary summary;
+    summary.cell_size =
+      parameters.geometry.mesh_file.empty() ?
+        parameters.geometry.cell_size :
+        GridTools::maximal_cell_diameter(*triangulation, *mapping);
+    summary.time_step           = time_step;
+    summary.n_steps             = n_time_steps;
+    summary.n_dofs              = dof_handler.n_dofs();
+    summary.wall_time           = run_timer.wall_time();
+    summary.max_errors          = max_errors;
+    summary.displacement_V_norm = strain_norm(displacement);
+    return summary;
+  }
+
+
+  // @sect4{ContactProblem::time_loop}
+
+  // The steps t_1, ..., t_N (from the checkpoint's step on a resumed run),
+  // and after each what the user asked to see of it.
+  template <int dim>
+  void ContactProblem<dim>::time_loop()
+  {
+    const unsigned int vtu_interval = parameters.output.vtu_interval;
     time_loop_timer.restart();
     for (++step_number; step_number <= n_time_steps; ++step_number)
       {
@@ -207,8 +243,9 @@ namespace Contact
         totals.add_counts(statistics);
 
         write_time_series_row(statistics);
-        if (vtu_interval > 0 &&
-            (step_number % vtu_interval == 0 || step_number == n_time_steps))
+        write_gamma3_history_rows();
+        if (vtu_interval > 0 && (step_number % vtu_interval == 0 ||
+                                 step_number == n_time_steps || report_due()))
           write_vtu();
         print_progress(statistics);
         report_contact_state();
@@ -217,30 +254,25 @@ namespace Contact
         if (checkpoint_due())
           save_checkpoint();
       }
-    step_number = n_time_steps;
-    print_summary();
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      {
-        // Removed only if empty: what a killed run left there stays.
-        std::error_code error;
-        std::filesystem::remove(parameters.output.directory + "/.partial",
-                                error);
-      }
-    output_directory_lock.reset();
-    require_self_checks();
+  }
 
-    RunSummary summary;
-    summary.cell_size =
-      parameters.geometry.mesh_file.empty() ?
-        parameters.geometry.cell_size :
-        GridTools::maximal_cell_diameter(*triangulation, *mapping);
-    summary.time_step           = time_step;
-    summary.n_steps             = n_time_steps;
-    summary.n_dofs              = dof_handler.n_dofs();
-    summary.wall_time           = run_timer.wall_time();
-    summary.max_errors          = max_errors;
-    summary.displacement_V_norm = strain_norm(displacement);
-    return summary;
+
+  // A run that ends with an error completes the VTU output of the last
+  // written step; on several processes the others may not get here, and
+  // its pieces stay in .partial/ (the PVD does not list them).
+  template <int dim>
+  ContactProblem<dim>::~ContactProblem()
+  {
+    if (pending_vtu && Utilities::MPI::n_mpi_processes(mpi_communicator) == 1)
+      try
+        {
+          finish_vtu();
+        }
+      catch (...)
+        {
+          // An output error while another error ends the run: the first
+          // one is reported.
+        }
   }
 
 

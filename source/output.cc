@@ -19,6 +19,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iomanip>
 #include <regex>
 #include <sstream>
@@ -81,7 +82,7 @@ namespace Contact
     {
       static const std::regex written(
         "solution_[0-9]{5}\\.([0-9]+\\.vtu|pvtu)|solution\\.pvd(\\.tmp)?|"
-        "time_series\\.csv(\\.tmp)?|checkpoint(\\.[0-9]+)?(\\.tmp)?|"
+        "(time_series|gamma3_history)\\.csv(\\.tmp)?|checkpoint(\\.[0-9]+)?(\\.tmp)?|"
         "parameters\\.prm");
       return std::regex_match(name, written);
     }
@@ -168,6 +169,59 @@ namespace Contact
         time_series << (exact_solution ? ",error_V,error_w_L2,error_u_L2\n" :
                                          "\n");
       }
+
+    const std::string history = directory + "/gamma3_history.csv";
+    if (parameters.output.write_gamma3_history && parameters.output.resume &&
+        std::filesystem::exists(history))
+      gamma3_history.open(history, std::ios::app);
+    else if (parameters.output.write_gamma3_history)
+      {
+        gamma3_history.open(history);
+        gamma3_history << "step,time,x,y" << (dim == 3 ? ",z" : "")
+                       << ",state,slip_rate,friction_traction_t1"
+                       << (dim == 3 ? ",friction_traction_t2" : "")
+                       << ",friction_bound\n";
+      }
+  }
+
+
+  // @sect4{ContactProblem::write_gamma3_history_rows}
+
+  // The state of every node of Gamma_3 at t_n (every process has all of
+  // them; the first one writes): state 1 stick, 2 slip; the friction
+  // traction -eta_p / m_p in the node's tangent basis (t1 is the direction
+  // of +x on the paper's Gamma_3), and the bound mu(|w_tau|) S.
+  template <int dim>
+  void ContactProblem<dim>::write_gamma3_history_rows()
+  {
+    if (!gamma3_history.is_open())
+      return;
+    const std::vector<ContactNode<dim>> &contact_nodes =
+      friction_solver->boundary().nodes;
+    const auto &[friction_force, slip_velocity, node_state] =
+      friction_solver->state();
+    for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+      {
+        const ContactNode<dim> &node = contact_nodes[p];
+        const double rate = node.tangential_vector(slip_velocity, p).norm();
+        gamma3_history << step_number << ',' << std::setprecision(12) << time;
+        for (unsigned int d = 0; d < dim; ++d)
+          gamma3_history << ',' << node.location[d];
+        gamma3_history << ',' << (node_state[p] == NodeState::stick ? 1 : 2)
+                       << ',' << rate;
+        for (unsigned int i = 0; i < dim - 1; ++i)
+          gamma3_history << ','
+                         << (node.weight > 0 ?
+                               -friction_force[p * (dim - 1) + i] /
+                                 node.weight :
+                               0.);
+        gamma3_history << ',' << friction_law.bound(rate) << '\n';
+      }
+    gamma3_history.flush();
+    AssertThrow(gamma3_history,
+                ExcMessage("Cannot write '" + parameters.output.directory +
+                           "/gamma3_history.csv': " + std::strerror(errno) +
+                           "."));
   }
 
 
@@ -252,23 +306,73 @@ namespace Contact
   }
 
 
+  // @sect4{ContactProblem::VtuOutput}
+
+  // One VTU output: copies of the fields at t_n, and the thread that turns
+  // them into a file. DataOut's patches and the compression take most of
+  // an output's time (measured: 18 + 18 ms of 45 ms per output of the
+  // paper's scene); they run in a background thread while the time loop
+  // goes on, and finish_vtu() waits for them before the next output, a
+  // checkpoint or the end of the run. The thread reads the mesh, the
+  // DoFHandlers and the mapping, which the time loop does not change, and
+  // makes no MPI calls: DataOut's ghosted copies of the fields (MPI calls)
+  // are made before it starts.
+  template <int dim>
+  struct ContactProblem<dim>::VtuOutput
+  {
+    double                      time;
+    unsigned int                step;
+    FastVector                  displacement, velocity, friction_traction;
+    Vector<double>              status, slip_rate, friction_bound;
+    std::vector<Vector<double>> stress;
+    Vector<double>              von_mises;
+    DataOut<dim>                data_out;
+    std::future<void>           written;
+  };
+
+
+  // @sect4{ContactProblem::vtu_piece_name}
+
+  // deal.II's names for the pieces of a parallel VTU output and their
+  // record: solution_00012.0.vtu, ..., solution_00012.pvtu.
+  template <int dim>
+  std::string
+  ContactProblem<dim>::vtu_piece_name(const unsigned int step,
+                                      const unsigned int process) const
+  {
+    return "solution_" + Utilities::int_to_string(step, 5) + "." +
+           Utilities::int_to_string(process) + ".vtu";
+  }
+
+
   // @sect4{ContactProblem::write_vtu}
 
-  // Displacement and velocity as vectors; the stress
-  // sigma = A eps(w) + B eps(u) of (3.1) and its von Mises value per cell
-  // (in 2D plane strain sigma_zz = lambda tr eps(u) + mu_1 tr eps(w) enters
-  // von Mises); on Gamma_3 the status (0: off Gamma_3, 1: stick, 2: slip),
-  // the slip rate |w_tau|, the friction traction -eta_p/m_p t_p and the
-  // bound mu(|w_tau|) S, as nodal fields.
+  // Displacement and velocity as vectors; on Gamma_3 the status (0: off
+  // Gamma_3, 1: stick, 2: slip), the slip rate |w_tau|, the friction
+  // traction -eta_p/m_p t_p and the bound mu(|w_tau|) S, as nodal fields;
+  // the stress of (3.1) as cell averages (cell_stress_*, cell_von_mises,
+  // see cell_average_stress()). Here the fields are copied and handed to
+  // DataOut; the patches and the file are made in the background
+  // (VtuOutput).
   template <int dim>
   void ContactProblem<dim>::write_vtu()
   {
+    finish_vtu();
     TimerOutput::Scope t(computing_timer, "Output");
 
+    auto output          = std::make_shared<VtuOutput>();
+    output->time         = time;
+    output->step         = step_number;
+    output->displacement = fast_ghosted(displacement);
+    output->velocity     = fast_ghosted(velocity);
+
     const unsigned int n_scalar_dofs = scalar_dof_handler.n_dofs();
-    Vector<double>     status(n_scalar_dofs), slip_rate(n_scalar_dofs),
-      friction_bound(n_scalar_dofs);
-    VectorType traction(locally_owned_dofs, mpi_communicator);
+    output->status.reinit(n_scalar_dofs);
+    output->slip_rate.reinit(n_scalar_dofs);
+    output->friction_bound.reinit(n_scalar_dofs);
+    output->friction_traction.reinit(locally_owned_dofs,
+                                     locally_relevant_dofs,
+                                     mpi_communicator);
     const std::vector<ContactNode<dim>> &contact_nodes =
       friction_solver->boundary().nodes;
     const auto &[friction_force, slip_velocity, node_state] =
@@ -277,41 +381,62 @@ namespace Contact
       {
         const ContactNode<dim> &node = contact_nodes[p];
         const double rate = node.tangential_vector(slip_velocity, p).norm();
-        status[node.scalar_dof] = (node_state[p] == NodeState::stick ? 1 : 2);
-        slip_rate[node.scalar_dof]      = rate;
-        friction_bound[node.scalar_dof] = friction_law.bound(rate);
+        output->status[node.scalar_dof] =
+          (node_state[p] == NodeState::stick ? 1 : 2);
+        output->slip_rate[node.scalar_dof]      = rate;
+        output->friction_bound[node.scalar_dof] = friction_law.bound(rate);
         if (node.weight > 0 && node.locally_owned)
           for (unsigned int d = 0; d < dim; ++d)
-            traction[node.dofs[d]] =
+            output->friction_traction[node.dofs[d]] =
               -node.tangential_vector(friction_force, p)[d] / node.weight;
       }
-    traction.compress(VectorOperation::insert);
+    output->friction_traction.update_ghost_values();
+    cell_average_stress(*output);
+    add_vtu_fields(*output);
 
-    const VectorType u = ghosted(displacement), w = ghosted(velocity),
-                     friction_traction = ghosted(traction);
+    const std::string piece =
+      parameters.output.directory + "/.partial/" +
+      vtu_piece_name(step_number,
+                     Utilities::MPI::this_mpi_process(mpi_communicator));
+    VtuOutput &fields = *output;
+    output->written = std::async(std::launch::async, [this, &fields, piece]() {
+      write_vtu_piece(fields, piece);
+    });
+    pending_vtu     = std::move(output);
+  }
 
+
+  // @sect4{ContactProblem::cell_average_stress}
+
+  // The stress sigma = A eps(w) + B eps(u) of (3.1) averaged over each
+  // cell, and the von Mises value of that average (in 2D plane strain
+  // sigma_zz = lambda tr eps(u) + mu_1 tr eps(w) enters it).
+  template <int dim>
+  void ContactProblem<dim>::cell_average_stress(VtuOutput &output) const
+  {
     const auto  &material     = parameters.material;
     const double two_G        = material.two_G();
     const double lambda       = material.lambda(dim);
     const bool   plane_strain = (dim == 2 && !material.plane_stress);
 
-    const unsigned int               n_cells = triangulation->n_active_cells();
-    std::vector<Vector<double>>      stress(dim * (dim + 1) / 2,
-                                       Vector<double>(n_cells));
-    Vector<double>                   von_mises(n_cells);
-    FEValues<dim>                    fe_values(*mapping,
+    const unsigned int n_cells = triangulation->n_active_cells();
+    output.stress.assign(dim * (dim + 1) / 2, Vector<double>(n_cells));
+    output.von_mises.reinit(n_cells);
+    FEValues<dim>                        fe_values(*mapping,
                             fe,
                             quadrature,
                             update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector displacements(0);
+    const FEValuesExtractors::Vector     displacements(0);
     std::vector<SymmetricTensor<2, dim>> eps_u(quadrature.size()),
       eps_w(quadrature.size());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          fe_values[displacements].get_function_symmetric_gradients(u, eps_u);
-          fe_values[displacements].get_function_symmetric_gradients(w, eps_w);
+          fe_values[displacements].get_function_symmetric_gradients(
+            output.displacement, eps_u);
+          fe_values[displacements].get_function_symmetric_gradients(
+            output.velocity, eps_w);
           SymmetricTensor<2, dim> sigma;
           double                  sigma_zz = 0, volume = 0;
           for (const unsigned int q : fe_values.quadrature_point_indices())
@@ -336,93 +461,128 @@ namespace Contact
           unsigned int       component = 0;
           for (unsigned int i = 0; i < dim; ++i)
             for (unsigned int j = i; j < dim; ++j)
-              stress[component++][c] = sigma[i][j];
+              output.stress[component++][c] = sigma[i][j];
           const double                  mean = (trace(sigma) + sigma_zz) / 3.;
           const SymmetricTensor<2, dim> deviator =
             sigma - mean * unit_symmetric_tensor<dim>();
           const double out_of_plane = (dim == 2 ? sigma_zz - mean : 0.);
-          von_mises[c]              = std::sqrt(
+          output.von_mises[c]       = std::sqrt(
             1.5 * (deviator * deviator + out_of_plane * out_of_plane));
         }
+  }
 
-    DataOut<dim> data_out;
+
+  // @sect4{ContactProblem::add_vtu_fields}
+
+  // DataOut makes ghosted copies of the nodal fields (an MPI call, so here,
+  // before the output thread starts).
+  template <int dim>
+  void ContactProblem<dim>::add_vtu_fields(VtuOutput &output) const
+  {
+    DataOut<dim> &data_out = output.data_out;
     data_out.attach_dof_handler(dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
       vector_field(dim,
                    DataComponentInterpretation::component_is_part_of_vector);
-    const std::vector<std::pair<const VectorType *, std::string>> fields = {
-      {&u, "displacement"},
-      {&w, "velocity"},
-      {&friction_traction, "friction_traction"}};
+    const std::vector<std::pair<const FastVector *, std::string>> fields = {
+      {&output.displacement, "displacement"},
+      {&output.velocity, "velocity"},
+      {&output.friction_traction, "friction_traction"}};
     for (const auto &[vector, name] : fields)
       data_out.add_data_vector(*vector,
                                std::vector<std::string>(dim, name),
                                DataOut<dim>::type_dof_data,
                                vector_field);
-    data_out.add_data_vector(scalar_dof_handler, status, "contact_status");
-    data_out.add_data_vector(scalar_dof_handler, slip_rate, "slip_rate");
     data_out.add_data_vector(scalar_dof_handler,
-                             friction_bound,
+                             output.status,
+                             "contact_status");
+    data_out.add_data_vector(scalar_dof_handler, output.slip_rate, "slip_rate");
+    data_out.add_data_vector(scalar_dof_handler,
+                             output.friction_bound,
                              "friction_bound");
     const char  *axes      = "xyz";
     unsigned int component = 0;
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = i; j < dim; ++j)
-        data_out.add_data_vector(stress[component++],
-                                 std::string("stress_") + axes[i] + axes[j],
+        data_out.add_data_vector(output.stress[component++],
+                                 std::string("cell_stress_") + axes[i] +
+                                   axes[j],
                                  DataOut<dim>::type_cell_data);
-    data_out.add_data_vector(von_mises,
-                             "von_mises",
+    data_out.add_data_vector(output.von_mises,
+                             "cell_von_mises",
                              DataOut<dim>::type_cell_data);
+  }
+
+
+  // @sect4{ContactProblem::write_vtu_piece}
+
+  // This process's piece of the output, written into .partial/: the
+  // output thread's work.
+  template <int dim>
+  void ContactProblem<dim>::write_vtu_piece(VtuOutput         &output,
+                                            const std::string &file) const
+  {
+    DataOut<dim> &data_out = output.data_out;
     data_out.build_patches(*mapping, fe.degree);
 
     DataOutBase::VtkFlags flags;
-    flags.time              = time;
-    flags.cycle             = step_number;
+    flags.time              = output.time;
+    flags.cycle             = output.step;
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
-    // Atomic output: the pieces and the .pvtu record go to .partial/ and
-    // are renamed into the output directory once all processes have
-    // written them, the record last; the PVD is rewritten by rename. A run
-    // killed at any point leaves only complete files, and the PVD lists
-    // only files that exist.
-    const std::string &directory = parameters.output.directory;
-    std::string        record;
-    try
-      {
-        record = data_out.write_vtu_with_pvtu_record(directory + "/.partial/",
-                                                     "solution",
-                                                     step_number,
-                                                     mpi_communicator,
-                                                     5);
-      }
-    catch (const ExceptionBase &)
-      {
-        AssertThrow(false,
-                    ExcMessage("Cannot write the VTU files of step " +
-                               std::to_string(step_number) + " into '" +
-                               directory +
-                               "/.partial': " + std::strerror(errno) + "."));
-      }
+    std::ofstream stream(file);
+    if (stream)
+      data_out.write_vtu(stream);
+    stream.flush();
+    AssertThrow(stream,
+                ExcMessage("Cannot write the VTU file '" + file +
+                           "': " + std::strerror(errno) + "."));
+  }
+
+
+  // @sect4{ContactProblem::finish_vtu}
+
+  // Atomic output: the pieces and the .pvtu record go to .partial/ and are
+  // renamed into the output directory once all processes have written
+  // them, the record last; the PVD is rewritten by rename. A run killed at
+  // any point leaves only complete files, and the PVD lists only files
+  // that exist.
+  template <int dim>
+  void ContactProblem<dim>::finish_vtu()
+  {
+    if (!pending_vtu)
+      return;
+    TimerOutput::Scope               t(computing_timer, "Output");
+    const std::shared_ptr<VtuOutput> output = std::move(pending_vtu);
+    output->written.get();
     const int ierr = MPI_Barrier(mpi_communicator);
     AssertThrowMPI(ierr);
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      {
-        const std::string prefix =
-          "solution_" + Utilities::int_to_string(step_number, 5) + ".";
-        for (const auto &entry :
-             std::filesystem::directory_iterator(directory + "/.partial"))
-          {
-            const std::string name = entry.path().filename().string();
-            if (name.rfind(prefix, 0) == 0 &&
-                entry.path().extension() == ".vtu")
-              std::filesystem::rename(entry.path(), directory + "/" + name);
-          }
-        std::filesystem::rename(directory + "/.partial/" + record,
-                                directory + "/" + record);
-        pvd_records.emplace_back(time, record);
-        write_pvd();
-      }
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+
+    const std::string &directory = parameters.output.directory;
+    const std::string  record =
+      "solution_" + Utilities::int_to_string(output->step, 5) + ".pvtu";
+    std::vector<std::string> pieces;
+    for (unsigned int process = 0;
+         process < Utilities::MPI::n_mpi_processes(mpi_communicator);
+         ++process)
+      pieces.push_back(vtu_piece_name(output->step, process));
+    {
+      std::ofstream stream(directory + "/.partial/" + record);
+      output->data_out.write_pvtu_record(stream, pieces);
+      stream.flush();
+      AssertThrow(stream,
+                  ExcMessage("Cannot write '" + directory + "/.partial/" +
+                             record + "': " + std::strerror(errno) + "."));
+    }
+    for (const std::string &piece : pieces)
+      std::filesystem::rename(directory + "/.partial/" + piece,
+                              directory + "/" + piece);
+    std::filesystem::rename(directory + "/.partial/" + record,
+                            directory + "/" + record);
+    pvd_records.emplace_back(output->time, record);
+    write_pvd();
   }
 
 
@@ -487,13 +647,31 @@ namespace Contact
 
   // At the step nearest to each of the 'Output/Report times': how many
   // nodes of Gamma_3 stick and slip, and where the slip zone is.
+  // Whether t_n is the step nearest to t: report times are not moved onto
+  // the time grid, and one after 'Time/End time' is met at the last step.
+  template <int dim>
+  bool ContactProblem<dim>::is_nearest_step(const double t) const
+  {
+    return std::abs(time - t) <= 0.5 * time_step * (1 + 1e-12) ||
+           (step_number == n_time_steps && t > time);
+  }
+
+
+  template <int dim>
+  bool ContactProblem<dim>::report_due() const
+  {
+    return std::any_of(pending_report_times.begin(),
+                       pending_report_times.end(),
+                       [this](const double t) { return is_nearest_step(t); });
+  }
+
+
   template <int dim>
   void ContactProblem<dim>::report_contact_state()
   {
     for (auto t = pending_report_times.begin();
          t != pending_report_times.end();)
-      if (std::abs(time - *t) <= 0.5 * time_step * (1 + 1e-12) ||
-          (step_number == n_time_steps && *t > time))
+      if (is_nearest_step(*t))
         {
           const std::vector<ContactNode<dim>> &contact_nodes =
             friction_solver->boundary().nodes;
@@ -622,18 +800,30 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                                    \
-  template void ContactProblem<dim>::claim_output_directory();              \
-  template void ContactProblem<dim>::prepare_output_directory();            \
-  template void ContactProblem<dim>::write_time_series_row(                 \
-    const StepStatistics &);                                                \
-  template void ContactProblem<dim>::write_vtu();                           \
-  template void ContactProblem<dim>::write_pvd() const;                     \
-  template void ContactProblem<dim>::print_progress(const StepStatistics &) \
-    const;                                                                  \
-  template void           ContactProblem<dim>::report_contact_state();      \
-  template void           ContactProblem<dim>::print_summary() const;       \
-  template Tensor<1, dim> ContactProblem<dim>::probe_displacement(          \
+#define INSTANTIATE(dim)                                                       \
+  template void ContactProblem<dim>::claim_output_directory();                 \
+  template void ContactProblem<dim>::prepare_output_directory();               \
+  template void ContactProblem<dim>::write_gamma3_history_rows();              \
+  template void ContactProblem<dim>::write_time_series_row(                    \
+    const StepStatistics &);                                                   \
+  template std::string ContactProblem<dim>::vtu_piece_name(const unsigned int, \
+                                                           const unsigned int) \
+    const;                                                                     \
+  template void ContactProblem<dim>::write_vtu();                              \
+  template void ContactProblem<dim>::cell_average_stress(VtuOutput &) const;   \
+  template void ContactProblem<dim>::add_vtu_fields(VtuOutput &) const;        \
+  template void ContactProblem<dim>::write_vtu_piece(VtuOutput &,              \
+                                                     const std::string &)      \
+    const;                                                                     \
+  template void ContactProblem<dim>::finish_vtu();                             \
+  template bool ContactProblem<dim>::is_nearest_step(const double) const;      \
+  template bool ContactProblem<dim>::report_due() const;                       \
+  template void ContactProblem<dim>::write_pvd() const;                        \
+  template void ContactProblem<dim>::print_progress(const StepStatistics &)    \
+    const;                                                                     \
+  template void           ContactProblem<dim>::report_contact_state();         \
+  template void           ContactProblem<dim>::print_summary() const;          \
+  template Tensor<1, dim> ContactProblem<dim>::probe_displacement(             \
     const unsigned int, const VectorType &) const;
 
   INSTANTIATE(2)

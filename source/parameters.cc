@@ -799,12 +799,21 @@ namespace Contact
       prm.declare_entry("VTU interval",
                         "8",
                         Patterns::Integer(0),
-                        "Write a VTU file every this many steps (and at the "
-                        "initial and final time); 0 writes none.");
+                        "Write a VTU file every this many steps, at the "
+                        "initial and final time and at the step nearest to "
+                        "each of the Report times; 0 writes none.");
       prm.declare_entry("Time series",
                         "true",
                         Patterns::Bool(),
                         "Write time_series.csv, one row per time step.");
+      prm.declare_entry("Gamma3 history",
+                        "true",
+                        Patterns::Bool(),
+                        "Write gamma3_history.csv: for every time step one "
+                        "row per node of Gamma_3 (its position, stick or "
+                        "slip, slip rate, friction traction and bound), the "
+                        "data of a space-time diagram of the slip front "
+                        "(doc/plot_run.py).");
       prm.declare_entry("Report times",
                         "0.3, 1.1",
                         Patterns::List(Patterns::Double(0)),
@@ -856,10 +865,11 @@ namespace Contact
   {
     prm.enter_subsection("Output");
     {
-      directory         = Utilities::trim(prm.get("Output directory"));
-      vtu_interval      = prm.get_integer("VTU interval");
-      write_time_series = prm.get_bool("Time series");
-      report_times      = Utilities::string_to_double(
+      directory            = Utilities::trim(prm.get("Output directory"));
+      vtu_interval         = prm.get_integer("VTU interval");
+      write_time_series    = prm.get_bool("Time series");
+      write_gamma3_history = prm.get_bool("Gamma3 history");
+      report_times         = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Report times")));
       probe_points =
         parse_points(prm.get("Probe points"), dim, "Output/Probe points");

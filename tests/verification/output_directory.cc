@@ -202,7 +202,7 @@ int main()
 
   // Two runs in one directory at once: the first one runs long enough
   // (h = k = 1/128) for the second to start while it holds the lock.
-  fs::remove_all("shared");
+  fs::remove_all("common_output");
   const pid_t first = fork();
   if (first == 0)
     {
@@ -210,16 +210,17 @@ int main()
             "sh",
             "-c",
             (std::string("exec ") + CONTACT_BINARY +
-             " --set 'Output/Output directory=shared' --set "
+             " --set 'Output/Output directory=common_output' --set "
              "'Output/VTU interval=0' " +
              scene + " > /dev/null 2>&1")
               .c_str(),
             nullptr);
       _exit(127);
     }
-  while (!fs::exists("shared/.lock") || fs::file_size("shared/.lock") == 0)
+  while (!fs::exists("common_output/.lock") ||
+         fs::file_size("common_output/.lock") == 0)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  auto              second = run("shared", {});
+  auto              second = run("common_output", {});
   const std::string pid    = std::to_string(first);
   const auto        at     = second.second.find(pid);
   if (at != std::string::npos)
