@@ -13,7 +13,7 @@ is there (Debian: python3-matplotlib, run with /usr/bin/python3).
   paper:        prm/barboteu2015.prm, V-error at T against a Q2 reference
                 at the finest level of each study
 
-Usage: doc/work_precision.py path/to/contact manufactured|paper prm out.png
+Usage: bench/work_precision.py path/to/contact manufactured|paper prm out.png
 """
 import os
 import platform

@@ -1,0 +1,577 @@
+#!/usr/bin/env python3
+"""Pictures of a run of `contact`, from its output directory alone.
+
+    python3 doc/plot_run.py results-barboteu2015
+    python3 doc/plot_run.py results-barboteu2015_3d --field displacement --times 0.5,1
+
+writes into <directory>/figures/ (or --output):
+
+  deformed.png         the deformed body coloured by --field (default
+                       cell_von_mises) at the chosen times, the nodes of
+                       Gamma_3 marked stick (blue) or slip (red); in 3D the
+                       boundary faces of the body seen from above
+  gamma3_profiles.png  along Gamma_3 at the chosen times: the friction
+                       traction against its bound mu(|w_tau|) S, and the slip
+                       rate |w_tau|
+  stick_slip.png       the space-time diagram of the stick/slip state on
+                       Gamma_3 (coordinate against time; in 3D the fraction
+                       of slipping nodes at each coordinate value)
+  energies.png         energies and dissipations, the self-check residuals
+                       and the iteration counts per step
+  convergence.png      for a convergence study (convergence.txt): every
+                       error against h (or k, when only k changes) and
+                       against the wall time of each level
+
+Each figure needs its own file: deformed.png the VTU output (solution.pvd),
+the Gamma_3 figures gamma3_history.csv, energies.png time_series.csv; a
+figure whose file is missing is skipped with a note. The chosen times
+default to the run's Report times (or four evenly spaced times); each is
+moved to the nearest step that has the data.
+
+Needs only numpy and matplotlib (Debian: python3-numpy python3-matplotlib)
+and no display: the VTU files are read here, not by ParaView.
+"""
+import argparse
+import base64
+import os
+import re
+import sys
+import xml.etree.ElementTree as ElementTree
+import zlib
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.collections import PolyCollection  # noqa: E402
+from matplotlib.colors import LinearSegmentedColormap  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+
+STICK, SLIP = 1, 2
+STATE_COLOURS = {STICK: "tab:blue", SLIP: "tab:red"}
+STATE_MAP = LinearSegmentedColormap.from_list(
+    "stick_slip", [STATE_COLOURS[STICK], STATE_COLOURS[SLIP]])
+DPI = 110
+
+
+# @sect3{Reading the VTU output}
+#
+# deal.II writes binary VTU files: each data array is base64 text of a
+# header of unsigned 32-bit integers (number of blocks, block size, size
+# of the last block, compressed size of each block) followed by the
+# zlib-compressed blocks, or without a compressor one integer (the byte
+# count) followed by the raw data. Every cell has its own copy of its
+# vertices, so cell data is constant over a cell's points.
+
+VTK_TYPES = {"Float32": np.float32, "Float64": np.float64,
+             "Int32": np.int32, "Int64": np.int64, "UInt8": np.uint8,
+             "UInt32": np.uint32, "UInt64": np.uint64}
+
+
+def decode_binary(text, dtype, compressed):
+    text = "".join(text.split())
+    if not compressed:
+        raw = base64.b64decode(text)
+        return np.frombuffer(raw[4:], dtype=dtype)
+    n_blocks = int(np.frombuffer(base64.b64decode(text[:8])[:4], np.uint32)[0])
+    header_chars = 4 * -(-(3 + n_blocks) * 4 // 3)
+    header = np.frombuffer(base64.b64decode(text[:header_chars]),
+                           np.uint32)[:3 + n_blocks]
+    data = base64.b64decode(text[header_chars:])
+    blocks, start = [], 0
+    for size in header[3:]:
+        blocks.append(zlib.decompress(data[start:start + size]))
+        start += size
+    return np.frombuffer(b"".join(blocks), dtype=dtype)
+
+
+def read_data_array(element, compressed):
+    dtype = VTK_TYPES[element.get("type")]
+    if element.get("format") == "ascii":
+        values = np.array(element.text.split(), dtype=dtype)
+    else:
+        values = decode_binary(element.text, dtype, compressed)
+    components = int(element.get("NumberOfComponents", "1"))
+    return values.reshape(-1, components) if components > 1 else values
+
+
+def read_vtu(path):
+    """Points, cells (point indices per cell) and point arrays of a piece."""
+    root = ElementTree.parse(path).getroot()
+    compressed = root.get("compressor") is not None
+    piece = root.find("UnstructuredGrid/Piece")
+    points = read_data_array(piece.find("Points/DataArray"), compressed)
+    cell_arrays = {a.get("Name"): read_data_array(a, compressed)
+                   for a in piece.find("Cells")}
+    offsets = cell_arrays["offsets"]
+    vertices_per_cell = offsets[0]
+    cells = cell_arrays["connectivity"].reshape(-1, vertices_per_cell)
+    arrays = {}
+    point_data = piece.find("PointData")
+    if point_data is not None:
+        arrays = {a.get("Name"): read_data_array(a, compressed)
+                  for a in point_data}
+    return points, cells, arrays
+
+
+def read_snapshot(directory, record):
+    """All pieces of one output step (a .pvtu or .vtu file), merged."""
+    path = os.path.join(directory, record)
+    if path.endswith(".pvtu"):
+        root = ElementTree.parse(path).getroot()
+        pieces = [os.path.join(os.path.dirname(path), p.get("Source"))
+                  for p in root.iter("Piece")]
+    else:
+        pieces = [path]
+    all_points, all_cells, all_arrays, offset = [], [], {}, 0
+    for piece in pieces:
+        points, cells, arrays = read_vtu(piece)
+        all_points.append(points)
+        all_cells.append(cells + offset)
+        offset += len(points)
+        for name, values in arrays.items():
+            all_arrays.setdefault(name, []).append(values)
+    return (np.concatenate(all_points), np.concatenate(all_cells),
+            {name: np.concatenate(v) for name, v in all_arrays.items()})
+
+
+def read_pvd(directory):
+    """(time, file) of every output step listed in solution.pvd."""
+    path = os.path.join(directory, "solution.pvd")
+    if not os.path.exists(path):
+        return []
+    root = ElementTree.parse(path).getroot()
+    return [(float(d.get("timestep")), d.get("file"))
+            for d in root.iter("DataSet")]
+
+
+# @sect3{Reading the CSV files and the parameters}
+
+def read_csv(path):
+    """A CSV file with a header line as a dict of numpy columns."""
+    with open(path) as file:
+        names = file.readline().strip().split(",")
+    values = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    return {name: values[:, i] for i, name in enumerate(names)}
+
+
+def read_parameter(directory, name):
+    """The value of `set <name> = ...` in the run's parameters.prm."""
+    path = os.path.join(directory, "parameters.prm")
+    if not os.path.exists(path):
+        return None
+    for line in open(path):
+        match = re.match(r"\s*set\s+" + re.escape(name) + r"\s*=\s*(.*)", line)
+        if match:
+            return match.group(1).split("#")[0].strip()
+    return None
+
+
+def read_org_table(path):
+    rows = [[c.strip() for c in line.strip().strip("|").split("|")]
+            for line in open(path) if line.startswith("|")]
+    header, body = rows[0], rows[1:]
+    return {name: [row[i] for row in body] for i, name in enumerate(header)}
+
+
+def chosen_times(arguments, directory, end_time):
+    if arguments.times:
+        return [float(t) for t in arguments.times.split(",")]
+    report = read_parameter(directory, "Report times")
+    if report:
+        return [float(t) for t in report.split(",")]
+    return list(np.linspace(end_time / 4, end_time, 4))
+
+
+def nearest(available, t):
+    return min(available, key=lambda s: abs(s - t))
+
+
+# @sect3{The deformed body}
+#
+# Cells are drawn without antialiasing and without edges: antialiased
+# polygons leave sub-pixel gaps to their neighbours, and edges drawn over
+# them pile up where cells get thin in the picture; either shows up as a
+# moire pattern or as dark streaks that are not in the data. Each panel
+# gets its own colour scale, so that the early, weakly loaded states are
+# not one flat colour.
+
+def field_values(arrays, field, cells):
+    if field not in arrays:
+        sys.exit(f"plot_run.py: no field '{field}' in the VTU output; "
+                 f"available: {', '.join(sorted(arrays))}")
+    values = arrays[field]
+    if values.ndim > 1:
+        values = np.linalg.norm(values, axis=1)
+    return values[cells].mean(axis=1)
+
+
+def count_nodes(points, arrays, state):
+    """Nodes of Gamma_3 in a state; the VTU repeats a node once per cell."""
+    chosen = arrays["contact_status"] == state
+    return len(np.unique(np.round(points[chosen], 9), axis=0))
+
+
+def draw_deformed_2d(axis, points, cells, arrays, field, limits):
+    deformed = points[:, :2] + arrays["displacement"][:, :2]
+    polygons = PolyCollection(deformed[cells], array=field_values(
+        arrays, field, cells), cmap="viridis", edgecolors="none",
+        linewidths=0, antialiaseds=False)
+    polygons.set_clim(*limits)
+    axis.add_collection(polygons)
+    for state, colour in STATE_COLOURS.items():
+        chosen = arrays["contact_status"] == state
+        axis.plot(*deformed[chosen].T, "s", color=colour, ms=2)
+    axis.autoscale_view()
+    axis.set_aspect("equal")
+    return polygons
+
+
+def boundary_faces(points, cells):
+    """The faces of hexahedra that belong to one cell only (VTK order)."""
+    local_faces = np.array([[0, 1, 2, 3], [4, 5, 6, 7], [0, 1, 5, 4],
+                            [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]])
+    faces = cells[:, local_faces].reshape(-1, 4)
+    keys = np.round(points[faces].mean(axis=1), 9)
+    _, index, counts = np.unique(keys, axis=0, return_index=True,
+                                 return_counts=True)
+    return faces[index[counts == 1]], index[counts == 1] // 6
+
+
+def draw_deformed_3d(axis, points, cells, arrays, field, limits):
+    """The boundary of the body, Gamma_3's faces coloured by their state.
+    The vertical axis of the picture is the coordinate in which Gamma_3
+    extends least (its normal, for a flat Gamma_3), and the view looks at
+    Gamma_3: from below when Gamma_3 is the bottom of the body."""
+    faces, owner = boundary_faces(points, cells)
+    colours = plt.get_cmap("viridis")(
+        (field_values(arrays, field, cells)[owner] - limits[0]) /
+        (limits[1] - limits[0]))
+    status = arrays["contact_status"][faces]
+    on_gamma3 = (status > 0).all(axis=1)
+    slip_fraction = (status[on_gamma3] == SLIP).mean(axis=1)
+    colours[on_gamma3] = STATE_MAP(slip_fraction)
+    nodes = points[arrays["contact_status"] > 0]
+    vertical = int(np.argmin(np.ptp(nodes, axis=0)))
+    order = [c for c in range(3) if c != vertical] + [vertical]
+    deformed = (points + arrays["displacement"])[:, order]
+    elevation, azimuth = np.radians(25), np.radians(-60)
+    eye = np.array([np.cos(elevation) * np.cos(azimuth),
+                    np.cos(elevation) * np.sin(azimuth), np.sin(elevation)])
+    # matplotlib sorts polygons by their mean depth, which draws hidden
+    # faces over visible ones; faces that look away from the eye are left
+    # out, which is exact for a convex body.
+    corners = deformed[faces]
+    normal = np.cross(corners[:, 2] - corners[:, 0],
+                      corners[:, 3] - corners[:, 1])
+    outward = np.sign(np.einsum("ij,ij->i", normal, corners.mean(axis=1) -
+                                deformed[cells[owner]].mean(axis=1)))
+    visible = outward * (normal @ eye) > 0
+    axis.add_collection3d(Poly3DCollection(
+        corners[visible], facecolors=colours[visible], edgecolors="none",
+        linewidths=0, antialiaseds=False))
+    low, high = deformed.min(axis=0), deformed.max(axis=0)
+    for set_limits, l, h in zip((axis.set_xlim, axis.set_ylim, axis.set_zlim),
+                                low, high):
+        set_limits(l, h)
+    axis.set_box_aspect(high - low)
+    axis.view_init(elev=np.degrees(elevation), azim=np.degrees(azimuth))
+    for set_label, c in zip((axis.set_xlabel, axis.set_ylabel,
+                             axis.set_zlabel), order):
+        set_label("xyz"[c])
+
+
+def plot_deformed(directory, times, field, output):
+    records = read_pvd(directory)
+    if not records:
+        return "no solution.pvd (VTU interval = 0?)"
+    steps = []
+    for t in times:
+        record = min(records, key=lambda r: abs(r[0] - t))
+        if record not in steps:
+            steps.append(record)
+    snapshots = [(t, *read_snapshot(directory, f)) for t, f in steps]
+    dim = 3 if snapshots[0][2].shape[1] == 8 else 2
+    # Panels side by side unless the body is much wider than high.
+    extent = np.ptp(snapshots[0][1], axis=0)
+    aspect = extent[0] / max(extent[1], 1e-30) if dim == 2 else 1.5
+    columns = min(len(snapshots), 1 if aspect > 3 else 2)
+    width = 11.0 / columns
+    rows = -(-len(snapshots) // columns)
+    figure = plt.figure(
+        figsize=(11.0, rows * (min(width / aspect, 5.0) + 0.8) + 0.4),
+        constrained_layout=True)
+    for i, (t, points, cells, arrays) in enumerate(snapshots):
+        values = field_values(arrays, field, cells)
+        limits = (values.min(), max(values.max(), values.min() + 1e-30))
+        if dim == 2:
+            axis = figure.add_subplot(rows, columns, i + 1)
+            draw_deformed_2d(axis, points, cells, arrays, field, limits)
+        else:
+            axis = figure.add_subplot(rows, columns, i + 1, projection="3d")
+            draw_deformed_3d(axis, points, cells, arrays, field, limits)
+        axis.set_title(f"t = {t:.4g}: {count_nodes(points, arrays, STICK)} "
+                       f"stick, {count_nodes(points, arrays, SLIP)} slip")
+        figure.colorbar(plt.cm.ScalarMappable(
+            norm=plt.Normalize(*limits), cmap="viridis"),
+            ax=axis, label=field, shrink=0.8, pad=0.15)
+    figure.suptitle(f"deformed body coloured by {field}; Γ3: stick blue, "
+                    "slip red" + (" (faces by the fraction of their nodes; "
+                                  "a map of Γ3 in gamma3_profiles.png)"
+                                  if dim == 3 else ""))
+    figure.savefig(os.path.join(output, "deformed.png"), dpi=DPI)
+    plt.close(figure)
+
+
+# @sect3{Gamma_3: profiles and the space-time diagram}
+
+def gamma3_coordinate(history, name):
+    """The coordinate along which Gamma_3 is drawn: the one named, or the
+    one in which Gamma_3's nodes extend furthest."""
+    coordinates = [c for c in ("x", "y", "z") if c in history]
+    if name:
+        if name not in coordinates:
+            sys.exit(f"plot_run.py: --coordinate must be one of "
+                     f"{', '.join(coordinates)}")
+        return name
+    return max(coordinates, key=lambda c: np.ptp(history[c]))
+
+
+def history_at(history, t):
+    times = np.unique(history["time"])
+    t_n = nearest(times, t)
+    chosen = history["time"] == t_n
+    return t_n, {name: values[chosen] for name, values in history.items()}
+
+
+def plot_gamma3_map(axis, nodes, coordinate):
+    """In 3D: Gamma_3's nodes in its plane (the coordinate along which the
+    profiles run and the other one in which Gamma_3 extends furthest)."""
+    others = [c for c in ("x", "y", "z") if c != coordinate]
+    across = max(others, key=lambda c: np.ptp(nodes[c]))
+    axis.scatter(nodes[coordinate], nodes[across], s=6, marker="s",
+                 c=nodes["state"] == SLIP, cmap=STATE_MAP, vmin=0, vmax=1)
+    axis.set_ylabel(f"{across} on Γ3")
+    axis.set_aspect("equal", adjustable="box")
+
+
+def plot_gamma3_profiles(history, times, coordinate, output):
+    traction_columns = [c for c in history if c.startswith(
+        "friction_traction_t")]
+    columns = len(times)
+    rows = 3 if len(traction_columns) > 1 else 2
+    figure, axes = plt.subplots(rows, columns,
+                                figsize=(3.6 * columns + 0.5, 2.9 * rows),
+                                sharex=True, sharey="row", squeeze=False,
+                                constrained_layout=True)
+    for column, t in enumerate(times):
+        t_n, nodes = history_at(history, t)
+        order = np.argsort(nodes[coordinate], kind="stable")
+        s = nodes[coordinate][order]
+        bound = nodes["friction_bound"][order]
+        state = nodes["state"][order]
+        if len(traction_columns) == 1:
+            traction = nodes[traction_columns[0]][order]
+            label = "friction traction t_1"
+            axes[0, column].plot(s, -bound, "k-", lw=1)
+            axes[0, column].plot(s, bound, "k-", lw=1,
+                                 label="bound μ(|w_τ|) S")
+        else:
+            # In 3D several nodes share a coordinate value: points, not
+            # lines, for the traction's length and for the bound.
+            traction = np.linalg.norm(
+                [nodes[c][order] for c in traction_columns], axis=0)
+            label = "|friction traction|"
+            axes[0, column].plot(s, bound, "k_", ms=4,
+                                 label="bound μ(|w_τ|) S")
+        for value, colour in STATE_COLOURS.items():
+            chosen = state == value
+            axes[0, column].plot(s[chosen], traction[chosen], ".", ms=3,
+                                 color=colour,
+                                 label="stick" if value == STICK else "slip")
+            axes[1, column].plot(s[chosen], nodes["slip_rate"][order][chosen],
+                                 ".", ms=3, color=colour)
+        axes[0, column].set_title(f"t = {t_n:.4g}")
+        if rows == 3:
+            plot_gamma3_map(axes[2, column], nodes, coordinate)
+        axes[-1, column].set_xlabel(f"{coordinate} on Γ3")
+    axes[0, 0].set_ylabel(label)
+    axes[1, 0].set_ylabel("slip rate |w_τ|")
+    axes[0, 0].legend(fontsize=7)
+    figure.savefig(os.path.join(output, "gamma3_profiles.png"), dpi=DPI)
+    plt.close(figure)
+
+
+def plot_stick_slip(history, coordinate, output):
+    """Slip fraction in cells of (coordinate value, step): in 2D every cell
+    holds one node, in 3D all nodes of Gamma_3 with that coordinate."""
+    positions = np.round(history[coordinate], 9)
+    values = np.unique(positions)
+    if len(values) > 400:
+        values = np.linspace(values.min(), values.max(), 201)
+        column = np.clip(np.searchsorted(values, positions) - 1, 0, 199)
+        edges_s = values
+    else:
+        column = np.searchsorted(values, positions)
+        middles = (values[1:] + values[:-1]) / 2
+        edges_s = np.concatenate(([values[0] - (middles[0] - values[0])
+                                   if len(values) > 1 else values[0] - 0.5],
+                                  middles,
+                                  [values[-1] + (values[-1] - middles[-1])
+                                   if len(values) > 1 else values[0] + 0.5]))
+    steps = history["step"].astype(int)
+    step_values, row = np.unique(steps, return_inverse=True)
+    step_times = np.array([history["time"][steps == s][0]
+                           for s in step_values])
+    slipping = np.zeros((len(step_values), len(edges_s) - 1))
+    counts = np.zeros_like(slipping)
+    np.add.at(slipping, (row, column), history["state"] == SLIP)
+    np.add.at(counts, (row, column), 1)
+    fraction = np.divide(slipping, counts, out=np.full_like(slipping, np.nan),
+                         where=counts > 0)
+    middles_t = (step_times[1:] + step_times[:-1]) / 2
+    edges_t = np.concatenate(([step_times[0]], middles_t, [step_times[-1]]))
+    figure, axis = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
+    mesh = axis.pcolormesh(edges_s, edges_t, fraction, shading="flat",
+                           cmap=STATE_MAP, vmin=0, vmax=1, rasterized=True)
+    axis.set_xlabel(f"{coordinate} on Γ3")
+    axis.set_ylabel("t")
+    axis.set_title("stick (blue) and slip (red) on Γ3")
+    if "z" in history:
+        figure.colorbar(mesh, ax=axis, label="fraction of nodes slipping")
+    figure.savefig(os.path.join(output, "stick_slip.png"), dpi=DPI)
+    plt.close(figure)
+
+
+# @sect3{Energies, self-checks, iterations}
+
+def plot_energies(series, output):
+    t = series["time"]
+    figure, (energies, residuals, iterations) = plt.subplots(
+        1, 3, figsize=(15, 4), constrained_layout=True)
+    for name in ("kinetic_energy", "elastic_energy", "external_work",
+                 "viscous_dissipation", "friction_dissipation",
+                 "numerical_dissipation"):
+        energies.plot(t, series[name], label=name.replace("_", " "))
+    energies.set_xlabel("t")
+    energies.set_ylabel("energy [J]")
+    energies.legend(fontsize=7)
+    for name in ("algebraic_energy_residual", "quadrature_energy_residual",
+                 "friction_law_residual"):
+        # Exact zeros (no slip yet, nothing to violate) are left out.
+        values = np.abs(series[name][1:])
+        residuals.semilogy(t[1:], np.where(values > 0, values, np.nan),
+                           label=name.replace("_", " "))
+    residuals.set_xlabel("t")
+    residuals.set_ylabel("|residual|")
+    residuals.set_title("self-checks (round-off when the solve is right)")
+    residuals.legend(fontsize=7)
+    for name in ("convexification_iterations", "active_set_iterations",
+                 "n_stick", "n_slip"):
+        iterations.plot(t[1:], series[name][1:], label=name.replace("_", " "))
+    iterations.set_xlabel("t")
+    iterations.legend(fontsize=7)
+    figure.savefig(os.path.join(output, "energies.png"), dpi=DPI)
+    plt.close(figure)
+
+
+# @sect3{A convergence study}
+
+def plot_convergence(path, output):
+    table = read_org_table(path)
+    h = np.array(table["h"], dtype=float)
+    k = np.array(table["k"], dtype=float)
+    step, step_name = (h, "h") if np.ptp(h) > 0 else (k, "k")
+    with_time = "wall time [s]" in table
+    figure, axes = plt.subplots(1, 2 if with_time else 1, squeeze=False,
+                                figsize=(11 if with_time else 5.5, 4.2),
+                                constrained_layout=True)
+    errors = {column: np.array(values, dtype=float)
+              for column, values in table.items()
+              if ("error" in column or "difference" in column) and
+              "rate" not in column and "relative" not in column}
+    for column, error in errors.items():
+        axes[0, 0].loglog(step, error, "o-", label=column)
+        if with_time:
+            axes[0, 1].loglog(np.array(table["wall time [s]"], dtype=float),
+                              error, "o-", label=column)
+    # Reference slopes through the first error's value on the finest level:
+    # 2/3 is the rate the corner singularity of the paper's scene allows.
+    # Each line ends where it leaves the range of the errors.
+    anchor = next(iter(errors.values()))[-1] if errors else 1.0
+    top = 2 * max((e.max() for e in errors.values()), default=1.0)
+    for slope, style in ((2 / 3, "k-."), (1, "k--"), (2, "k:")):
+        end = min(step.max(), step.min() * (top / anchor) ** (1 / slope))
+        axes[0, 0].loglog([step.min(), end],
+                          [anchor, anchor * (end / step.min()) ** slope],
+                          style, lw=0.8, label=f"slope {slope:.2g}")
+    axes[0, 0].set_xlabel(step_name)
+    axes[0, 0].set_ylabel("error")
+    axes[0, 0].legend(fontsize=7)
+    if with_time:
+        axes[0, 1].set_xlabel("wall time of the level [s]")
+        axes[0, 1].legend(fontsize=7)
+    figure.savefig(os.path.join(output, "convergence.png"), dpi=DPI)
+    plt.close(figure)
+
+
+def main():
+    parser = argparse.ArgumentParser(
+        description=__doc__.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("directory", help="the run's Output directory")
+    parser.add_argument("--field", default="cell_von_mises",
+                        help="VTU field that colours the deformed body "
+                        "(vectors by their length)")
+    parser.add_argument("--times", help="comma-separated times "
+                        "(default: the run's Report times)")
+    parser.add_argument("--coordinate", choices=("x", "y", "z"),
+                        help="coordinate along Gamma_3 (default: the one "
+                        "in which Gamma_3 extends furthest)")
+    parser.add_argument("--output", help="directory for the PNG files "
+                        "(default: <directory>/figures)")
+    arguments = parser.parse_args()
+    directory = arguments.directory
+    if not os.path.isdir(directory):
+        sys.exit(f"plot_run.py: no directory '{directory}'")
+    output = arguments.output or os.path.join(directory, "figures")
+    os.makedirs(output, exist_ok=True)
+
+    written, skipped = [], []
+    series_path = os.path.join(directory, "time_series.csv")
+    series = read_csv(series_path) if os.path.exists(series_path) else None
+    end_time = series["time"][-1] if series is not None else 1.0
+    times = chosen_times(arguments, directory, end_time)
+
+    reason = plot_deformed(directory, times, arguments.field, output)
+    (skipped if reason else written).append(("deformed.png", reason))
+    history_path = os.path.join(directory, "gamma3_history.csv")
+    if os.path.exists(history_path):
+        history = read_csv(history_path)
+        coordinate = gamma3_coordinate(history, arguments.coordinate)
+        plot_gamma3_profiles(history, times, coordinate, output)
+        plot_stick_slip(history, coordinate, output)
+        written += [("gamma3_profiles.png", None), ("stick_slip.png", None)]
+    else:
+        skipped += [(name, "no gamma3_history.csv (Gamma3 history = false?)")
+                    for name in ("gamma3_profiles.png", "stick_slip.png")]
+    if series is not None:
+        plot_energies(series, output)
+        written.append(("energies.png", None))
+    else:
+        skipped.append(("energies.png", "no time_series.csv"))
+    convergence = os.path.join(directory, "convergence.txt")
+    if os.path.exists(convergence):
+        plot_convergence(convergence, output)
+        written.append(("convergence.png", None))
+        skipped = [(name, f"{reason}; each level of the study has its own "
+                    f"directory: {os.path.join(directory, 'level-0')}, ...")
+                   for name, reason in skipped]
+    for name, _ in written:
+        print(f"wrote {os.path.join(output, name)}")
+    for name, reason in skipped:
+        print(f"skipped {name}: {reason}")
+
+
+if __name__ == "__main__":
+    main()
