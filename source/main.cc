@@ -93,7 +93,9 @@ int main(int argc, char *argv[])
   std::signal(SIGXFSZ, SIG_IGN);
   use_one_blas_thread();
   quick_singleton_start();
-  // One thread per process: deal.II's task-based loops are then serial.
+  // One thread per process for deal.II's task-based loops, which are then
+  // serial. (The VTU output's std::async thread is a thread of its own,
+  // outside this limit.)
   // (Two threads in the self-checks' cell loop, the largest loop of a
   // step, left its time on the default scene unchanged, 0.38-0.43 s
   // against 0.42 s, measured.)
