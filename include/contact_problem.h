@@ -216,7 +216,7 @@ namespace Contact
   class ContactProblem
   {
   public:
-    explicit ContactProblem(const Parameters &parameters);
+    explicit ContactProblem(const Parameters &run_parameters);
     ~ContactProblem();
 
     RunSummary run();
@@ -271,25 +271,26 @@ namespace Contact
                          const Vector<double> &)>;
     using NodeVisitor =
       std::function<void(const ContactNode<dim> &, const Tensor<1, dim> &)>;
-    void   assemble_matrices();
-    void   form_system_matrix();
-    void   visit_loads(const double       time,
-                       const bool         with_body_force,
-                       const bool         with_surface_loads,
-                       const CellVisitor &visit_cell,
-                       const NodeVisitor &visit_node) const;
-    void   assemble_load(const double time,
-                         VectorType  &load_vector,
-                         const bool   with_body_force,
-                         const bool   with_surface_loads) const;
-    void   assemble_constant_body_load();
-    double load_power(const double time, const FastVector &w_ghosted) const;
-    void   set_initial_values();
-    void   warn_of_normal_component(const VectorType  &values,
-                                    const std::string &entry) const;
-    void   condensed_product(const MatrixType &matrix,
-                             const VectorType &x,
-                             VectorType       &product) const;
+    void             assemble_matrices();
+    void             form_system_matrix();
+    void             visit_loads(const double       load_time,
+                                 const bool         with_body_force,
+                                 const bool         with_surface_loads,
+                                 const CellVisitor &visit_cell,
+                                 const NodeVisitor &visit_node) const;
+    void             assemble_load(const double load_time,
+                                   VectorType  &load_vector,
+                                   const bool   with_body_force,
+                                   const bool   with_surface_loads) const;
+    void             assemble_constant_body_load();
+    double           load_power(const double      load_time,
+                                const FastVector &w_ghosted) const;
+    void             set_initial_values();
+    void             warn_of_normal_component(const VectorType  &values,
+                                              const std::string &entry) const;
+    void             condensed_product(const MatrixType &matrix,
+                                       const VectorType &x,
+                                       VectorType       &product) const;
     Tensor<1, dim>   momentum() const;
     VelocityProducts velocity_products() const;
     void             update_energy_balance(const VelocityProducts &products);

@@ -88,10 +88,22 @@ namespace Contact
                      const Vector<double>                  &rhs,
                      Vector<double>                        &x) const;
 
+    /** W = D^{-1} is formed only while cond(D) <= 1 / this: eta = W (v_free
+     *  - v) leaves a velocity residual cond(D) times that of a solve. */
+    static constexpr double min_reciprocal_condition = 1e-4;
+    /** A Newton block of at least this many unknowns that differs from the
+     *  last factorised one in at most max_changed_unknowns is solved by
+     *  GMRES preconditioned with that factor, to the relative residual
+     *  gmres_reduction in at most gmres_max_iterations (else factorised). */
+    static constexpr unsigned int min_unknowns_for_gmres = 400;
+    static constexpr unsigned int max_changed_unknowns   = 10;
+    static constexpr unsigned int gmres_max_iterations   = 10;
+    static constexpr double       gmres_reduction        = 1e-4;
+
     unsigned int             n_components = 1;
     LAPACKFullMatrix<double> D;
     /** D^{-1}, empty where D is singular (a tangent that cannot move) or
-     *  cond(D) > 1e4. */
+     *  its condition number is above 1 / min_reciprocal_condition. */
     LAPACKFullMatrix<double> W;
 
     /** The last factorised block of a Newton step and the form and

@@ -18,6 +18,17 @@ namespace Contact
 {
   using namespace dealii;
 
+  /** The Tresca active set method and Newton's method on the full law stop
+   *  at this residual relative to the largest bound max_p g_p(0). */
+  constexpr double friction_residual_tolerance = 1e-12;
+  /** An iterate lowers the energy E on Gamma_3 if E grows by at most this
+   *  much relative to its size: round-off of the sum. */
+  constexpr double energy_round_off = 1e-13;
+  /** While the stick/slip sets still change, Newton's model caps the
+   *  weakening at this fraction of the convexity limit, where the model is
+   *  convex. */
+  constexpr double weakening_cap_fraction = 0.9;
+
   /**
    * The friction coefficient mu(s) of the slip rate s = |w_tau| and the
    * slip threshold mu(s) S of (3.6). For the slip rate weakening law this
@@ -68,7 +79,7 @@ namespace Contact
   class AndersonAcceleration
   {
   public:
-    explicit AndersonAcceleration(const unsigned int depth);
+    explicit AndersonAcceleration(const unsigned int history_depth);
 
     /** Given x and G(x), overwrite x with the next iterate. */
     void next_iterate(Vector<double> &x, const Vector<double> &image);
@@ -260,7 +271,7 @@ namespace Contact
    * previous step's forces and slip velocities, and the first Newton step
    * is taken from their linearisation (the previous step's active set),
    * without a solve to make v consistent with eta. It stops when the sets
-   * repeat and max |F_p| <= 1e-12 max_p g_p(0).
+   * repeat and max |F_p| <= friction_residual_tolerance max_p g_p(0).
    */
   FrictionNewtonResult
   solve_friction_newton(const TrescaVelocity   &velocity,

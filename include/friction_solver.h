@@ -250,14 +250,14 @@ namespace Contact
   public:
     /** Takes the nodes of Gamma_3; every node sticks (slips freely without
      *  friction) and carries no force. */
-    FrictionSolver(const Parameters                &parameters,
-                   const FrictionLaw               &friction_law,
+    FrictionSolver(const Parameters                &run_parameters,
+                   const FrictionLaw               &law,
                    std::vector<ContactNode<dim>>    nodes,
                    const AffineConstraints<double> &constraints,
                    const IndexSet                  &locally_owned_dofs,
                    MPI_Comm                         mpi_communicator,
-                   const ConditionalOStream        &pcout,
-                   TimerOutput                     &computing_timer);
+                   const ConditionalOStream        &console,
+                   TimerOutput                     &timer);
 
     /** K or its factorisation changed (the start, a step cut): the active
      *  set parameters, the path and the convexity limit. */
@@ -348,8 +348,12 @@ namespace Contact
     // A step's friction problem is convex while S (a - b) alpha is below
     // this (largest_weighted_delassus_eigenvalue).
     double convexity_limit = std::numeric_limits<double>::infinity();
-    // The Lanczos steps that estimate it at most (each a product with D).
-    static constexpr unsigned int max_lanczos_steps = 100;
+    // The Lanczos steps that estimate it at most (each a product with D),
+    // and the relative change of the estimate at which they stop (with
+    // CG-AMG, where each product costs solves with K, a rougher one).
+    static constexpr unsigned int max_lanczos_steps           = 100;
+    static constexpr double       lanczos_tolerance           = 1e-8;
+    static constexpr double       lanczos_tolerance_iterative = 1e-3;
     FrictionState                 current;
     // m_p times the sabotaged factor of the bound (the tests' only): the
     // weights with which the solver applies the law.

@@ -62,7 +62,7 @@ namespace Contact
     class Field : public Function<dim>
     {
     public:
-      Field(const ManufacturedSolution &solution, const bool velocity);
+      Field(const ManufacturedSolution &exact, const bool velocity);
       double value(const Point<dim>  &p,
                    const unsigned int component) const override;
 

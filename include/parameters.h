@@ -23,6 +23,10 @@ namespace Contact
 {
   using namespace dealii;
 
+  /** A number as the messages and help texts print it (6 significant
+   *  digits: 1e-12, 0.05, 2000). */
+  std::string number_text(const double value);
+
   struct GeometryParameters
   {
     /** A gmsh .msh file; empty: the box of lower_corner, upper_corner. */
@@ -150,6 +154,15 @@ namespace Contact
     };
     FrictionMethod friction_method = FrictionMethod::convexification;
     unsigned int   max_newton_iterations;
+
+    /** 'Contact solver = auto' takes the Delassus path up to this many
+     *  tangential unknowns of Gamma_3 (its Newton steps are dense, O(n^3)),
+     *  and without CHOLMOD only while Z = K^{-1} C^T takes at most this
+     *  many bytes per process. The help texts state both. */
+    static constexpr unsigned int max_delassus_unknowns = 2000;
+    static constexpr double       max_delassus_bytes    = 1e9;
+    /** The relative residual to which CG-AMG solves with K. */
+    static constexpr double cg_relative_residual = 1e-12;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);

@@ -145,15 +145,15 @@ namespace Contact
   // to `visit_node`: assemble_load() assembles them, load_power() tests
   // them with a velocity.
   template <int dim>
-  void ContactProblem<dim>::visit_loads(const double       time,
+  void ContactProblem<dim>::visit_loads(const double       load_time,
                                         const bool         with_body_force,
                                         const bool         with_surface_loads,
                                         const CellVisitor &visit_cell,
                                         const NodeVisitor &visit_node) const
   {
-    body_force->set_time(time);
+    body_force->set_time(load_time);
     for (const auto &traction : tractions)
-      traction.second->set_time(time);
+      traction.second->set_time(load_time);
 
     FEValues<dim>                    fe_values(*mapping,
                             fe,
@@ -192,10 +192,12 @@ namespace Contact
       };
     };
     const auto exact_body_force = [&](const unsigned int q) {
-      return exact_solution->body_force(fe_values.quadrature_point(q), time);
+      return exact_solution->body_force(fe_values.quadrature_point(q),
+                                        load_time);
     };
     const auto exact_traction = [&](const unsigned int q) {
-      return exact_solution->stress(fe_face_values.quadrature_point(q), time) *
+      return exact_solution->stress(fe_face_values.quadrature_point(q),
+                                    load_time) *
              fe_face_values.normal_vector(q);
     };
     const auto is_free_side = [&](const types::boundary_id id) {
@@ -251,7 +253,7 @@ namespace Contact
         visit_node(node,
                    node.weight * exact_solution->contact_load(node.location,
                                                               node.normal,
-                                                              time));
+                                                              load_time));
   }
 
 
@@ -259,7 +261,7 @@ namespace Contact
 
   // The load vector, condensed with the constraints like the matrices.
   template <int dim>
-  void ContactProblem<dim>::assemble_load(const double time,
+  void ContactProblem<dim>::assemble_load(const double load_time,
                                           VectorType  &load_vector,
                                           const bool   with_body_force,
                                           const bool   with_surface_loads) const
@@ -268,7 +270,7 @@ namespace Contact
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     load_vector = 0;
     visit_loads(
-      time,
+      load_time,
       with_body_force,
       with_surface_loads,
       [&](const auto &cell, const Vector<double> &cell_rhs) {
@@ -320,7 +322,7 @@ namespace Contact
   // force constant in time is integrated once (constant_body_power holds
   // its cell vectors).
   template <int dim>
-  double ContactProblem<dim>::load_power(const double      time,
+  double ContactProblem<dim>::load_power(const double      load_time,
                                          const FastVector &w_ghosted) const
   {
     Vector<double> w_cell(fe.n_dofs_per_cell());
@@ -330,7 +332,7 @@ namespace Contact
       cell->get_dof_values(w_ghosted, w_cell);
       power += cell_rhs * w_cell;
     };
-    visit_loads(time,
+    visit_loads(load_time,
                 !body_force_is_constant,
                 true,
                 visit_cell,

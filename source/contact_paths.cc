@@ -169,10 +169,10 @@ namespace Contact
     class DelassusFromFactor : public DelassusPath<dim>
     {
     public:
-      DelassusFromFactor(const ContactBoundary<dim> &gamma3,
-                         Factorization              &factorization)
-        : gamma3(gamma3)
-        , factorization(factorization)
+      DelassusFromFactor(const ContactBoundary<dim> &boundary,
+                         Factorization              &factorization_of_K)
+        : gamma3(boundary)
+        , factorization(factorization_of_K)
       {
         const unsigned int n_columns = gamma3.n_unknowns();
         const unsigned int block     = 64;
@@ -282,10 +282,10 @@ namespace Contact
     class DelassusFromSolves : public DelassusPath<dim>
     {
     public:
-      DelassusFromSolves(const ContactBoundary<dim> &gamma3,
-                         Factorization              &factorization)
-        : gamma3(gamma3)
-        , factorization(factorization)
+      DelassusFromSolves(const ContactBoundary<dim> &boundary,
+                         Factorization              &factorization_of_K)
+        : gamma3(boundary)
+        , factorization(factorization_of_K)
       {
         const unsigned int n_columns = gamma3.n_unknowns();
         Z.reinit(gamma3.locally_owned_dofs.n_elements(), n_columns);
@@ -424,12 +424,12 @@ namespace Contact
     class ActiveSetAsConstraints : public ContactPath<dim>
     {
     public:
-      ActiveSetAsConstraints(const ContactBoundary<dim> &gamma3,
-                             const MatrixType           &system_matrix,
-                             Factorization              &factorization)
-        : gamma3(gamma3)
-        , system_matrix(system_matrix)
-        , factorization(factorization)
+      ActiveSetAsConstraints(const ContactBoundary<dim> &boundary,
+                             const MatrixType           &matrix_K,
+                             Factorization              &factorization_of_K)
+        : gamma3(boundary)
+        , system_matrix(matrix_K)
+        , factorization(factorization_of_K)
       {}
 
       void begin_step(const VectorType &step_rhs,

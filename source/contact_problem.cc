@@ -88,8 +88,8 @@ namespace Contact
   // @sect4{ContactProblem::ContactProblem}
 
   template <int dim>
-  ContactProblem<dim>::ContactProblem(const Parameters &parameters)
-    : parameters(parameters)
+  ContactProblem<dim>::ContactProblem(const Parameters &run_parameters)
+    : parameters(run_parameters)
     , friction_law(parameters.friction)
     , n_time_steps(parameters.time.n_steps())
     , time_step(parameters.time.end_time / n_time_steps)

@@ -56,8 +56,8 @@ namespace Contact
 
 
   DelassusOperator::DelassusOperator(const FullMatrix<double> &matrix,
-                                     const unsigned int        n_components)
-    : n_components(n_components)
+                                     const unsigned int        components)
+    : n_components(components)
   {
     AssertDimension(matrix.m() % n_components, 0);
     for (unsigned int r = 0; r < matrix.m(); ++r)
@@ -85,7 +85,8 @@ namespace Contact
     try
       {
         cholesky.compute_cholesky_factorization();
-        if (cholesky.reciprocal_condition_number(norm) < 1e-4)
+        if (cholesky.reciprocal_condition_number(norm) <
+            min_reciprocal_condition)
           return;
         W = D;
         W.set_property(LAPACKSupport::symmetric);
@@ -246,14 +247,14 @@ namespace Contact
     class RotatedBlock
     {
     public:
-      RotatedBlock(const LAPACKFullMatrix<double>        &M,
-                   const std::vector<FullMatrix<double>> &Q,
-                   const std::vector<unsigned int>       &unknowns,
-                   const Vector<double>                  &shift)
-        : M(M)
-        , Q(Q)
-        , unknowns(unknowns)
-        , shift(shift)
+      RotatedBlock(const LAPACKFullMatrix<double>        &matrix,
+                   const std::vector<FullMatrix<double>> &node_rotations,
+                   const std::vector<unsigned int>       &block_unknowns,
+                   const Vector<double>                  &diagonal_shift)
+        : M(matrix)
+        , Q(node_rotations)
+        , unknowns(block_unknowns)
+        , shift(diagonal_shift)
       {}
 
       void vmult(Vector<double> &y, const Vector<double> &x) const
@@ -281,13 +282,13 @@ namespace Contact
     class FactorPreconditioner
     {
     public:
-      FactorPreconditioner(const LAPACKFullMatrix<double>  &factor,
+      FactorPreconditioner(const LAPACKFullMatrix<double>  &last_factor,
                            const std::vector<unsigned int> &factor_unknowns,
                            const std::vector<unsigned int> &unknowns,
-                           const Vector<double>            &diagonal)
-        : factor(factor)
+                           const Vector<double>            &block_diagonal)
+        : factor(last_factor)
         , position(factor_unknowns.size(), numbers::invalid_unsigned_int)
-        , diagonal(diagonal)
+        , diagonal(block_diagonal)
       {
         for (unsigned int a = 0, b = 0; a < unknowns.size(); ++a)
           {
@@ -350,9 +351,9 @@ namespace Contact
       return;
     const LAPACKFullMatrix<double> &M    = (velocity_form ? W : D);
     FactorisedBlock                &last = last_factorised_block;
-    if (unknowns.size() >= 400 && last.factor &&
+    if (unknowns.size() >= min_unknowns_for_gmres && last.factor &&
         last.velocity_form == velocity_form &&
-        n_differences(last.unknowns, unknowns) <= 10)
+        n_differences(last.unknowns, unknowns) <= max_changed_unknowns)
       {
         // The block's diagonal, for the unknowns the factor does not have
         // (|.| where the weakening makes it negative).
@@ -369,8 +370,12 @@ namespace Contact
             if (diagonal[a] == 0.)
               diagonal[a] = 1.;
           }
-        Vector<double>   solution(x);
-        ReductionControl control(10, 1e-14 * rhs.l2_norm(), 1e-4, false, false);
+        Vector<double>              solution(x);
+        ReductionControl            control(gmres_max_iterations,
+                                 1e-14 * rhs.l2_norm(),
+                                 gmres_reduction,
+                                 false,
+                                 false);
         SolverGMRES<Vector<double>> gmres(
           control, SolverGMRES<Vector<double>>::AdditionalData(12, true));
         try
@@ -575,14 +580,15 @@ namespace Contact
                             std::vector<NodeState> &state)
   {
     AssertDimension(D.size(), v_free.size());
-    const auto velocity = [&](const Vector<double> &eta, Vector<double> &v) {
-      D.vmult(v, eta);
-      v.sadd(-1., 1., v_free);
+    const auto velocity = [&](const Vector<double> &force,
+                              Vector<double>       &velocity_out) {
+      D.vmult(velocity_out, force);
+      velocity_out.sadd(-1., 1., v_free);
     };
     const auto step = [&](const std::vector<NodeLinearisation> &linearisation,
-                          Vector<double>                       &eta,
-                          Vector<double>                       &v) {
-      D.newton_step(linearisation, v_free, eta, v);
+                          Vector<double>                       &force,
+                          Vector<double>                       &velocity_out) {
+      D.newton_step(linearisation, v_free, force, velocity_out);
     };
     return solve_tresca(
       velocity, step, D.size() / g.size(), g, c, max_iterations, eta, v, state);

@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <factorization.h>
+#include <parameters.h>
 #include <suitesparse/cholmod.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -44,12 +45,13 @@ namespace Contact
     class AmesosFactorization : public Factorization
     {
     public:
-      AmesosFactorization(const std::string                    &name,
+      AmesosFactorization(const std::string                    &solver_name,
                           const TrilinosWrappers::SparseMatrix &K)
-        : name(name)
+        : name(solver_name)
         , control(1, 0)
         , solver(control,
-                 TrilinosWrappers::SolverDirect::AdditionalData(false, name))
+                 TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                                solver_name))
       {
         solver.initialize(K);
       }
@@ -121,7 +123,8 @@ namespace Contact
             x = 0.;
             return;
           }
-        SolverControl                           control(10000, 1e-12 * norm);
+        SolverControl                           control(10000,
+                              SolverParameters::cg_relative_residual * norm);
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
         try
           {
@@ -132,8 +135,9 @@ namespace Contact
             AssertThrow(false,
                         ExcMessage(
                           "CG with AMG ('Solver/Linear solver = CG-AMG') "
-                          "did not reach the relative residual 1e-12 in " +
-                          std::to_string(failure.last_step) +
+                          "did not reach the relative residual " +
+                          number_text(SolverParameters::cg_relative_residual) +
+                          " in " + std::to_string(failure.last_step) +
                           " iterations (residual " +
                           std::to_string(failure.last_residual / norm) +
                           "); a direct solver (auto) avoids the question."));

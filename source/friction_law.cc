@@ -77,8 +77,8 @@ namespace Contact
 
   // @sect3{Anderson acceleration}
 
-  AndersonAcceleration::AndersonAcceleration(const unsigned int depth)
-    : depth(depth)
+  AndersonAcceleration::AndersonAcceleration(const unsigned int history_depth)
+    : depth(history_depth)
     , accelerated(false)
   {}
 
@@ -139,8 +139,11 @@ namespace Contact
         accelerated = false;
         return;
       }
+    // Tikhonov regularisation of the least-squares problem: consecutive
+    // residual differences can be nearly dependent.
+    constexpr double regularisation = 1e-10;
     for (unsigned int i = 0; i < m; ++i)
-      normal(i, i) += 1e-10 * trace;
+      normal(i, i) += regularisation * trace;
     normal.set_property(LAPACKSupport::symmetric);
     normal.compute_cholesky_factorization();
     normal.solve(gamma);
@@ -273,7 +276,8 @@ namespace Contact
     Vector<double>                c = c_initial;
     std::vector<std::vector<int>> history;
     const double                  tolerance =
-      1e-12 * std::max(g.linfty_norm(), std::numeric_limits<double>::min());
+      friction_residual_tolerance *
+      std::max(g.linfty_norm(), std::numeric_limits<double>::min());
 
     velocity(eta, v);
     auto linearisation = linearise(m, eta, v, g, c);
@@ -423,7 +427,7 @@ namespace Contact
       const auto full_eta(new_eta), full_v(new_v);
       const auto lowered = [&]() {
         new_energy = law.energy(v_free, new_eta, new_v, scale);
-        return new_energy <= energy + 1e-13 * scale;
+        return new_energy <= energy + energy_round_off * scale;
       };
       if (lowered())
         return 1.;
@@ -460,7 +464,7 @@ namespace Contact
     double               largest_bound = std::numeric_limits<double>::min();
     for (unsigned int p = 0; p < n; ++p)
       largest_bound = std::max(largest_bound, law.bound(p, 0.));
-    const double tolerance = 1e-12 * largest_bound;
+    const double tolerance = friction_residual_tolerance * largest_bound;
     const bool   has_cap   = std::isfinite(law.weakening_cap);
     bool         capped    = has_cap;
 

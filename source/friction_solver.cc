@@ -24,18 +24,18 @@ namespace Contact
   // Gamma_3 only carries the normal constraint: every node slips freely).
   template <int dim>
   FrictionSolver<dim>::FrictionSolver(
-    const Parameters                &parameters,
-    const FrictionLaw               &friction_law,
+    const Parameters                &run_parameters,
+    const FrictionLaw               &law,
     std::vector<ContactNode<dim>>    nodes,
     const AffineConstraints<double> &constraints,
     const IndexSet                  &locally_owned_dofs,
     MPI_Comm                         mpi_communicator,
-    const ConditionalOStream        &pcout,
-    TimerOutput                     &computing_timer)
-    : parameters(parameters)
-    , friction_law(friction_law)
-    , pcout(pcout)
-    , computing_timer(computing_timer)
+    const ConditionalOStream        &console,
+    TimerOutput                     &timer)
+    : parameters(run_parameters)
+    , friction_law(law)
+    , pcout(console)
+    , computing_timer(timer)
     , gamma3{std::move(nodes),
              constraints,
              locally_owned_dofs,
@@ -101,22 +101,25 @@ namespace Contact
 
     // The Lanczos method applies D: dense products on the Delassus path,
     // solves with K otherwise. With CG-AMG it stops when the estimate
-    // changes by less than 1e-3, which is all the Newton method's cap
-    // needs; its Ritz values are below lambda_max, so the printed limit is
-    // then an upper bound (1.03e3 on the coarse 3D test scene, as with 1e-8).
+    // changes by less than lanczos_tolerance_iterative, which is all the
+    // Newton method's cap needs; its Ritz values are below lambda_max, so
+    // the printed limit is then an upper bound (1.03e3 on the coarse 3D test
+    // scene, as with lanczos_tolerance).
     if (!friction_law.is_rate_independent() &&
         !friction_law.is_frictionless() && !gamma3.nodes.empty())
       {
         const bool rough = parameters.solver.iterative_linear_solver;
         const auto [eigenvalue, converged] =
-          largest_weighted_delassus_eigenvalue(rough ? 1e-3 : 1e-8);
+          largest_weighted_delassus_eigenvalue(
+            rough ? lanczos_tolerance_iterative : lanczos_tolerance);
         convexity_limit = 1. / eigenvalue;
         pcout << "Gamma_3: the friction problem of a step is convex while "
               << "S (a - b) alpha < " << std::setprecision(3) << convexity_limit
               << (!converged ? " (or less: the Lanczos method did not converge "
                                "in its steps)" :
-                  rough      ? " (or a little less: estimated to 1e-3)" :
-                               "")
+                  rough      ? " (or a little less: estimated to " +
+                            number_text(lanczos_tolerance_iterative) + ")" :
+                          "")
               << "; here S (a - b) alpha = "
               << parameters.friction.bound_S *
                    friction_law.one_sided_lipschitz_constant()
@@ -242,7 +245,7 @@ namespace Contact
     const Factorization &factorization) const
   {
     const double n_columns = gamma3.n_unknowns();
-    if (n_columns > 2000)
+    if (n_columns > SolverParameters::max_delassus_unknowns)
       return false;
     if (factorization.has_triangular_factor())
       return true;
@@ -251,7 +254,8 @@ namespace Contact
                             gamma3.locally_owned_dofs.n_elements()),
                           gamma3.mpi_communicator);
     return !parameters.solver.iterative_linear_solver &&
-           largest_part * n_columns * sizeof(double) <= 1e9;
+           largest_part * n_columns * sizeof(double) <=
+             SolverParameters::max_delassus_bytes;
   }
 
 
@@ -318,7 +322,9 @@ namespace Contact
       velocity_of_force,
       newton_step,
       dim - 1,
-      NodalLaw{friction_law, solver_weights, 0.9 * convexity_limit},
+      NodalLaw{friction_law,
+               solver_weights,
+               weakening_cap_fraction * convexity_limit},
       [this]() -> const Vector<double>           &{ return path->free_slip_velocity(); },
       active_set_parameter,
       parameters.solver.max_newton_iterations,
@@ -430,9 +436,10 @@ namespace Contact
             std::to_string(solver.active_set_parameter) + ")."));
 
         const double energy_now = energy_on_gamma3();
-        if (!all_processes(!(anderson.last_step_was_accelerated() &&
-                             energy_now > accepted_energy +
-                                            1e-13 * std::abs(accepted_energy))))
+        if (!all_processes(
+              !(anderson.last_step_was_accelerated() &&
+                energy_now > accepted_energy +
+                               energy_round_off * std::abs(accepted_energy))))
           {
             // Safeguard: back to the plain step from the accepted iterate.
             ++statistics.rejected_accelerations;

@@ -132,10 +132,10 @@ namespace Contact
   }
 
   template <int dim>
-  ManufacturedSolution<dim>::Field::Field(const ManufacturedSolution &solution,
+  ManufacturedSolution<dim>::Field::Field(const ManufacturedSolution &exact,
                                           const bool                  velocity)
     : Function<dim>(dim)
-    , solution(solution)
+    , solution(exact)
     , is_velocity(velocity)
   {}
 

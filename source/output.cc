@@ -68,9 +68,9 @@ namespace Contact
           close(fd);
           return "Cannot write '" + name + "': " + std::strerror(errno);
         }
-      lock = std::shared_ptr<const int>(new int(fd), [](const int *fd) {
-        close(*fd);
-        delete fd;
+      lock = std::shared_ptr<const int>(new int(fd), [](const int *owned) {
+        close(*owned);
+        delete owned;
       });
       return "";
     }

@@ -18,6 +18,14 @@
 
 namespace Contact
 {
+  std::string number_text(const double value)
+  {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+  }
+
+
   namespace
   {
     // The one place where a user error about a single entry is raised: it
@@ -28,10 +36,8 @@ namespace Contact
                      const double       value,
                      const std::string &allowed)
     {
-      std::ostringstream value_text;
-      value_text << value;
       AssertThrow(condition,
-                  ExcMessage("Invalid value " + value_text.str() +
+                  ExcMessage("Invalid value " + number_text(value) +
                              " for the entry '" + entry + "': allowed is " +
                              allowed + "."));
     }
@@ -617,8 +623,9 @@ namespace Contact
         "Amesos solver (Amesos_Mumps: MUMPS, distributed over the processes) "
         "factorise K once per run; CG-AMG: conjugate gradients with Trilinos "
         "ML's algebraic multigrid (built once per run), for meshes whose "
-        "factor does not fit, relative residual 1e-12. auto: CHOLMOD on one "
-        "process, Amesos_Mumps on more.");
+        "factor does not fit, relative residual " +
+          number_text(SolverParameters::cg_relative_residual) +
+          ". auto: CHOLMOD on one process, Amesos_Mumps on more.");
       prm.declare_entry(
         "Step cuts",
         "0",
@@ -643,10 +650,13 @@ namespace Contact
         "solve and a product with Z. constraints: the straightforward path; "
         "every Newton step of the active set method solves on the whole "
         "body with the sticking nodes held fixed as constraints, and "
-        "refactorises; no D. auto: Delassus while Gamma_3 has at most 2000 "
-        "tangential unknowns (the dense Newton steps cost O(n^3) in their "
-        "number n) and, without CHOLMOD, the linear solver is direct and Z "
-        "fits in 1 GB per process; constraints otherwise.");
+        "refactorises; no D. auto: Delassus while Gamma_3 has at most " +
+          std::to_string(SolverParameters::max_delassus_unknowns) +
+          " tangential unknowns (the dense Newton steps cost O(n^3) in their "
+          "number n) and, without CHOLMOD, the linear solver is direct and Z "
+          "fits in " +
+          number_text(SolverParameters::max_delassus_bytes / 1e9) +
+          " GB per process; constraints otherwise.");
     }
     prm.leave_subsection();
   }
