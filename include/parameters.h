@@ -27,6 +27,109 @@ namespace Contact
    *  digits: 1e-12, 0.05, 2000). */
   std::string number_text(const double value);
 
+  /**
+   * The entries that code outside parameters.cc names, as
+   * "Subsection/Entry": in error messages, in the overrides of a
+   * convergence study's levels and in the checkpoint's list of entries that
+   * must not change. One definition each, so that renaming an entry is
+   * this line and its declaration; unit/entry_paths checks that every one
+   * of them is declared.
+   */
+  namespace Entry
+  {
+    inline const std::string lower_corner = "Geometry/Lower corner";
+    inline const std::string cell_size    = "Geometry/Cell size";
+    inline const std::string cell_shape   = "Geometry/Cell shape";
+    inline const std::string finite_element_degree =
+      "Geometry/Finite element degree";
+    inline const std::string mesh_file         = "Geometry/Mesh file";
+    inline const std::string mesh_refinements  = "Geometry/Mesh refinements";
+    inline const std::string refinement_points = "Geometry/Refinement points";
+    inline const std::string refinement_radius = "Geometry/Refinement radius";
+    inline const std::string clamped_boundary_ids =
+      "Boundary conditions/Clamped boundary ids";
+    inline const std::string contact_boundary_ids =
+      "Boundary conditions/Contact boundary ids";
+    inline const std::string tractions      = "Boundary conditions/Tractions";
+    inline const std::string density        = "Material/Density";
+    inline const std::string youngs_modulus = "Material/Young's modulus";
+    inline const std::string poisson_ratio  = "Material/Poisson ratio";
+    inline const std::string body_force = "Loads and initial values/Body force";
+    inline const std::string initial_displacement =
+      "Loads and initial values/Initial displacement";
+    inline const std::string initial_velocity =
+      "Loads and initial values/Initial velocity";
+    inline const std::string friction_bound_S = "Friction/Friction bound S";
+    inline const std::string end_time         = "Time/End time";
+    inline const std::string time_step        = "Time/Time step";
+    inline const std::string max_steps        = "Time/Max steps";
+    inline const std::string convexification_tolerance =
+      "Solver/Convexification tolerance";
+    inline const std::string max_convexification_iterations =
+      "Solver/Max convexification iterations";
+    inline const std::string max_active_set_iterations =
+      "Solver/Max active set iterations";
+    inline const std::string active_set_parameter =
+      "Solver/Active set parameter";
+    inline const std::string anderson_depth      = "Solver/Anderson depth";
+    inline const std::string linear_solver       = "Solver/Linear solver";
+    inline const std::string step_cuts           = "Solver/Step cuts";
+    inline const std::string contact_solver      = "Solver/Contact solver";
+    inline const std::string output_directory    = "Output/Output directory";
+    inline const std::string time_series         = "Output/Time series";
+    inline const std::string report_times        = "Output/Report times";
+    inline const std::string probe_points        = "Output/Probe points";
+    inline const std::string checkpoint_interval = "Output/Checkpoint interval";
+    inline const std::string checkpoint_minutes  = "Output/Checkpoint minutes";
+    inline const std::string resume              = "Output/Resume";
+    inline const std::string manufactured_solution =
+      "Verification/Manufactured solution";
+    inline const std::string levels = "Convergence study/Levels";
+
+    /** All of the above, for the test. */
+    inline std::vector<std::string> all()
+    {
+      return {lower_corner,
+              cell_size,
+              cell_shape,
+              finite_element_degree,
+              mesh_file,
+              mesh_refinements,
+              refinement_points,
+              refinement_radius,
+              clamped_boundary_ids,
+              contact_boundary_ids,
+              tractions,
+              density,
+              youngs_modulus,
+              poisson_ratio,
+              body_force,
+              initial_displacement,
+              initial_velocity,
+              friction_bound_S,
+              end_time,
+              time_step,
+              max_steps,
+              convexification_tolerance,
+              max_convexification_iterations,
+              max_active_set_iterations,
+              active_set_parameter,
+              anderson_depth,
+              linear_solver,
+              step_cuts,
+              contact_solver,
+              output_directory,
+              time_series,
+              report_times,
+              probe_points,
+              checkpoint_interval,
+              checkpoint_minutes,
+              resume,
+              manufactured_solution,
+              levels};
+    }
+  } // namespace Entry
+
   struct GeometryParameters
   {
     /** A gmsh .msh file; empty: the box of lower_corner, upper_corner. */

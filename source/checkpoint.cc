@@ -54,11 +54,11 @@ namespace Contact
     // k itself is part of the checkpoint's shape.
     bool may_change_on_resume(const std::string &entry)
     {
-      if (entry == "Output/Probe points" || entry == "Output/Time series")
+      if (entry == Entry::probe_points || entry == Entry::time_series)
         return false;
       return entry.rfind("Output/", 0) == 0 || entry.rfind("Solver/", 0) == 0 ||
-             entry == "Time/End time" || entry == "Time/Time step" ||
-             entry == "Time/Max steps";
+             entry == Entry::end_time || entry == Entry::time_step ||
+             entry == Entry::max_steps;
     }
 
     // 'Section/Entry' -> value for the entries of the .prm (its ShortPRM
@@ -87,7 +87,7 @@ namespace Contact
               std::string value = Utilities::trim(line.substr(equal + 1));
               // The same mesh file however the .prm's path was typed.
               std::error_code unresolved;
-              if (entry == "Geometry/Mesh file" && !value.empty())
+              if (entry == Entry::mesh_file && !value.empty())
                 {
                   const auto path =
                     std::filesystem::weakly_canonical(value, unresolved);
@@ -214,14 +214,20 @@ namespace Contact
       other = " There is one written by several processes ('" + directory +
               "/checkpoint.0', ...): resume it with as many processes.";
     AssertThrow(std::filesystem::exists(checkpoint_name()),
-                ExcMessage("'Output/Resume' (--resume): there is no "
+                ExcMessage("'" + Entry::resume +
+                           "' (--resume): there is no "
                            "checkpoint '" +
                            checkpoint_name() + "' for a run on " +
                            std::to_string(n_processes) + " process(es)." +
                            other +
-                           " Checkpoints are written with 'Output/"
-                           "Checkpoint interval' or 'Output/Checkpoint "
-                           "minutes' into the output directory."));
+                           " Checkpoints are written with "
+                           "'" +
+                           Entry::checkpoint_interval +
+                           "' or "
+                           "'" +
+                           Entry::checkpoint_minutes +
+                           "' into the output "
+                           "directory."));
   }
 
 
@@ -313,7 +319,9 @@ namespace Contact
                 ExcMessage("The checkpoint '" + name +
                            "' belongs to another problem: these entries "
                            "differ from the checkpointed run's, and only "
-                           "'Time/End time', 'Solver/...' and most of "
+                           "'" +
+                           Entry::end_time +
+                           "', 'Solver/...' and most of "
                            "'Output/...' may change on --resume:" +
                            differences));
 
@@ -330,8 +338,8 @@ namespace Contact
                 ExcMessage("The checkpoint is at step " +
                            std::to_string(step_number) +
                            ", beyond the end of this run (" +
-                           std::to_string(n_time_steps) +
-                           " steps): 'Time/End time' is too small."));
+                           std::to_string(n_time_steps) + " steps): '" +
+                           Entry::end_time + "' is too small."));
     pcout << "Resumed from the checkpoint at step " << step_number
           << " (t = " << time << ")." << std::endl;
     cut_output_back_to_checkpoint();

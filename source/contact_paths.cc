@@ -367,7 +367,8 @@ namespace Contact
                       std::to_string(asymmetry / largest) +
                       " of its largest entry): the solves with K are "
                       "not accurate enough for the Delassus path; "
-                      "choose 'Solver/Contact solver = constraints'."));
+                      "choose '" +
+                      Entry::contact_solver + " = constraints'."));
       }
 
       const ContactBoundary<dim> &gamma3;

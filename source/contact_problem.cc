@@ -117,24 +117,23 @@ namespace Contact
     , pending_report_times(parameters.output.report_times)
   {
     AssertThrow(parameters.dimension == dim, ExcInternalError());
-    body_force =
-      parse_vector_function<dim>("Loads and initial values/Body force",
-                                 parameters.loads.body_force,
-                                 true);
-    initial_displacement = parse_vector_function<dim>(
-      "Loads and initial values/Initial displacement",
-      parameters.loads.initial_displacement,
-      false);
+    body_force = parse_vector_function<dim>(Entry::body_force,
+                                            parameters.loads.body_force,
+                                            true);
+    initial_displacement =
+      parse_vector_function<dim>(Entry::initial_displacement,
+                                 parameters.loads.initial_displacement,
+                                 false);
     initial_velocity =
-      parse_vector_function<dim>("Loads and initial values/Initial velocity",
+      parse_vector_function<dim>(Entry::initial_velocity,
                                  parameters.loads.initial_velocity,
                                  false);
     for (const auto &[id, expression] : parameters.boundary.tractions)
-      tractions[id] = parse_vector_function<dim>(
-        "Boundary conditions/Tractions (boundary id " + std::to_string(id) +
-          ")",
-        expression,
-        true);
+      tractions[id] =
+        parse_vector_function<dim>(Entry::tractions + " (boundary id " +
+                                     std::to_string(id) + ")",
+                                   expression,
+                                   true);
     if (parameters.verification.manufactured_solution)
       exact_solution = std::make_unique<ManufacturedSolution<dim>>(parameters);
   }

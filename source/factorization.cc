@@ -134,7 +134,8 @@ namespace Contact
           {
             AssertThrow(false,
                         ExcMessage(
-                          "CG with AMG ('Solver/Linear solver = CG-AMG') "
+                          "CG with AMG ('" + Entry::linear_solver +
+                          " = CG-AMG') "
                           "did not reach the relative residual " +
                           number_text(SolverParameters::cg_relative_residual) +
                           " in " + std::to_string(failure.last_step) +
@@ -249,7 +250,8 @@ namespace Contact
       {
         const Epetra_CrsMatrix &matrix = K.trilinos_matrix();
         AssertThrow(matrix.Comm().NumProc() == 1,
-                    ExcMessage("'Solver/Linear solver = CHOLMOD' runs on one "
+                    ExcMessage("'" + Entry::linear_solver +
+                               " = CHOLMOD' runs on one "
                                "process; choose an Amesos solver for more."));
         const int   n       = matrix.NumMyRows();
         std::size_t n_upper = 0;
@@ -310,9 +312,10 @@ namespace Contact
                                std::to_string(common.status) +
                                "). Its entries overflow or span more than "
                                "the range of double precision if "
-                               "'Material/Young's modulus', 'Material/"
-                               "Density', the viscosities or 'Time/Time "
-                               "step' are extreme (e.g. E = 1e308, k = "
+                               "'" +
+                               Entry::youngs_modulus + "', '" + Entry::density +
+                               "', the viscosities or '" + Entry::time_step +
+                               "' are extreme (e.g. E = 1e308, k = "
                                "1e-300)."));
         // A matrix that is singular in exact arithmetic (a body free to
         // move rigidly) may still factorise in floating point; CHOLMOD's
@@ -326,13 +329,20 @@ namespace Contact
                                "estimate " +
                                rcond_text.str() +
                                "): either the body is not fixed against a "
-                               "rigid motion (clamp a boundary, 'Boundary "
-                               "conditions/Clamped boundary ids', or give it "
-                               "mass, 'Material/Density' > 0), or its terms "
+                               "rigid motion (clamp a boundary, '" +
+                               Entry::clamped_boundary_ids +
+                               "', or give it "
+                               "mass, '" +
+                               Entry::density +
+                               "' > 0), or its terms "
                                "differ by more than 14 orders of magnitude "
-                               "(extreme 'Material/Young's modulus', "
-                               "'Material/Density', viscosities or 'Time/Time "
-                               "step'), or a cell of the mesh is degenerate "
+                               "(extreme '" +
+                               Entry::youngs_modulus +
+                               "', "
+                               "'" +
+                               Entry::density + "', viscosities or '" +
+                               Entry::time_step +
+                               "'), or a cell of the mesh is degenerate "
                                "(zero area)."));
       }
 

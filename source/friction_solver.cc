@@ -424,15 +424,18 @@ namespace Contact
             std::to_string(label.time) + ", convexification iteration " +
             std::to_string(statistics.convexification_iterations) +
             ") within " + std::to_string(solver.max_active_set_iterations) +
-            " iterations ('Solver/Max active set iterations'); its "
+            " iterations ('" + Entry::max_active_set_iterations +
+            "'); its "
             "parameter c was halved " +
             std::to_string(tresca.cycles_cured) +
             " times against cycling. The sets cycle when D = C K^{-1} C^T "
             "is ill-conditioned, e.g. for a nearly incompressible material "
-            "('Material/Poisson ratio' = " +
-            std::to_string(parameters.material.poisson_ratio) +
+            "('" +
+            Entry::poisson_ratio +
+            "' = " + std::to_string(parameters.material.poisson_ratio) +
             "). More iterations help (each halving damps the cycling), as "
-            "may a different 'Solver/Active set parameter' (here " +
+            "may a different '" +
+            Entry::active_set_parameter + "' (here " +
             std::to_string(solver.active_set_parameter) + ")."));
 
         const double energy_now = energy_on_gamma3();
@@ -555,32 +558,34 @@ namespace Contact
     const auto        &solver   = parameters.solver;
     const auto        &friction = parameters.friction;
     std::ostringstream message;
-    message << "The convexification did not converge in step "
-            << label.step_number << " (t = " << label.time << ") within "
-            << solver.max_convexification_iterations
-            << " iterations ('Solver/Max convexification iterations'): the "
-            << "slip rates still change by " << residual
-            << " relative to the velocity (tolerance "
-            << solver.convexification_tolerance
-            << ", 'Solver/Convexification tolerance'); the last iterate has "
-            << std::count(current.node_state.begin(),
-                          current.node_state.end(),
-                          NodeState::stick)
-            << " stick and "
-            << std::count(current.node_state.begin(),
-                          current.node_state.end(),
-                          NodeState::slip)
-            << " slip nodes on Gamma_3. It contracts fast when "
-            << "S (a - b) alpha is small against the stiffness of K on "
-            << "Gamma_3; here S = " << friction.bound_S << ", (a - b) alpha = "
-            << friction_law.one_sided_lipschitz_constant()
-            << ", k = " << label.time_step
-            << " (a step's problem is convex while S (a - b) alpha < "
-            << convexity_limit << ")"
-            << ". More iterations or a larger 'Solver/Anderson depth' help "
-            << "most (doc/stability.md); a smaller 'Time/Time step' (or "
-            << "'Solver/Step cuts') and a smaller 'Friction/Friction bound S' "
-            << "make the step's problem more convex.";
+    message
+      << "The convexification did not converge in step " << label.step_number
+      << " (t = " << label.time << ") within "
+      << solver.max_convexification_iterations
+      << " iterations ('" + Entry::max_convexification_iterations + "'): the "
+      << "slip rates still change by " << residual
+      << " relative to the velocity (tolerance "
+      << solver.convexification_tolerance
+      << ", '" + Entry::convexification_tolerance + "'); the last iterate has "
+      << std::count(current.node_state.begin(),
+                    current.node_state.end(),
+                    NodeState::stick)
+      << " stick and "
+      << std::count(current.node_state.begin(),
+                    current.node_state.end(),
+                    NodeState::slip)
+      << " slip nodes on Gamma_3. It contracts fast when "
+      << "S (a - b) alpha is small against the stiffness of K on "
+      << "Gamma_3; here S = " << friction.bound_S
+      << ", (a - b) alpha = " << friction_law.one_sided_lipschitz_constant()
+      << ", k = " << label.time_step
+      << " (a step's problem is convex while S (a - b) alpha < "
+      << convexity_limit << ")"
+      << ". More iterations or a larger '" + Entry::anderson_depth + "' help "
+      << "most (doc/stability.md); a smaller '" + Entry::time_step + "' (or "
+      << "'" + Entry::step_cuts + "') and a smaller '" +
+           Entry::friction_bound_S + "' "
+      << "make the step's problem more convex.";
     return message.str();
   }
 

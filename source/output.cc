@@ -38,7 +38,8 @@ namespace Contact
       std::filesystem::create_directories(directory, error);
       if (error)
         return "Cannot create the directory '" + directory +
-               "' of the entry 'Output/Output directory': " + error.message();
+               "' of the entry '" + Entry::output_directory +
+               "': " + error.message();
       const std::string name = directory + "/.lock";
       const int         fd   = open(name.c_str(), O_RDWR | O_CREAT, 0644);
       if (fd < 0)
@@ -60,7 +61,8 @@ namespace Contact
                  "' is in use by another run (process " +
                  (pid.empty() ? std::string("unknown") : pid) +
                  "). Wait for it to end, or give this run another "
-                 "'Output/Output directory'.";
+                 "'" +
+                 Entry::output_directory + "'.";
         }
       const std::string pid = std::to_string(getpid()) + "\n";
       if (ftruncate(fd, 0) != 0 || write(fd, pid.data(), pid.size()) < 0)
@@ -693,7 +695,8 @@ namespace Contact
                 << step_number << ", t_n = " << time
                 << (*t - time > 0.5 * time_step * (1 + 1e-12) ?
                       ", the last step: the report time is after "
-                      "'Time/End time'" :
+                      "'" +
+                        Entry::end_time + "'" :
                       "")
                 << "): " << n_stick << " stick, " << n_slip << " slip";
           if (n_slip > 0)

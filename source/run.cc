@@ -74,7 +74,7 @@ namespace Contact
           else if (argument == "--help" || argument == "-h")
             command_line.help = true;
           else if (argument == "--resume")
-            command_line.overrides.emplace_back("Output/Resume", "true");
+            command_line.overrides.emplace_back(Entry::resume, "true");
           else if (argument == "--set" && i + 1 < argc)
             {
               const std::string assignment = argv[++i];
@@ -439,14 +439,14 @@ namespace Contact
       const std::string refinements =
         std::to_string(base.geometry.mesh_refinements +
                        (study.refine == Refine::time ? 0 : level));
-      apply_override(prm, "Geometry/Cell size", h.str());
+      apply_override(prm, Entry::cell_size, h.str());
       if (mesh_file)
-        apply_override(prm, "Geometry/Mesh refinements", refinements);
-      apply_override(prm, "Time/Time step", k.str());
+        apply_override(prm, Entry::mesh_refinements, refinements);
+      apply_override(prm, Entry::time_step, k.str());
       apply_override(prm,
-                     "Output/Output directory",
+                     Entry::output_directory,
                      base.output.directory + "/level-" + std::to_string(level));
-      apply_override(prm, "Convergence study/Levels", "0");
+      apply_override(prm, Entry::levels, "0");
       Parameters parameters;
       parameters.parse_parameters(prm);
       if (!announce)
@@ -513,12 +513,12 @@ namespace Contact
         {
           if (study.reference_degree > 0)
             apply_override(prm,
-                           "Geometry/Finite element degree",
+                           Entry::finite_element_degree,
                            std::to_string(study.reference_degree));
           reference = std::make_unique<ContactProblem<dim>>(
             parameters_of_level(prm, base, L));
           apply_override(prm,
-                         "Geometry/Finite element degree",
+                         Entry::finite_element_degree,
                          std::to_string(base.geometry.fe_degree));
           reference->set_step_observer(collect(L));
           results[L].run = reference->run();

@@ -228,7 +228,8 @@ namespace Contact
          c.friction_law_excess);
     if (c.friction_law >= self_check_tolerance &&
         c.friction_law_excess < self_check_tolerance)
-      pcout << "    (within what 'Solver/Convexification tolerance' allows, "
+      pcout << "    (within what '" + Entry::convexification_tolerance +
+                 "' allows, "
             << "up to " << c.friction_law_allowance << ")" << std::endl;
     line("negative friction power on slipping nodes",
          c.negative_friction_power,

@@ -115,7 +115,7 @@ namespace Contact
           cells *= parts;
           unknowns *= parts * geometry.fe_degree + 1;
         }
-      check_memory(cells, unknowns, "Geometry/Cell size");
+      check_memory(cells, unknowns, Entry::cell_size);
     }
     Point<dim>                lower, upper;
     std::vector<unsigned int> subdivisions(dim);
@@ -205,7 +205,7 @@ namespace Contact
     const auto         read = [&](Triangulation<dim> &target) {
       std::ifstream in(file);
       AssertThrow(in,
-                  ExcMessage("Entry 'Geometry/Mesh file': cannot open '" +
+                  ExcMessage("Entry '" + Entry::mesh_file + "': cannot open '" +
                              file +
                              "'; allowed is a readable gmsh .msh file."));
       GridIn<dim> grid_in(target);
@@ -218,8 +218,9 @@ namespace Contact
           std::ostringstream reason;
           exc.print_info(reason);
           AssertThrow(false,
-                      ExcMessage("Entry 'Geometry/Mesh file': cannot read '" +
-                                 file + "' as a gmsh mesh of dimension " +
+                      ExcMessage("Entry '" + Entry::mesh_file +
+                                 "': cannot read '" + file +
+                                 "' as a gmsh mesh of dimension " +
                                  std::to_string(dim) + ": " +
                                  Utilities::trim(reason.str())));
         }
@@ -234,12 +235,12 @@ namespace Contact
     check_memory(cells,
                  dim * cells * std::pow(geometry.fe_degree, dim) /
                    (geometry.simplex_cells ? 6. : 1.),
-                 "Geometry/Mesh refinements");
+                 Entry::mesh_refinements);
     const bool simplices = serial.all_reference_cells_are_simplex();
     AssertThrow(simplices == parameters.geometry.simplex_cells &&
                   (simplices || serial.all_reference_cells_are_hyper_cube()),
-                ExcMessage("Entry 'Geometry/Cell shape': the mesh '" + file +
-                           "' has " +
+                ExcMessage("Entry '" + Entry::cell_shape + "': the mesh '" +
+                           file + "' has " +
                            (simplices ? "simplices" : "not only simplices") +
                            "; allowed is 'Cell shape = " +
                            (simplices ? "simplex" : "hypercube") +
@@ -321,11 +322,16 @@ namespace Contact
     finest   = Utilities::MPI::max(finest, mpi_communicator);
     coarsest = Utilities::MPI::min(coarsest, mpi_communicator);
     AssertThrow(finest <= coarsest,
-                ExcMessage("The local refinement of 'Geometry/Refinement "
-                           "points' reaches Gamma_3, which is not supported "
-                           "yet: choose points away from 'Boundary "
-                           "conditions/Contact boundary ids' or a smaller "
-                           "'Geometry/Refinement radius'."));
+                ExcMessage("The local refinement of "
+                           "'" +
+                           Entry::refinement_points +
+                           "' reaches Gamma_3, "
+                           "which is not supported yet: choose points away "
+                           "from '" +
+                           Entry::contact_boundary_ids +
+                           "' "
+                           "or a smaller '" +
+                           Entry::refinement_radius + "'."));
   }
 
 
@@ -740,8 +746,8 @@ namespace Contact
         std::ostringstream text;
         text << point;
         AssertThrow(evaluating_process < n_processes,
-                    ExcMessage("Entry 'Output/Probe points': the point " +
-                               text.str() +
+                    ExcMessage("Entry '" + Entry::probe_points +
+                               "': the point " + text.str() +
                                " is not in the mesh; allowed are points of "
                                "the body."));
         if (evaluating_process != this_process)

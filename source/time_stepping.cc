@@ -82,7 +82,8 @@ namespace Contact
         friction_solver->set_state(saved_friction_state);
         pcout << "Step " << step_number << " (t = " << time
               << ") did not converge with k = " << time_step
-              << "; cutting it into two steps of k/2 ('Solver/Step cuts', "
+              << "; cutting it into two steps of k/2 ('" + Entry::step_cuts +
+                   "', "
               << cuts_left - 1 << " more allowed)." << std::endl;
       }
 

@@ -25,21 +25,29 @@ namespace Contact
     const auto &boundary = parameters.boundary;
     AssertThrow(geometry.lower_corner[0] == 0. &&
                   geometry.lower_corner[1] == 0.,
-                ExcMessage(
-                  "'Verification/Manufactured solution' needs "
-                  "'Geometry/Lower corner' to start at x = 0, y = 0."));
+                ExcMessage("'" + Entry::manufactured_solution +
+                           "' needs "
+                           "'" +
+                           Entry::lower_corner +
+                           "' to start at x = 0, y = 0."));
     AssertThrow(boundary.clamped_ids == std::vector<types::boundary_id>{0} &&
                   boundary.contact_ids == std::vector<types::boundary_id>{2},
-                ExcMessage("'Verification/Manufactured solution' needs "
-                           "'Boundary conditions/Clamped boundary ids = 0' "
+                ExcMessage("'" + Entry::manufactured_solution +
+                           "' needs "
+                           "'" +
+                           Entry::clamped_boundary_ids +
+                           " = 0' "
                            "(x = 0) and 'Contact boundary ids = 2' (y = 0)."));
     const double length = geometry.upper_corner[0] - geometry.lower_corner[0];
     const double cells_to_front =
       0.5 / (length / std::max(1., std::round(length / geometry.cell_size)));
     AssertThrow(std::abs(cells_to_front - std::round(cells_to_front)) < 1e-8,
-                ExcMessage("'Verification/Manufactured solution': the "
+                ExcMessage("'" + Entry::manufactured_solution +
+                           "': the "
                            "stick/slip front x = 1/2 must be a mesh line; "
-                           "choose 'Geometry/Cell size' so that 1/(2h) cells "
+                           "choose '" +
+                           Entry::cell_size +
+                           "' so that 1/(2h) cells "
                            "fit in [0, 1/2]."));
   }
 
