@@ -209,6 +209,24 @@ namespace Contact
     ErrorNorms max_errors;
     /** ||eps(u_h(T))||: the scale of the V-errors. */
     double displacement_V_norm = 0;
+    /** The errors at t = T, with a manufactured solution. */
+    ErrorNorms final_errors;
+    /** What a contact engineer reads of the state at T, by name: the
+     *  probe displacements, the friction dissipation, the slipping share
+     *  of Gamma_3's nodes and where the slip zone starts (NaN without
+     *  slip). An error estimate compares them between runs. */
+    std::vector<std::pair<std::string, double>> final_quantities;
+  };
+
+
+  /** The stick/slip state of Gamma_3: its counts, and the x range of the
+   *  slipping nodes (empty without slip). */
+  struct SlipZone
+  {
+    unsigned int n_stick = 0;
+    unsigned int n_slip  = 0;
+    double       from    = 0;
+    double       to      = 0;
   };
 
 
@@ -355,10 +373,16 @@ namespace Contact
     void           print_progress(const StepStatistics &statistics) const;
     bool           is_nearest_step(const double t) const;
     bool           report_due() const;
+    SlipZone       slip_zone() const;
     void           report_contact_state();
-    void           print_summary() const;
+    std::vector<std::pair<std::string, double>> final_quantities() const;
+    void                                        print_summary() const;
 
-    // Parameters and the objects fixed by them.
+    // The data members, each group with the file that sets it up or
+    // changes it.
+    //
+    // Parameters and the objects fixed by them (the constructor,
+    // contact_problem.cc).
     const Parameters   parameters;
     const FrictionLaw  friction_law;
     const unsigned int n_time_steps;
@@ -370,7 +394,8 @@ namespace Contact
     ConditionalOStream  pcout;
     mutable TimerOutput computing_timer;
 
-    // The load data, as muparser expressions of (x, y[, z], t).
+    // The load data, as muparser expressions of (x, y[, z], t) (the
+    // constructor; evaluated in assembly.cc).
     std::unique_ptr<FunctionParser<dim>> body_force;
     std::unique_ptr<FunctionParser<dim>> initial_displacement;
     std::unique_ptr<FunctionParser<dim>> initial_velocity;
@@ -386,11 +411,11 @@ namespace Contact
     VectorType                  constant_body_load;
     std::vector<Vector<double>> constant_body_cell_loads;
 
-    // Mesh and finite element space: p4est's distributed triangulation and
-    // Q_p for hypercubes, a plain triangulation with P_p (FE_SimplexP and
-    // its MappingFE) for simplices, which p4est does not handle. The scalar
-    // space of the same degree carries the Gamma_3 quantities (slip rate,
-    // status) for output.
+    // Mesh and finite element space (setup.cc): p4est's distributed
+    // triangulation and Q_p for hypercubes, a plain triangulation with P_p
+    // (FE_SimplexP and its MappingFE) for simplices, which p4est does not
+    // handle. The scalar space of the same degree carries the Gamma_3
+    // quantities (slip rate, status) for output.
     const std::unique_ptr<Triangulation<dim>>       triangulation;
     const std::unique_ptr<const FiniteElement<dim>> scalar_fe;
     const FESystem<dim>                             fe;
@@ -404,12 +429,14 @@ namespace Contact
     IndexSet                                        locally_relevant_dofs;
 
     // Clamped Gamma_1 (u = 0, hence w = 0) and the bilateral Gamma_3
-    // (w.n = 0) as homogeneous constraints: V_h of the paper.
+    // (w.n = 0) as homogeneous constraints: V_h of the paper
+    // (make_constraints(), setup.cc).
     AffineConstraints<double> constraints;
 
     // The matrices of (5.2): mass (with rho), viscosity A_h, elasticity
     // B_h, and K = (1/k) M + A_h + k B_h, all condensed with the
-    // constraints. K is factorised once per run. momentum_density[d]_i =
+    // constraints (assembly.cc). K is factorised once per run
+    // (time_stepping.cc). momentum_density[d]_i =
     // int rho phi_i . e_d gives the momentum of a velocity as a dot product.
     MatrixType                     mass_matrix;
     MatrixType                     viscosity_matrix;
@@ -418,7 +445,8 @@ namespace Contact
     std::array<VectorType, dim>    momentum_density;
     std::unique_ptr<Factorization> factorization;
 
-    // The time step state: u_n, w_n, the loads F_n and the previous ones.
+    // The time step state: u_n, w_n, the loads F_n and the previous ones
+    // (do_time_step(), time_stepping.cc).
     double       time;
     unsigned int step_number;
     VectorType   displacement;
@@ -433,12 +461,15 @@ namespace Contact
     VectorType elasticity_times_displacement;
 
     // The friction problem on Gamma_3: its nodes, the path between them
-    // and the body, and their state.
+    // and the body, and their state (friction_solver.cc, created in
+    // setup.cc).
     std::unique_ptr<FrictionSolver<dim>> friction_solver;
 
+    // The energy balance of the discrete identity (assembly.cc).
     EnergyBalance energy;
-    // The self-checks: the energy identity's terms by quadrature, and the
-    // checks' values of the last step and their largest over the steps.
+    // The self-checks (self_checks.cc): the energy identity's terms by
+    // quadrature, and the checks' values of the last step and their
+    // largest over the steps.
     EnergyBalance   energy_by_quadrature;
     SelfCheckValues step_checks;
     SelfCheckValues largest_checks;
@@ -447,9 +478,9 @@ namespace Contact
     static constexpr double self_check_tolerance = 1e-8;
     Sabotage<dim>           sabotage;
 
-    // Output state. A probe is the cell around an 'Output/Probe points'
-    // entry and the point in its reference cell; of the processes that own
-    // a cell around the point, the first evaluates it, the others keep an
+    // Output state (output.cc). A probe is the cell around an 'Output/Probe
+    // points' entry and the point in its reference cell; of the processes that
+    // own a cell around the point, the first evaluates it, the others keep an
     // invalid cell.
     std::vector<
       std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>>

@@ -77,6 +77,8 @@ namespace Contact
     inline const std::string contact_solver      = "Solver/Contact solver";
     inline const std::string output_directory    = "Output/Output directory";
     inline const std::string time_series         = "Output/Time series";
+    inline const std::string vtu_interval        = "Output/VTU interval";
+    inline const std::string gamma3_history      = "Output/Gamma3 history";
     inline const std::string report_times        = "Output/Report times";
     inline const std::string probe_points        = "Output/Probe points";
     inline const std::string checkpoint_interval = "Output/Checkpoint interval";
@@ -84,7 +86,8 @@ namespace Contact
     inline const std::string resume              = "Output/Resume";
     inline const std::string manufactured_solution =
       "Verification/Manufactured solution";
-    inline const std::string levels = "Convergence study/Levels";
+    inline const std::string levels         = "Convergence study/Levels";
+    inline const std::string estimate_error = "Accuracy/Estimate error";
 
     /** All of the above, for the test. */
     inline std::vector<std::string> all()
@@ -120,13 +123,16 @@ namespace Contact
               contact_solver,
               output_directory,
               time_series,
+              vtu_interval,
+              gamma3_history,
               report_times,
               probe_points,
               checkpoint_interval,
               checkpoint_minutes,
               resume,
               manufactured_solution,
-              levels};
+              levels,
+              estimate_error};
     }
   } // namespace Entry
 
@@ -299,6 +305,16 @@ namespace Contact
     void        parse_parameters(ParameterHandler &prm);
   };
 
+  struct AccuracyParameters
+  {
+    /** Also run the scene with h and k doubled and quadrupled, and report
+     *  the estimated error of this run (error_estimate.cc). */
+    bool estimate_error;
+
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
+  };
+
   struct OutputParameters
   {
     std::string         directory;
@@ -332,6 +348,7 @@ namespace Contact
     SolverParameters           solver;
     VerificationParameters     verification;
     ConvergenceStudyParameters convergence_study;
+    AccuracyParameters         accuracy;
     OutputParameters           output;
 
     /** The .prm text of all entries as they were used, for the results. */
@@ -339,6 +356,9 @@ namespace Contact
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);
+
+  private:
+    void check_error_estimate() const;
   };
 
   /**

@@ -17,6 +17,13 @@ namespace Contact
   /** Runs the program; user errors are thrown as dealii::ExceptionBase. */
   void run_from_command_line(const int argc, const char *const *argv);
 
+  /** Sets 'Section/Entry' = value in prm, as --set does (with the same
+   *  message for an entry that is not declared or a value that does not
+   *  fit). */
+  void apply_override(ParameterHandler  &prm,
+                      const std::string &path,
+                      const std::string &value);
+
   /** The parameters of `parameter_file` with overrides 'Section/Entry=value'
    *  applied, read and checked as by the command line. */
   Parameters read_parameters(const std::string              &parameter_file,

@@ -199,6 +199,8 @@ namespace Contact
     summary.wall_time           = run_timer.wall_time();
     summary.max_errors          = max_errors;
     summary.displacement_V_norm = strain_norm(displacement);
+    summary.final_errors        = current_errors;
+    summary.final_quantities    = final_quantities();
     return summary;
   }
 

@@ -669,6 +669,61 @@ namespace Contact
 
 
   template <int dim>
+  SlipZone ContactProblem<dim>::slip_zone() const
+  {
+    const std::vector<ContactNode<dim>> &contact_nodes =
+      friction_solver->boundary().nodes;
+    const std::vector<NodeState> &node_state =
+      friction_solver->state().node_state;
+    SlipZone zone;
+    for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+      if (node_state[p] == NodeState::stick)
+        ++zone.n_stick;
+      else
+        {
+          const double x = contact_nodes[p].location[0];
+          zone.from      = (zone.n_slip == 0 ? x : std::min(zone.from, x));
+          zone.to        = (zone.n_slip == 0 ? x : std::max(zone.to, x));
+          ++zone.n_slip;
+        }
+    return zone;
+  }
+
+
+  // @sect4{ContactProblem::final_quantities}
+
+  // The quantities at T that an error estimate compares between runs of
+  // different h and k (collective: the probes).
+  template <int dim>
+  std::vector<std::pair<std::string, double>>
+  ContactProblem<dim>::final_quantities() const
+  {
+    std::vector<std::pair<std::string, double>> quantities;
+    const VectorType                            u = ghosted(displacement);
+    for (unsigned int i = 0; i < probes.size(); ++i)
+      {
+        const Tensor<1, dim> value = probe_displacement(i, u);
+        for (unsigned int d = 0; d < dim; ++d)
+          quantities.emplace_back("probe " + std::to_string(i + 1) + " u_" +
+                                    std::string(1, "xyz"[d]),
+                                  value[d]);
+      }
+    quantities.emplace_back("friction dissipation",
+                            energy.friction_dissipation);
+    const SlipZone     zone    = slip_zone();
+    const unsigned int n_nodes = zone.n_stick + zone.n_slip;
+    if (n_nodes > 0)
+      quantities.emplace_back("slipping share of Gamma_3",
+                              double(zone.n_slip) / n_nodes);
+    quantities.emplace_back("slip zone starts at x",
+                            zone.n_slip > 0 ?
+                              zone.from :
+                              std::numeric_limits<double>::quiet_NaN());
+    return quantities;
+  }
+
+
+  template <int dim>
   void ContactProblem<dim>::report_contact_state()
   {
     for (auto t = pending_report_times.begin();
@@ -677,20 +732,9 @@ namespace Contact
         {
           const std::vector<ContactNode<dim>> &contact_nodes =
             friction_solver->boundary().nodes;
-          const auto &[friction_force, slip_velocity, node_state] =
-            friction_solver->state();
-          unsigned int n_stick = 0, n_slip = 0;
-          double       slip_from = 0, slip_to = 0;
-          for (unsigned int p = 0; p < contact_nodes.size(); ++p)
-            if (node_state[p] == NodeState::stick)
-              ++n_stick;
-            else
-              {
-                const double x = contact_nodes[p].location[0];
-                slip_from      = (n_slip == 0 ? x : std::min(slip_from, x));
-                slip_to        = (n_slip == 0 ? x : std::max(slip_to, x));
-                ++n_slip;
-              }
+          const Vector<double> &friction_force =
+            friction_solver->state().friction_force;
+          const auto [n_stick, n_slip, slip_from, slip_to] = slip_zone();
           pcout << "Report t = " << std::setprecision(6) << *t << " (step "
                 << step_number << ", t_n = " << time
                 << (*t - time > 0.5 * time_step * (1 + 1e-12) ?
@@ -818,9 +862,12 @@ namespace Contact
   template void ContactProblem<dim>::write_vtu_piece(VtuOutput &,              \
                                                      const std::string &)      \
     const;                                                                     \
-  template void ContactProblem<dim>::finish_vtu();                             \
-  template bool ContactProblem<dim>::is_nearest_step(const double) const;      \
-  template bool ContactProblem<dim>::report_due() const;                       \
+  template void     ContactProblem<dim>::finish_vtu();                         \
+  template bool     ContactProblem<dim>::is_nearest_step(const double) const;  \
+  template bool     ContactProblem<dim>::report_due() const;                   \
+  template SlipZone ContactProblem<dim>::slip_zone() const;                    \
+  template std::vector<std::pair<std::string, double>>                         \
+                ContactProblem<dim>::final_quantities() const;                 \
   template void ContactProblem<dim>::write_pvd() const;                        \
   template void ContactProblem<dim>::print_progress(const StepStatistics &)    \
     const;                                                                     \

@@ -791,6 +791,39 @@ namespace Contact
   }
 
 
+  // @sect3{Accuracy}
+
+  void AccuracyParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Accuracy");
+    {
+      prm.declare_entry(
+        "Estimate error",
+        "false",
+        Patterns::Bool(),
+        "Also run the scene with h and k doubled and with h and k "
+        "quadrupled (into <Output directory>/coarse-1 and coarse-2; in 2D "
+        "they cost about 1/8 and 1/64 of the run) and report the estimated "
+        "error of this run at T: in the V-norm, in the probe displacements, "
+        "the friction dissipation, the slipping share of Gamma_3 and where "
+        "its slip zone starts, each by Richardson extrapolation with the "
+        "order observed between the three runs, with a warning where the "
+        "runs are not in the asymptotic range. The table goes to the "
+        "console and to <Output directory>/error_estimate.txt.");
+    }
+    prm.leave_subsection();
+  }
+
+  void AccuracyParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Accuracy");
+    {
+      estimate_error = prm.get_bool("Estimate error");
+    }
+    prm.leave_subsection();
+  }
+
+
   // @sect3{Output}
 
   void OutputParameters::declare_parameters(ParameterHandler &prm)
@@ -928,7 +961,43 @@ namespace Contact
     SolverParameters::declare_parameters(prm);
     VerificationParameters::declare_parameters(prm);
     ConvergenceStudyParameters::declare_parameters(prm);
+    AccuracyParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
+  }
+
+  // An error estimate runs the scene twice more, with h and k doubled and
+  // quadrupled: the coarse meshes must exist, and the runs are separate
+  // (not a study, not a resumed run).
+  void Parameters::check_error_estimate() const
+  {
+    AssertThrow(convergence_study.levels == 0 && !output.resume,
+                ExcMessage("Entry '" + Entry::estimate_error +
+                           "' = true runs one scene with its error estimate; "
+                           "allowed with it are '" +
+                           Entry::levels + "' = 0 and no --resume ('" +
+                           Entry::resume + "' = false)."));
+    if (!geometry.mesh_file.empty())
+      {
+        check_entry(geometry.mesh_refinements >= 2,
+                    Entry::mesh_refinements,
+                    geometry.mesh_refinements,
+                    "at least 2 with '" + Entry::estimate_error +
+                      "' = true (the coarse runs use one and two "
+                      "refinements fewer)");
+        return;
+      }
+    double shortest_edge = std::numeric_limits<double>::max();
+    for (unsigned int d = 0; d < dimension; ++d)
+      shortest_edge =
+        std::min(shortest_edge,
+                 geometry.upper_corner[d] - geometry.lower_corner[d]);
+    check_entry(4 * geometry.cell_size <= shortest_edge,
+                Entry::cell_size,
+                geometry.cell_size,
+                "at most a quarter of the box's shortest edge, " +
+                  number_text(shortest_edge / 4) + ", with '" +
+                  Entry::estimate_error +
+                  "' = true (the coarsest run has cells of 4 h)");
   }
 
   void Parameters::parse_parameters(ParameterHandler &prm)
@@ -943,6 +1012,7 @@ namespace Contact
     solver.parse_parameters(prm);
     verification.parse_parameters(prm);
     convergence_study.parse_parameters(prm);
+    accuracy.parse_parameters(prm);
     output.parse_parameters(prm, dimension);
 
     // On a P2 triangle the integral of a vertex basis function is zero:
@@ -981,6 +1051,8 @@ namespace Contact
                 ExcMessage("Entry 'Output/Resume' (--resume): a convergence "
                            "study ('Convergence study/Levels' > 0) cannot be "
                            "resumed; allowed is Resume = false there."));
+    if (accuracy.estimate_error)
+      check_error_estimate();
 
     std::ostringstream text;
     prm.print_parameters(text,

@@ -9,6 +9,7 @@
 
 
 #include <contact_problem.h>
+#include <error_estimate.h>
 #include <reference_interpolation.h>
 #include <run.h>
 
@@ -236,30 +237,37 @@ namespace Contact
     }
 
 
-    // Sets "Section/Subsection/Entry" = value; ParameterHandler itself
-    // rejects entries that are not declared and values that do not match
-    // the entry's pattern.
-    void apply_override(ParameterHandler  &prm,
-                        const std::string &path,
-                        const std::string &value)
-    {
-      const std::vector<std::string> names =
-        Utilities::split_string_list(path, '/');
-      try
-        {
-          for (unsigned int i = 0; i + 1 < names.size(); ++i)
-            prm.enter_subsection(names[i]);
-          prm.set(names.back(), value);
-          for (unsigned int i = 0; i + 1 < names.size(); ++i)
-            prm.leave_subsection();
-        }
-      catch (const ExceptionBase &exc)
-        {
-          rethrow_with_suggestion(prm,
-                                  exc,
-                                  "--set '" + path + "=" + value + "': ");
-        }
-    }
+  } // namespace
+
+
+  // Sets "Section/Subsection/Entry" = value; ParameterHandler itself
+  // rejects entries that are not declared and values that do not match
+  // the entry's pattern.
+  void apply_override(ParameterHandler  &prm,
+                      const std::string &path,
+                      const std::string &value)
+  {
+    const std::vector<std::string> names =
+      Utilities::split_string_list(path, '/');
+    try
+      {
+        for (unsigned int i = 0; i + 1 < names.size(); ++i)
+          prm.enter_subsection(names[i]);
+        prm.set(names.back(), value);
+        for (unsigned int i = 0; i + 1 < names.size(); ++i)
+          prm.leave_subsection();
+      }
+    catch (const ExceptionBase &exc)
+      {
+        rethrow_with_suggestion(prm,
+                                exc,
+                                "--set '" + path + "=" + value + "': ");
+      }
+  }
+
+
+  namespace
+  {
 
     // Parses a .prm file in which 'include other.prm' (at the top level,
     // outside subsections) takes the path relative to the including file,
@@ -681,6 +689,10 @@ namespace Contact
       run_convergence_study<2>(prm, parameters);
     else if (parameters.convergence_study.levels > 0)
       run_convergence_study<3>(prm, parameters);
+    else if (parameters.accuracy.estimate_error && dimension == 2)
+      run_with_error_estimate<2>(prm, parameters);
+    else if (parameters.accuracy.estimate_error)
+      run_with_error_estimate<3>(prm, parameters);
     else if (dimension == 2)
       ContactProblem<2>(parameters).run();
     else

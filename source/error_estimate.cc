@@ -1,0 +1,265 @@
+/* ---------------------------------------------------------------------
+ * The error estimate of a run ('Accuracy/Estimate error').
+ *
+ * The scheme converges as O(h^p + k^q) (Corollary 5.3, (5.26): p = q = 1
+ * for smooth solutions and linear elements; less where the solution is
+ * singular, about 2/3 on the paper's scene). Running the scene also with h
+ * and k doubled and quadrupled gives, for any quantity Q at T, the
+ * differences d_fine = Q_h - Q_2h and d_coarse = Q_2h - Q_4h. If the
+ * error behaves like C h^p on all three runs, d_coarse / d_fine = 2^p,
+ * and the error of the finest run is
+ *
+ *   Q - Q_h = d_fine / (2^p - 1)               (Richardson extrapolation)
+ *
+ * with p measured, not assumed. Where the differences do not shrink or
+ * change sign, the runs are not in that range and the estimate falls back
+ * to |d_fine| with a warning.
+ * --------------------------------------------------------------------- */
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/table_handler.h>
+
+#include <contact_problem.h>
+#include <error_estimate.h>
+#include <reference_interpolation.h>
+#include <run.h>
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace Contact
+{
+  // @sect3{Richardson extrapolation with the observed order}
+
+  RichardsonEstimate richardson_estimate(const double d_fine,
+                                         const double d_coarse,
+                                         const bool   signed_differences)
+  {
+    RichardsonEstimate estimate;
+    estimate.order = std::numeric_limits<double>::quiet_NaN();
+    estimate.error = std::abs(d_fine);
+    if (!std::isfinite(d_fine) || !std::isfinite(d_coarse))
+      {
+        estimate.error   = std::numeric_limits<double>::quiet_NaN();
+        estimate.warning = "not defined on every run";
+        return estimate;
+      }
+    if (d_fine == 0)
+      {
+        // A quantity that takes few values (a share of nodes, a node's
+        // position) can stay put between the finer runs and still have an
+        // error; first order would make it half the coarser difference.
+        estimate.error = std::abs(d_coarse) / 2;
+        if (d_coarse != 0)
+          estimate.warning = "the same on the two finer runs; the estimate "
+                             "|2h vs 4h| / 2 assumes first order";
+        return estimate;
+      }
+    if (signed_differences && d_fine * d_coarse < 0)
+      {
+        estimate.warning = "the differences between the runs change sign: "
+                           "not in the asymptotic range";
+        return estimate;
+      }
+    const double ratio = std::abs(d_coarse) / std::abs(d_fine);
+    estimate.order     = std::log2(ratio);
+    if (ratio <= 1)
+      {
+        estimate.warning = "the difference does not shrink from the coarser "
+                           "to the finer pair of runs: not in the "
+                           "asymptotic range";
+        return estimate;
+      }
+    estimate.error = std::abs(d_fine) / (ratio - 1);
+    // First order is what the scheme gives for smooth solutions; a corner
+    // singularity lowers it to about 2/3, quadratic elements raise the
+    // space part to 2. Orders far outside suggest that the three runs are
+    // not yet in the range where one power of h describes the error.
+    if (estimate.order < min_plausible_order ||
+        estimate.order > max_plausible_order)
+      estimate.warning =
+        "observed order outside [" + number_text(min_plausible_order) + ", " +
+        number_text(max_plausible_order) + "]: the estimate may be far off";
+    return estimate;
+  }
+
+
+  namespace
+  {
+    // @sect3{The coarse runs}
+
+    // The scene with h and k multiplied by 2^level: a box's cell size, or
+    // `level` refinements fewer of a mesh file, and T / ceil(N / 2^level)
+    // steps, so that the coarse runs end at T like the given one. No VTU,
+    // Gamma_3 history or checkpoints: only the state at T is compared.
+    Parameters parameters_of_coarse_run(ParameterHandler  &prm,
+                                        const Parameters  &base,
+                                        const unsigned int level)
+    {
+      const unsigned int factor  = 1u << level;
+      const unsigned int n_steps = (base.time.n_steps() + factor - 1) / factor;
+      std::ostringstream h, k;
+      h << std::setprecision(17) << base.geometry.cell_size * factor;
+      k << std::setprecision(17) << base.time.end_time / n_steps;
+      if (base.geometry.mesh_file.empty())
+        apply_override(prm, Entry::cell_size, h.str());
+      else
+        apply_override(prm,
+                       Entry::mesh_refinements,
+                       std::to_string(base.geometry.mesh_refinements - level));
+      apply_override(prm, Entry::time_step, k.str());
+      apply_override(prm,
+                     Entry::output_directory,
+                     base.output.directory + "/coarse-" +
+                       std::to_string(level));
+      apply_override(prm, Entry::estimate_error, "false");
+      apply_override(prm, Entry::vtu_interval, "0");
+      apply_override(prm, Entry::gamma3_history, "false");
+      apply_override(prm, Entry::checkpoint_interval, "0");
+      apply_override(prm, Entry::checkpoint_minutes, "0");
+      Parameters parameters;
+      parameters.parse_parameters(prm);
+      return parameters;
+    }
+
+
+    // @sect3{The report}
+
+    // One row of the table: a quantity's value on the three runs (or, for
+    // the V-norm, ||eps(u_h(T))|| and the norms of the differences), its
+    // estimate and, with a manufactured solution, its exact error.
+    struct EstimateRow
+    {
+      std::string        name;
+      double             value;
+      double             d_fine;
+      double             d_coarse;
+      RichardsonEstimate estimate;
+      double             exact_error = std::numeric_limits<double>::quiet_NaN();
+    };
+
+    void write_table(const std::vector<EstimateRow> &rows,
+                     const bool                      with_exact,
+                     std::ostream                   &out)
+    {
+      TableHandler table;
+      for (const EstimateRow &row : rows)
+        {
+          table.add_value("quantity at T", row.name);
+          table.add_value("value", row.value);
+          table.add_value("h vs 2h", row.d_fine);
+          table.add_value("2h vs 4h", row.d_coarse);
+          table.add_value("order", row.estimate.order);
+          table.add_value("estimated error", row.estimate.error);
+          if (with_exact)
+            table.add_value("exact error", row.exact_error);
+        }
+      for (const std::string column :
+           {"value", "h vs 2h", "2h vs 4h", "estimated error", "exact error"})
+        if (with_exact || column != "exact error")
+          {
+            table.set_scientific(column, true);
+            table.set_precision(column, 3);
+          }
+      table.set_precision("order", 2);
+      table.write_text(out, TableHandler::TextOutputFormat::org_mode_table);
+    }
+  } // namespace
+
+
+  // @sect3{run_with_error_estimate}
+
+  template <int dim>
+  void run_with_error_estimate(ParameterHandler &prm,
+                               const Parameters &parameters)
+  {
+    ConditionalOStream console(
+      std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+    const bool exact = parameters.verification.manufactured_solution;
+
+    // The run itself first; it stays, since the coarse runs' displacements
+    // are interpolated onto its mesh.
+    ContactProblem<dim>       fine(parameters);
+    std::array<RunSummary, 3> runs;
+    runs[0] = fine.run();
+    const ReferenceInterpolation<dim> interpolate(fine);
+    std::array<VectorType, 3>         u;
+    u[0] = fine.get_displacement();
+    for (unsigned int level = 1; level <= 2; ++level)
+      {
+        ContactProblem<dim> coarse(
+          parameters_of_coarse_run(prm, parameters, level));
+        console << std::endl
+                << "Error estimate: the scene with h and k times "
+                << (1u << level) << std::endl;
+        runs[level] = coarse.run();
+        u[level]    = interpolate(interpolate.locate(coarse),
+                               coarse,
+                               coarse.get_displacement());
+      }
+
+    const auto difference_norm = [&](const VectorType &a, const VectorType &b) {
+      VectorType difference(a);
+      difference -= b;
+      return fine.strain_norm(difference);
+    };
+    std::vector<EstimateRow> rows;
+    {
+      EstimateRow row{"V-norm ||eps(u(T))||",
+                      runs[0].displacement_V_norm,
+                      difference_norm(u[0], u[1]),
+                      difference_norm(u[1], u[2]),
+                      {}};
+      row.estimate    = richardson_estimate(row.d_fine, row.d_coarse, false);
+      row.exact_error = runs[0].final_errors.displacement_V;
+      rows.push_back(row);
+    }
+    for (unsigned int q = 0; q < runs[0].final_quantities.size(); ++q)
+      {
+        const auto &[name, value] = runs[0].final_quantities[q];
+        EstimateRow row{name,
+                        value,
+                        value - runs[1].final_quantities[q].second,
+                        runs[1].final_quantities[q].second -
+                          runs[2].final_quantities[q].second,
+                        {}};
+        row.estimate = richardson_estimate(row.d_fine, row.d_coarse, true);
+        rows.push_back(row);
+      }
+
+    std::ostringstream report;
+    report << "Error estimate of this run at T = " << parameters.time.end_time
+           << " (h = " << runs[0].cell_size << ", k = " << runs[0].time_step
+           << "), from the runs with 2h, k = " << runs[1].time_step
+           << " and 4h, k = " << runs[2].time_step
+           << ": estimated error = |h vs 2h| / (2^order - 1), order = "
+           << "log2(|2h vs 4h| / |h vs 2h|)"
+           << (exact ? "; exact error: against the manufactured solution" : "")
+           << std::endl;
+    write_table(rows, exact, report);
+    for (const EstimateRow &row : rows)
+      if (!row.estimate.warning.empty())
+        report << "Warning: " << row.name << ": " << row.estimate.warning << "."
+               << std::endl;
+    console << std::endl << report.str();
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      {
+        std::ofstream file(parameters.output.directory + "/error_estimate.txt");
+        file << report.str();
+        AssertThrow(file.good(),
+                    ExcMessage("Cannot write '" + parameters.output.directory +
+                               "/error_estimate.txt'."));
+      }
+  }
+
+
+  template void run_with_error_estimate<2>(ParameterHandler &,
+                                           const Parameters &);
+  template void run_with_error_estimate<3>(ParameterHandler &,
+                                           const Parameters &);
+} // namespace Contact
