@@ -9,7 +9,9 @@ writes into <directory>/figures/ (or --output):
   deformed.png         the deformed body coloured by --field (default
                        cell_von_mises) at the chosen times, the nodes of
                        Gamma_3 marked stick (blue) or slip (red); in 3D the
-                       boundary faces of the body seen from above
+                       body's boundary seen from above and, beside it, a
+                       map of Gamma_3 with each face coloured by the share
+                       of its nodes that slip
   gamma3_profiles.png  along Gamma_3 at the chosen times: the friction
                        traction against its bound mu(|w_tau|) S, and the slip
                        rate |w_tau|
@@ -25,8 +27,11 @@ writes into <directory>/figures/ (or --output):
 Each figure needs its own file: deformed.png the VTU output (solution.pvd),
 the Gamma_3 figures gamma3_history.csv, energies.png time_series.csv; a
 figure whose file is missing is skipped with a note. The chosen times
-default to the run's Report times (or four evenly spaced times); each is
-moved to the nearest step that has the data.
+default to the run's Report times (or four evenly spaced times up to its
+End time); each is moved to the nearest step that has the data. For every
+figure the script prints what it shows (cells, stick/slip nodes at each
+time, nodes above their bound, when slip starts, ...). Quadrilaterals,
+hexahedra, triangles (P1, P2) and tetrahedra are drawn.
 
 Needs only numpy and matplotlib (Debian: python3-numpy python3-matplotlib)
 and no display: the VTU files are read here, not by ParaView.
@@ -45,6 +50,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.colors import LinearSegmentedColormap  # noqa: E402
+from mpl_toolkits.mplot3d import proj3d  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
 STICK, SLIP = 1, 2
@@ -62,6 +68,20 @@ DPI = 110
 # zlib-compressed blocks, or without a compressor one integer (the byte
 # count) followed by the raw data. Every cell has its own copy of its
 # vertices, so cell data is constant over a cell's points.
+
+# The VTK cell types deal.II writes: for each, the dimension, the corners
+# in the order that walks around a 2D cell's boundary (quadratic triangles
+# list their corners first and then the edge midpoints), and a 3D cell's
+# faces as lists of corners.
+CELL_TYPES = {
+    5: (2, [0, 1, 2], None),                                  # triangle
+    22: (2, [0, 3, 1, 4, 2, 5], None),                        # quadratic
+    9: (2, [0, 1, 2, 3], None),                               # quadrilateral
+    10: (3, None, [[0, 1, 2], [0, 1, 3], [1, 2, 3], [0, 2, 3]]),  # tetrahedron
+    24: (3, None, [[0, 1, 2], [0, 1, 3], [1, 2, 3], [0, 2, 3]]),  # quadratic
+    12: (3, None, [[0, 1, 2, 3], [4, 5, 6, 7], [0, 1, 5, 4],  # hexahedron
+                   [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]]),
+}
 
 VTK_TYPES = {"Float32": np.float32, "Float64": np.float64,
              "Int32": np.int32, "Int64": np.int64, "UInt8": np.uint8,
@@ -96,7 +116,8 @@ def read_data_array(element, compressed):
 
 
 def read_vtu(path):
-    """Points, cells (point indices per cell) and point arrays of a piece."""
+    """Points, cells (point indices per cell), the VTK cell type and the
+    point arrays of a piece (deal.II writes one cell type per file)."""
     root = ElementTree.parse(path).getroot()
     compressed = root.get("compressor") is not None
     piece = root.find("UnstructuredGrid/Piece")
@@ -106,16 +127,21 @@ def read_vtu(path):
     offsets = cell_arrays["offsets"]
     vertices_per_cell = offsets[0]
     cells = cell_arrays["connectivity"].reshape(-1, vertices_per_cell)
+    cell_type = int(cell_arrays["types"][0])
+    if cell_type not in CELL_TYPES:
+        sys.exit(f"plot_run.py: {path}: VTK cell type {cell_type} is not "
+                 f"one this script draws ({sorted(CELL_TYPES)})")
     arrays = {}
     point_data = piece.find("PointData")
     if point_data is not None:
         arrays = {a.get("Name"): read_data_array(a, compressed)
                   for a in point_data}
-    return points, cells, arrays
+    return points, cells, cell_type, arrays
 
 
 def read_snapshot(directory, record):
-    """All pieces of one output step (a .pvtu or .vtu file), merged."""
+    """All pieces of one output step (a .pvtu or .vtu file), merged: the
+    points, the cells, their VTK type and the point arrays."""
     path = os.path.join(directory, record)
     if path.endswith(".pvtu"):
         root = ElementTree.parse(path).getroot()
@@ -125,13 +151,13 @@ def read_snapshot(directory, record):
         pieces = [path]
     all_points, all_cells, all_arrays, offset = [], [], {}, 0
     for piece in pieces:
-        points, cells, arrays = read_vtu(piece)
+        points, cells, cell_type, arrays = read_vtu(piece)
         all_points.append(points)
         all_cells.append(cells + offset)
         offset += len(points)
         for name, values in arrays.items():
             all_arrays.setdefault(name, []).append(values)
-    return (np.concatenate(all_points), np.concatenate(all_cells),
+    return (np.concatenate(all_points), np.concatenate(all_cells), cell_type,
             {name: np.concatenate(v) for name, v in all_arrays.items()})
 
 
@@ -151,7 +177,9 @@ def read_csv(path):
     """A CSV file with a header line as a dict of numpy columns."""
     with open(path) as file:
         names = file.readline().strip().split(",")
-    values = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+        empty = not file.readline().strip()
+    values = (np.zeros((0, len(names))) if empty else
+              np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2))
     return {name: values[:, i] for i, name in enumerate(names)}
 
 
@@ -212,9 +240,10 @@ def count_nodes(points, arrays, state):
     return len(np.unique(np.round(points[chosen], 9), axis=0))
 
 
-def draw_deformed_2d(axis, points, cells, arrays, field, limits):
+def draw_deformed_2d(axis, points, cells, cell_type, arrays, field, limits):
     deformed = points[:, :2] + arrays["displacement"][:, :2]
-    polygons = PolyCollection(deformed[cells], array=field_values(
+    corners = cells[:, CELL_TYPES[cell_type][1]]
+    polygons = PolyCollection(deformed[corners], array=field_values(
         arrays, field, cells), cmap="viridis", edgecolors="none",
         linewidths=0, antialiaseds=False)
     polygons.set_clim(*limits)
@@ -224,103 +253,146 @@ def draw_deformed_2d(axis, points, cells, arrays, field, limits):
         axis.plot(*deformed[chosen].T, "s", color=colour, ms=2)
     axis.autoscale_view()
     axis.set_aspect("equal")
-    return polygons
+    return len(corners)
 
 
-def boundary_faces(points, cells):
-    """The faces of hexahedra that belong to one cell only (VTK order)."""
-    local_faces = np.array([[0, 1, 2, 3], [4, 5, 6, 7], [0, 1, 5, 4],
-                            [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]])
-    faces = cells[:, local_faces].reshape(-1, 4)
+def boundary_faces(points, cells, cell_type):
+    """The faces of 3D cells that belong to one cell only, and the cell
+    each belongs to."""
+    local_faces = CELL_TYPES[cell_type][2]
+    n_corners = len(local_faces[0])
+    faces = cells[:, np.array(local_faces)].reshape(-1, n_corners)
     keys = np.round(points[faces].mean(axis=1), 9)
     _, index, counts = np.unique(keys, axis=0, return_index=True,
                                  return_counts=True)
-    return faces[index[counts == 1]], index[counts == 1] // 6
+    return faces[index[counts == 1]], index[counts == 1] // len(local_faces)
 
 
-def draw_deformed_3d(axis, points, cells, arrays, field, limits):
-    """The boundary of the body, Gamma_3's faces coloured by their state.
-    The vertical axis of the picture is the coordinate in which Gamma_3
-    extends least (its normal, for a flat Gamma_3), and the view looks at
-    Gamma_3: from below when Gamma_3 is the bottom of the body."""
-    faces, owner = boundary_faces(points, cells)
+def draw_gamma3_map(axis, points, cells, cell_type, arrays):
+    """Gamma_3's faces in its plane (the two coordinates in which it
+    extends furthest), coloured by the share of their nodes that slip.
+    Returns the number of faces."""
+    faces, _ = boundary_faces(points, cells, cell_type)
+    status = arrays["contact_status"][faces]
+    faces = faces[(status > 0).all(axis=1)]
+    if len(faces) == 0:
+        axis.set_axis_off()
+        return 0
+    in_plane = np.argsort(np.ptp(points[faces].reshape(-1, 3), axis=0))[1:]
+    in_plane = sorted(in_plane)
+    polygons = PolyCollection(
+        points[faces][:, :, in_plane],
+        facecolors=STATE_MAP((arrays["contact_status"][faces] == SLIP)
+                             .mean(axis=1)),
+        edgecolors="white", linewidths=0.3)
+    axis.add_collection(polygons)
+    axis.autoscale_view()
+    axis.set_aspect("equal")
+    axis.set_xlabel(f"{'xyz'[in_plane[0]]} on Γ3")
+    axis.set_ylabel(f"{'xyz'[in_plane[1]]} on Γ3")
+    return len(faces)
+
+
+def draw_deformed_3d(axis, points, cells, cell_type, arrays, field, limits):
+    """The boundary of the body seen from above: the vertical axis of the
+    picture is the coordinate in which Gamma_3 extends least (its normal,
+    for a flat Gamma_3). Where Gamma_3 is in view its faces are coloured
+    by the share of their nodes that slip; the map beside it shows all of
+    Gamma_3."""
+    faces, owner = boundary_faces(points, cells, cell_type)
     colours = plt.get_cmap("viridis")(
         (field_values(arrays, field, cells)[owner] - limits[0]) /
         (limits[1] - limits[0]))
     status = arrays["contact_status"][faces]
     on_gamma3 = (status > 0).all(axis=1)
-    slip_fraction = (status[on_gamma3] == SLIP).mean(axis=1)
-    colours[on_gamma3] = STATE_MAP(slip_fraction)
+    colours[on_gamma3] = STATE_MAP((status[on_gamma3] == SLIP).mean(axis=1))
     nodes = points[arrays["contact_status"] > 0]
-    vertical = int(np.argmin(np.ptp(nodes, axis=0)))
+    vertical = int(np.argmin(np.ptp(nodes, axis=0))) if len(nodes) else 2
     order = [c for c in range(3) if c != vertical] + [vertical]
     deformed = (points + arrays["displacement"])[:, order]
-    elevation, azimuth = np.radians(25), np.radians(-60)
-    eye = np.array([np.cos(elevation) * np.cos(azimuth),
-                    np.cos(elevation) * np.sin(azimuth), np.sin(elevation)])
-    # matplotlib sorts polygons by their mean depth, which draws hidden
-    # faces over visible ones; faces that look away from the eye are left
-    # out, which is exact for a convex body.
-    corners = deformed[faces]
-    normal = np.cross(corners[:, 2] - corners[:, 0],
-                      corners[:, 3] - corners[:, 1])
-    outward = np.sign(np.einsum("ij,ij->i", normal, corners.mean(axis=1) -
-                                deformed[cells[owner]].mean(axis=1)))
-    visible = outward * (normal @ eye) > 0
-    axis.add_collection3d(Poly3DCollection(
-        corners[visible], facecolors=colours[visible], edgecolors="none",
-        linewidths=0, antialiaseds=False))
     low, high = deformed.min(axis=0), deformed.max(axis=0)
     for set_limits, l, h in zip((axis.set_xlim, axis.set_ylim, axis.set_zlim),
                                 low, high):
         set_limits(l, h)
     axis.set_box_aspect(high - low)
-    axis.view_init(elev=np.degrees(elevation), azim=np.degrees(azimuth))
+    axis.view_init(elev=25, azim=-60)
+    # matplotlib sorts polygons by their mean depth, which draws hidden
+    # faces over visible ones. So only the faces that face the viewer are
+    # drawn (exact for a convex body): with its corners ordered so that
+    # its normal points out of the body, such a face runs counterclockwise
+    # on the screen.
+    corners = deformed[faces]
+    normal = np.cross(corners[:, 2] - corners[:, 0],
+                      corners[:, -1] - corners[:, 1])
+    outward = np.einsum("ij,ij->i", normal, corners.mean(axis=1) -
+                        deformed[cells[owner]].mean(axis=1)) > 0
+    x, y, _ = proj3d.proj_transform(*corners.reshape(-1, 3).T,
+                                    axis.get_proj())
+    x, y = x.reshape(corners.shape[:2]), y.reshape(corners.shape[:2])
+    area = (x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y).sum(1)
+    visible = (area > 0) == outward
+    axis.add_collection3d(Poly3DCollection(
+        corners[visible], facecolors=colours[visible], edgecolors="none",
+        linewidths=0, antialiaseds=False))
     for set_label, c in zip((axis.set_xlabel, axis.set_ylabel,
                              axis.set_zlabel), order):
         set_label("xyz"[c])
 
 
 def plot_deformed(directory, times, field, output):
+    """deformed.png; returns what it shows, or why it was skipped."""
     records = read_pvd(directory)
     if not records:
-        return "no solution.pvd (VTU interval = 0?)"
+        return None, "no solution.pvd (Output/VTU interval = 0?)"
     steps = []
     for t in times:
         record = min(records, key=lambda r: abs(r[0] - t))
         if record not in steps:
             steps.append(record)
     snapshots = [(t, *read_snapshot(directory, f)) for t, f in steps]
-    dim = 3 if snapshots[0][2].shape[1] == 8 else 2
+    dim = CELL_TYPES[snapshots[0][3]][0]
     # Panels side by side unless the body is much wider than high.
     extent = np.ptp(snapshots[0][1], axis=0)
     aspect = extent[0] / max(extent[1], 1e-30) if dim == 2 else 1.5
-    columns = min(len(snapshots), 1 if aspect > 3 else 2)
+    # In 3D each time gets a row: the body, and the map of Gamma_3.
+    columns = 2 if dim == 3 else min(len(snapshots), 1 if aspect > 3 else 2)
     width = 11.0 / columns
-    rows = -(-len(snapshots) // columns)
+    rows = len(snapshots) if dim == 3 else -(-len(snapshots) // columns)
     figure = plt.figure(
-        figsize=(11.0, rows * (min(width / aspect, 5.0) + 0.8) + 0.4),
+        figsize=(11.0, rows * (min(width / aspect, 5.0) + 0.8) + 0.6),
         constrained_layout=True)
-    for i, (t, points, cells, arrays) in enumerate(snapshots):
+    shown = []
+    for i, (t, points, cells, cell_type, arrays) in enumerate(snapshots):
         values = field_values(arrays, field, cells)
         limits = (values.min(), max(values.max(), values.min() + 1e-30))
+        n_stick = count_nodes(points, arrays, STICK)
+        n_slip = count_nodes(points, arrays, SLIP)
         if dim == 2:
             axis = figure.add_subplot(rows, columns, i + 1)
-            draw_deformed_2d(axis, points, cells, arrays, field, limits)
+            n_cells = draw_deformed_2d(axis, points, cells, cell_type, arrays,
+                                       field, limits)
+            shown.append(f"t = {t:.4g}: {n_cells} cells, {n_stick} stick / "
+                         f"{n_slip} slip nodes")
         else:
-            axis = figure.add_subplot(rows, columns, i + 1, projection="3d")
-            draw_deformed_3d(axis, points, cells, arrays, field, limits)
-        axis.set_title(f"t = {t:.4g}: {count_nodes(points, arrays, STICK)} "
-                       f"stick, {count_nodes(points, arrays, SLIP)} slip")
+            n_faces = draw_gamma3_map(
+                figure.add_subplot(rows, columns, 2 * i + 2), points, cells,
+                cell_type, arrays)
+            axis = figure.add_subplot(rows, columns, 2 * i + 1,
+                                      projection="3d")
+            draw_deformed_3d(axis, points, cells, cell_type, arrays, field,
+                             limits)
+            shown.append(f"t = {t:.4g}: {n_faces} faces of Γ3 on its map, "
+                         f"{n_stick} stick / {n_slip} slip nodes")
+        axis.set_title(f"t = {t:.4g}: {n_stick} stick, {n_slip} slip")
         figure.colorbar(plt.cm.ScalarMappable(
             norm=plt.Normalize(*limits), cmap="viridis"),
-            ax=axis, label=field, shrink=0.8, pad=0.15)
-    figure.suptitle(f"deformed body coloured by {field}; Γ3: stick blue, "
-                    "slip red" + (" (faces by the fraction of their nodes; "
-                                  "a map of Γ3 in gamma3_profiles.png)"
-                                  if dim == 3 else ""))
+            ax=axis, label=field, shrink=0.7, pad=0.2 if dim == 3 else 0.05)
+    figure.suptitle(f"deformed body coloured by {field}\nΓ3: stick blue, "
+                    "slip red" + (" (right: a face of Γ3 by the share of "
+                                  "its nodes)" if dim == 3 else ""))
     figure.savefig(os.path.join(output, "deformed.png"), dpi=DPI)
     plt.close(figure)
+    return "; ".join(shown), None
 
 
 # @sect3{Gamma_3: profiles and the space-time diagram}
@@ -333,6 +405,10 @@ def gamma3_coordinate(history, name):
         if name not in coordinates:
             sys.exit(f"plot_run.py: --coordinate must be one of "
                      f"{', '.join(coordinates)}")
+        if np.ptp(history[name]) == 0:
+            sys.exit(f"plot_run.py: --coordinate {name}: every node of "
+                     f"Gamma_3 has {name} = {history[name][0]:g}; choose one "
+                     "along which Gamma_3 extends")
         return name
     return max(coordinates, key=lambda c: np.ptp(history[c]))
 
@@ -364,6 +440,7 @@ def plot_gamma3_profiles(history, times, coordinate, output):
                                 figsize=(3.6 * columns + 0.5, 2.9 * rows),
                                 sharex=True, sharey="row", squeeze=False,
                                 constrained_layout=True)
+    shown = []
     for column, t in enumerate(times):
         t_n, nodes = history_at(history, t)
         order = np.argsort(nodes[coordinate], kind="stable")
@@ -392,6 +469,10 @@ def plot_gamma3_profiles(history, times, coordinate, output):
             axes[1, column].plot(s[chosen], nodes["slip_rate"][order][chosen],
                                  ".", ms=3, color=colour)
         axes[0, column].set_title(f"t = {t_n:.4g}")
+        # What the picture must show: no node above its bound.
+        above = np.abs(traction) > bound * (1 + 1e-6) + 1e-12
+        shown.append(f"t = {t_n:.4g}: {len(s)} nodes, {int(above.sum())} "
+                     "above the bound")
         if rows == 3:
             plot_gamma3_map(axes[2, column], nodes, coordinate)
         axes[-1, column].set_xlabel(f"{coordinate} on Γ3")
@@ -400,6 +481,7 @@ def plot_gamma3_profiles(history, times, coordinate, output):
     axes[0, 0].legend(fontsize=7)
     figure.savefig(os.path.join(output, "gamma3_profiles.png"), dpi=DPI)
     plt.close(figure)
+    return "; ".join(shown)
 
 
 def plot_stick_slip(history, coordinate, output):
@@ -441,6 +523,11 @@ def plot_stick_slip(history, coordinate, output):
         figure.colorbar(mesh, ax=axis, label="fraction of nodes slipping")
     figure.savefig(os.path.join(output, "stick_slip.png"), dpi=DPI)
     plt.close(figure)
+    slip_rows = np.nonzero(np.nan_to_num(fraction).max(axis=1) > 0)[0]
+    first = (f"slip first at t = {step_times[slip_rows[0]]:.4g}"
+             if len(slip_rows) else "no slip")
+    return (f"{len(step_values)} steps x {len(edges_s) - 1} positions along "
+            f"{coordinate}; {first}")
 
 
 # @sect3{Energies, self-checks, iterations}
@@ -473,6 +560,8 @@ def plot_energies(series, output):
     iterations.legend(fontsize=7)
     figure.savefig(os.path.join(output, "energies.png"), dpi=DPI)
     plt.close(figure)
+    return (f"{len(t) - 1} steps to t = {t[-1]:.4g}; external work "
+            f"{series['external_work'][-1]:.4g}")
 
 
 # @sect3{A convergence study}
@@ -513,6 +602,8 @@ def plot_convergence(path, output):
         axes[0, 1].legend(fontsize=7)
     figure.savefig(os.path.join(output, "convergence.png"), dpi=DPI)
     plt.close(figure)
+    return (f"{len(step)} levels against {step_name}; "
+            + ", ".join(errors))
 
 
 def main():
@@ -538,37 +629,50 @@ def main():
     os.makedirs(output, exist_ok=True)
 
     written, skipped = [], []
-    series_path = os.path.join(directory, "time_series.csv")
-    series = read_csv(series_path) if os.path.exists(series_path) else None
-    end_time = series["time"][-1] if series is not None else 1.0
-    times = chosen_times(arguments, directory, end_time)
 
-    reason = plot_deformed(directory, times, arguments.field, output)
-    (skipped if reason else written).append(("deformed.png", reason))
-    history_path = os.path.join(directory, "gamma3_history.csv")
-    if os.path.exists(history_path):
-        history = read_csv(history_path)
-        coordinate = gamma3_coordinate(history, arguments.coordinate)
-        plot_gamma3_profiles(history, times, coordinate, output)
-        plot_stick_slip(history, coordinate, output)
-        written += [("gamma3_profiles.png", None), ("stick_slip.png", None)]
-    else:
-        skipped += [(name, "no gamma3_history.csv (Gamma3 history = false?)")
-                    for name in ("gamma3_profiles.png", "stick_slip.png")]
-    if series is not None:
-        plot_energies(series, output)
-        written.append(("energies.png", None))
-    else:
-        skipped.append(("energies.png", "no time_series.csv"))
+    def record(name, shown, reason=None):
+        (skipped if reason else written).append((name, reason or shown))
+
     convergence = os.path.join(directory, "convergence.txt")
     if os.path.exists(convergence):
-        plot_convergence(convergence, output)
-        written.append(("convergence.png", None))
-        skipped = [(name, f"{reason}; each level of the study has its own "
-                    f"directory: {os.path.join(directory, 'level-0')}, ...")
-                   for name, reason in skipped]
-    for name, _ in written:
-        print(f"wrote {os.path.join(output, name)}")
+        # A study's directory holds the table; each level is a run of its
+        # own in level-<l>/, which this script draws when given it.
+        record("convergence.png", plot_convergence(convergence, output))
+        for name, _ in written:
+            print(f"wrote {os.path.join(output, name)}: {_}")
+        print("the levels' runs are in "
+              f"{os.path.join(directory, 'level-0')}, ...: plot each of them")
+        return
+
+    series_path = os.path.join(directory, "time_series.csv")
+    series = read_csv(series_path) if os.path.exists(series_path) else None
+    end_time = (series["time"][-1] if series is not None else
+                float(read_parameter(directory, "End time") or 1.0))
+    times = chosen_times(arguments, directory, end_time)
+
+    shown, reason = plot_deformed(directory, times, arguments.field, output)
+    record("deformed.png", shown, reason)
+    history_path = os.path.join(directory, "gamma3_history.csv")
+    history = read_csv(history_path) if os.path.exists(history_path) else None
+    if history is None:
+        reason = "no gamma3_history.csv (Output/Gamma3 history = false?)"
+    elif len(history["step"]) == 0:
+        reason = "Gamma_3 has no nodes (Contact boundary ids empty?)"
+    else:
+        reason = None
+        coordinate = gamma3_coordinate(history, arguments.coordinate)
+        record("gamma3_profiles.png",
+               plot_gamma3_profiles(history, times, coordinate, output))
+        record("stick_slip.png", plot_stick_slip(history, coordinate, output))
+    if reason:
+        record("gamma3_profiles.png", None, reason)
+        record("stick_slip.png", None, reason)
+    if series is not None:
+        record("energies.png", plot_energies(series, output))
+    else:
+        record("energies.png", None, "no time_series.csv")
+    for name, shown in written:
+        print(f"wrote {os.path.join(output, name)}: {shown}")
     for name, reason in skipped:
         print(f"skipped {name}: {reason}")
 

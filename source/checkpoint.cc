@@ -50,11 +50,13 @@ namespace Contact
 
     // What a resumed run may change without changing the discrete problem
     // (README, 'When a run fails'): the end and the solver, and the output
-    // except the probes and the time series, whose columns must continue.
+    // except the probes, the time series and the Gamma_3 history, whose
+    // rows and columns must continue.
     // k itself is part of the checkpoint's shape.
     bool may_change_on_resume(const std::string &entry)
     {
-      if (entry == Entry::probe_points || entry == Entry::time_series)
+      if (entry == Entry::probe_points || entry == Entry::time_series ||
+          entry == Entry::gamma3_history)
         return false;
       return entry.rfind("Output/", 0) == 0 || entry.rfind("Solver/", 0) == 0 ||
              entry == Entry::end_time || entry == Entry::time_step ||

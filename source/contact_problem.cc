@@ -189,9 +189,21 @@ namespace Contact
     require_self_checks();
 
     RunSummary summary;
-    summary.cell_size =
-      parameters.geometry.mesh_file.empty() ?
-        parameters.geometry.cell_size :
+    // A box has round(edge / h) cells along each edge: the largest of
+    // their sizes is the h it has.
+    summary.cell_size = 0;
+    if (parameters.geometry.mesh_file.empty())
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const double edge = parameters.geometry.upper_corner[d] -
+                              parameters.geometry.lower_corner[d];
+          summary.cell_size = std::max(
+            summary.cell_size,
+            edge /
+              std::max(1., std::round(edge / parameters.geometry.cell_size)));
+        }
+    else
+      summary.cell_size =
         GridTools::maximal_cell_diameter(*triangulation, *mapping);
     summary.time_step           = time_step;
     summary.n_steps             = n_time_steps;

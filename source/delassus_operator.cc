@@ -336,9 +336,10 @@ namespace Contact
   // by the turn of the slip directions and the change of the shifts, so the
   // factor of the last one preconditions the next almost perfectly: GMRES
   // then costs a few products with M instead of forming and factorising a
-  // block. Only if it has not converged within 10 iterations (to 1e-13 of
-  // the right-hand side, below what the Newton methods' tolerances see) is
-  // the block formed and factorised, and its factor kept for the next step.
+  // block. Only if it has not converged within gmres_max_iterations (to
+  // the relative residual gmres_reduction: an inexact Newton step, which
+  // the Newton method's own residual test corrects) is the block formed
+  // and factorised, and its factor kept for the next step.
   void DelassusOperator::solve_block(const bool velocity_form,
                                      const std::vector<FullMatrix<double>> &Q,
                                      const std::vector<unsigned int> &unknowns,

@@ -85,7 +85,15 @@ namespace Contact
       static const std::regex written(
         "solution_[0-9]{5}\\.([0-9]+\\.vtu|pvtu)|solution\\.pvd(\\.tmp)?|"
         "(time_series|gamma3_history)\\.csv(\\.tmp)?|checkpoint(\\.[0-9]+)?(\\.tmp)?|"
-        "parameters\\.prm");
+        "parameters\\.prm|error_estimate\\.txt|convergence\\.txt");
+      return std::regex_match(name, written);
+    }
+
+    // The directories of an error estimate's coarse runs and of a
+    // convergence study's levels.
+    bool is_result_directory(const std::string &name)
+    {
+      static const std::regex written("coarse-[12]|level-[0-9]+");
       return std::regex_match(name, written);
     }
   } // namespace
@@ -129,6 +137,9 @@ namespace Contact
           if (entry.is_regular_file() &&
               is_result_file(entry.path().filename().string()))
             std::filesystem::remove(entry.path(), error);
+          else if (entry.is_directory() &&
+                   is_result_directory(entry.path().filename().string()))
+            std::filesystem::remove_all(entry.path(), error);
         std::filesystem::remove_all(directory + "/.partial", error);
       }
     // VTU pieces are written here first and renamed into the directory

@@ -837,7 +837,9 @@ namespace Contact
                         "parameters.prm, relative to where the program runs. "
                         "A run that is not resumed replaces the results of "
                         "an earlier run there (its VTU/PVD, time series, "
-                        "parameters and checkpoints); one run at a time "
+                        "Gamma_3 history, parameters, checkpoints, error "
+                        "estimate with its coarse-1/2 and a study's table "
+                        "with its level-N); one run at a time "
                         "may use it (the lock file .lock names the run).");
       prm.declare_entry("VTU interval",
                         "8",
@@ -986,18 +988,28 @@ namespace Contact
                       "refinements fewer)");
         return;
       }
-    double shortest_edge = std::numeric_limits<double>::max();
+    // The box has round(edge / h) cells along each edge: the coarse runs
+    // have cells of exactly 2h and 4h only where that number is a multiple
+    // of 4 and stays the same count halved.
     for (unsigned int d = 0; d < dimension; ++d)
-      shortest_edge =
-        std::min(shortest_edge,
-                 geometry.upper_corner[d] - geometry.lower_corner[d]);
-    check_entry(4 * geometry.cell_size <= shortest_edge,
-                Entry::cell_size,
-                geometry.cell_size,
-                "at most a quarter of the box's shortest edge, " +
-                  number_text(shortest_edge / 4) + ", with '" +
-                  Entry::estimate_error +
-                  "' = true (the coarsest run has cells of 4 h)");
+      {
+        const double edge = geometry.upper_corner[d] - geometry.lower_corner[d];
+        const auto   cells = [&](const double size) {
+          return static_cast<long>(std::max(1., std::round(edge / size)));
+        };
+        const long n = cells(geometry.cell_size);
+        check_entry(n % 4 == 0 && cells(2 * geometry.cell_size) == n / 2 &&
+                      cells(4 * geometry.cell_size) == n / 4,
+                    Entry::cell_size,
+                    geometry.cell_size,
+                    "with '" + Entry::estimate_error +
+                      "' = true, a size that divides every edge of the box "
+                      "into a multiple of 4 cells (the coarse runs have "
+                      "cells of 2h and 4h); here the edge " +
+                      std::string(1, "xyz"[d]) + " of length " +
+                      number_text(edge) + " gets " + std::to_string(n) +
+                      " cells");
+      }
   }
 
   void Parameters::parse_parameters(ParameterHandler &prm)

@@ -7,10 +7,13 @@
 
 #include <error_estimate.h>
 
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -44,6 +47,53 @@ int main()
       std::cout << "power law, p = " << std::setprecision(4) << p << ": order "
                 << e.order << ", estimated / true error "
                 << e.error / std::abs(C * std::pow(h, p))
+                << ", warning: " << (e.warning.empty() ? "none" : e.warning)
+                << std::endl;
+    }
+  // Error fields of three runs with norms E, r E, r^2 E whose consecutive
+  // ones correlate with c (and the first and last with c^2), built from
+  // orthonormal vectors a, b, d: the field estimate must recover E and c.
+  for (const double c : {1., 0.7, 0.3, 0.})
+    {
+      const double E = 1e-3, r = std::pow(2., 2. / 3), s = std::sqrt(1 - c * c);
+      const std::array<std::array<double, 3>, 3> e = {
+        {{E, 0, 0},
+         {r * E * c, r * E * s, 0},
+         {r * r * E * c * c, r * r * E * c * s, r * r * E * s}}};
+      const auto distance = [&](const unsigned int i, const unsigned int j) {
+        double sum = 0;
+        for (unsigned int k = 0; k < 3; ++k)
+          sum += (e[i][k] - e[j][k]) * (e[i][k] - e[j][k]);
+        return std::sqrt(sum);
+      };
+      const Contact::RichardsonEstimate estimate =
+        Contact::field_error_estimate(distance(0, 1),
+                                      distance(1, 2),
+                                      distance(0, 2));
+      std::cout << "error fields correlated with c = " << c << ": recovered c "
+                << std::setprecision(4) << estimate.correlation
+                << ", estimated / true error " << estimate.error / E
+                << " (plain Richardson: "
+                << Contact::richardson_estimate(distance(0, 1),
+                                                distance(1, 2),
+                                                false)
+                       .error /
+                     E
+                << ")" << std::endl;
+    }
+  // A quantity whose own order is below the V-norm's (0.68) takes the
+  // V-norm's; one whose order is higher keeps its own.
+  for (const auto &[d_fine, d_coarse] :
+       std::vector<std::pair<double, double>>{{-4.602e-4, -6.443e-4},
+                                              {-1.481e-4, -9.297e-5},
+                                              {1.056e-3, 4.18e-3},
+                                              {1e-3, -2e-3}})
+    {
+      const Contact::RichardsonEstimate e =
+        Contact::scalar_error_estimate(d_fine, d_coarse, 0.68);
+      std::cout << "quantity with differences " << d_fine << ", " << d_coarse
+                << " (V-norm order 0.68): order " << e.order
+                << ", estimated error " << e.error
                 << ", warning: " << (e.warning.empty() ? "none" : e.warning)
                 << std::endl;
     }

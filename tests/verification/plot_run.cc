@@ -1,11 +1,13 @@
 /* doc/plot_run.py draws every run: the paper's scene, a 2 x 0.5 block, the
-   3D scene and a convergence study, each on a coarse grid, run by the
-   program and then plotted with no display (DISPLAY unset). For each the
-   test prints which PNG files the script wrote (each must start with the
-   PNG signature and be more than a few kilobytes) and the figures it
-   skipped, with the script's exit status. A script that fails on any of
-   these outputs, writes an empty or a broken file, or stops writing a
-   figure changes this output. */
+   3D scene, P2 triangles, P1 tetrahedra, a run without Gamma_3, a run
+   without VTU and Gamma_3 history, a convergence study and one of its
+   levels, each on a coarse grid, run by the program and then plotted with
+   no display (DISPLAY unset), once with the options --times, --field and
+   --coordinate. For each figure the test prints what the script says it
+   drew (cells, stick/slip nodes at each time, nodes above their bound,
+   when slip starts, ...: numbers taken from the data the figure shows)
+   and whether the file is a PNG of more than a few kilobytes; and the
+   figures the script skipped, with the reason. */
 
 #include <sys/wait.h>
 
@@ -37,7 +39,8 @@ bool is_png(const fs::path &file)
 void run_and_plot(const std::string &name,
                   const std::string &scene,
                   const std::string &settings,
-                  const std::string &plot_directory)
+                  const std::string &plot_directory,
+                  const std::string &plot_options = "")
 {
   fs::remove_all(name);
   const int run = exit_status(
@@ -45,28 +48,27 @@ void run_and_plot(const std::string &name,
     "' --set 'Output/Progress interval=0' " +
     "--set 'Output/Print timings=false' " + settings + " " CONTACT_PRM_DIR "/" +
     scene + " > " + name + ".log 2>&1");
-  const int plot =
-    exit_status("env -u DISPLAY MPLCONFIGDIR=matplotlib /usr/bin/python3 " +
-                std::string(CONTACT_DOC_DIR) + "/plot_run.py " +
-                plot_directory + " > " + name + "_plot.log 2>&1");
-  std::cout << name << ": run exit " << run << ", plot exit " << plot
-            << std::endl;
+  const int plot = exit_status(
+    "env -u DISPLAY MPLCONFIGDIR=matplotlib /usr/bin/python3 " +
+    std::string(CONTACT_DOC_DIR) + "/plot_run.py " + plot_directory + " " +
+    plot_options + " > " + name + "_plot.log 2>&1");
+  std::cout << name << (plot_options.empty() ? "" : " (" + plot_options + ")")
+            << ": run exit " << run << ", plot exit " << plot << std::endl;
 
-  std::vector<std::string> written;
-  const fs::path           figures = fs::path(plot_directory) / "figures";
-  if (fs::exists(figures))
-    for (const auto &entry : fs::directory_iterator(figures))
-      written.push_back(entry.path().filename().string() +
-                        (is_png(entry.path()) ? "" : " (not a PNG)"));
-  std::sort(written.begin(), written.end());
-  for (const std::string &file : written)
-    std::cout << "  wrote " << file << std::endl;
-
+  // "wrote <directory>/figures/<file>: <what it shows>"
   std::ifstream log(name + "_plot.log");
   for (std::string line; std::getline(log, line);)
-    if (line.rfind("skipped ", 0) == 0)
-      std::cout << "  " << line.substr(0, line.find(':')) << std::endl;
-    else if (line.rfind("wrote ", 0) != 0)
+    if (line.rfind("wrote ", 0) == 0)
+      {
+        const std::size_t colon = line.find(": ");
+        const fs::path    file(line.substr(6, colon - 6));
+        std::cout << "  " << file.filename().string()
+                  << (is_png(file) ? "" : " (not a PNG)") << ": "
+                  << line.substr(colon + 2) << std::endl;
+      }
+    else if (line.rfind("skipped ", 0) == 0)
+      std::cout << "  " << line << std::endl;
+    else
       std::cout << "  script says: " << line << std::endl;
 }
 
@@ -78,16 +80,37 @@ int main()
                "barboteu2015.prm",
                coarse + "--set 'Output/VTU interval=4'",
                "paper");
+  run_and_plot("paper_options",
+               "barboteu2015.prm",
+               coarse + "--set 'Output/VTU interval=4'",
+               "paper_options",
+               "--times 0.5,1.1 --field displacement --coordinate x");
   run_and_plot("block",
                "barboteu2015.prm",
                coarse + "--set 'Geometry/Upper corner=2, 0.5' "
                         "--set 'Output/Report times=0.4, 0.7, 1.1'",
                "block");
-  run_and_plot("three_d",
+  run_and_plot("p2_triangles",
+               "barboteu2015.prm",
+               coarse + "--set 'Geometry/Cell shape=simplex' "
+                        "--set 'Geometry/Finite element degree=2'",
+               "p2_triangles");
+  run_and_plot("no_gamma3",
+               "barboteu2015.prm",
+               coarse + "--set 'Boundary conditions/Contact boundary ids='",
+               "no_gamma3");
+  run_and_plot("no_vtu_no_history",
+               "barboteu2015.prm",
+               coarse + "--set 'Output/VTU interval=0' "
+                        "--set 'Output/Gamma3 history=false'",
+               "no_vtu_no_history");
+  const std::string coarse_3d =
+    "--set 'Geometry/Cell size=0.125' --set 'Time/Time step=0.125' ";
+  run_and_plot("three_d", "barboteu2015_3d.prm", coarse_3d, "three_d");
+  run_and_plot("tetrahedra",
                "barboteu2015_3d.prm",
-               "--set 'Geometry/Cell size=0.125' "
-               "--set 'Time/Time step=0.125'",
-               "three_d");
+               coarse_3d + "--set 'Geometry/Cell shape=simplex'",
+               "tetrahedra");
   run_and_plot("study",
                "barboteu2015_convergence.prm",
                "--set 'Convergence study/Levels=2'",
