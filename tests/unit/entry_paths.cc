@@ -3,13 +3,19 @@
    list of entries that must not change) is declared: a renamed entry
    whose path in Entry was not renamed with it makes this test fail.
    The check itself must be able to fail: a path that is not declared is
-   reported as such. */
+   reported as such. The list Entry::all() must hold every constant of the
+   namespace (counted in include/parameters.h), and no source file other
+   than parameters.cc may spell an entry path as a literal
+   ('Subsection/Entry' of a declared subsection): such lines are printed. */
 
 #include <deal.II/base/parameter_handler.h>
 
 #include <parameters.h>
 
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -55,6 +61,50 @@ int main()
       }
   std::cout << paths.size() << " entry paths named outside parameters.cc, "
             << undeclared << " of them not declared" << std::endl;
+
+  // The constants of namespace Entry in the header, against all().
+  std::ifstream header(CONTACT_SOURCE_ROOT "/include/parameters.h");
+  unsigned int  constants = 0;
+  bool          in_entry  = false;
+  for (std::string line; std::getline(header, line);)
+    {
+      if (line.find("namespace Entry") != std::string::npos)
+        in_entry = true;
+      else if (line.find("} // namespace Entry") != std::string::npos)
+        in_entry = false;
+      else if (in_entry &&
+               line.find("inline const std::string") != std::string::npos)
+        ++constants;
+    }
+  std::cout << constants << " constants in namespace Entry, "
+            << (constants == paths.size() ? "all" : "not all")
+            << " of them in Entry::all()" << std::endl;
+
+  // Literal entry paths (inside a string literal) outside parameters.cc.
+  const std::regex literal(
+    "\"[^\"]*(Geometry|Boundary conditions|Material|Loads and initial values|"
+    "Friction|Time|Solver|Verification|Convergence study|Accuracy|Output)/"
+    "[A-Z]");
+  unsigned int literals = 0;
+  for (const auto &file :
+       std::filesystem::directory_iterator(CONTACT_SOURCE_ROOT "/source"))
+    {
+      if (file.path().filename() == "parameters.cc")
+        continue;
+      std::ifstream in(file.path());
+      for (std::string line; std::getline(in, line);)
+        if (line.find("//") == std::string::npos &&
+            std::regex_search(line, literal) &&
+            line.find("--set") == std::string::npos)
+          {
+            std::cout << "literal entry path in " << file.path().filename()
+                      << ": " << line << std::endl;
+            ++literals;
+          }
+    }
+  std::cout << literals
+            << " literal entry paths in source files other than parameters.cc"
+            << std::endl;
 
   std::cout << "a path that is not declared, 'Solver/Convexification "
                "tolerence', is found: "
