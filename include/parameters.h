@@ -88,6 +88,8 @@ namespace Contact
       "Verification/Manufactured solution";
     inline const std::string levels         = "Convergence study/Levels";
     inline const std::string estimate_error = "Accuracy/Estimate error";
+    inline const std::string separate_space_and_time =
+      "Accuracy/Separate space and time";
 
     /** All of the above, for the test. */
     inline std::vector<std::string> all()
@@ -132,7 +134,8 @@ namespace Contact
               resume,
               manufactured_solution,
               levels,
-              estimate_error};
+              estimate_error,
+              separate_space_and_time};
     }
   } // namespace Entry
 
@@ -310,6 +313,9 @@ namespace Contact
     /** Also run the scene with h and k doubled and quadrupled, and report
      *  the estimated error of this run (error_estimate.cc). */
     bool estimate_error;
+    /** Also run with 2h, k and with h, 2k, and split each estimate into
+     *  the part that halving h removes and the part that halving k does. */
+    bool separate_space_and_time;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);

@@ -171,31 +171,34 @@ namespace Contact
   {
     // @sect3{The coarse runs}
 
-    // The scene with h and k multiplied by 2^level: a box's cell size, or
-    // `level` refinements fewer of a mesh file, and T / ceil(N / 2^level)
-    // steps, so that the coarse runs end at T like the given one. No VTU,
+    // The scene with h times `space_factor` and k times `time_factor` (1, 2
+    // or 4): a box's cell size, or fewer refinements of a mesh file, and
+    // T / ceil(N / time_factor) steps, so that every run ends at T. No VTU,
     // Gamma_3 history or checkpoints: only the state at T is compared.
     Parameters parameters_of_coarse_run(ParameterHandler  &prm,
                                         const Parameters  &base,
-                                        const unsigned int level)
+                                        const unsigned int space_factor,
+                                        const unsigned int time_factor,
+                                        const std::string &name)
     {
-      const unsigned int factor  = 1u << level;
-      const unsigned int n_steps = (base.time.n_steps() + factor - 1) / factor;
+      const unsigned int n_steps =
+        (base.time.n_steps() + time_factor - 1) / time_factor;
       std::ostringstream h, k;
-      h << std::setprecision(17) << base.geometry.cell_size * factor;
+      h << std::setprecision(17) << base.geometry.cell_size * space_factor;
       k << std::setprecision(17) << base.time.end_time / n_steps;
       if (base.geometry.mesh_file.empty())
         apply_override(prm, Entry::cell_size, h.str());
       else
         apply_override(prm,
                        Entry::mesh_refinements,
-                       std::to_string(base.geometry.mesh_refinements - level));
+                       std::to_string(base.geometry.mesh_refinements -
+                                      std::log2(space_factor)));
       apply_override(prm, Entry::time_step, k.str());
       apply_override(prm,
                      Entry::output_directory,
-                     base.output.directory + "/coarse-" +
-                       std::to_string(level));
+                     base.output.directory + "/" + name);
       apply_override(prm, Entry::estimate_error, "false");
+      apply_override(prm, Entry::separate_space_and_time, "false");
       apply_override(prm, Entry::vtu_interval, "0");
       apply_override(prm, Entry::gamma3_history, "false");
       apply_override(prm, Entry::checkpoint_interval, "0");
@@ -205,12 +208,44 @@ namespace Contact
       return parameters;
     }
 
+    // A run of the scene and its displacement at T on the given run's mesh.
+    struct RunAtT
+    {
+      RunSummary summary;
+      VectorType displacement;
+    };
 
-    // @sect3{The report}
+    template <int dim>
+    RunAtT run_coarse(ParameterHandler                  &prm,
+                      const Parameters                  &base,
+                      const unsigned int                 space_factor,
+                      const unsigned int                 time_factor,
+                      const std::string                 &name,
+                      const ReferenceInterpolation<dim> &interpolate)
+    {
+      ContactProblem<dim> coarse(
+        parameters_of_coarse_run(prm, base, space_factor, time_factor, name));
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::cout << std::endl
+                  << "Error estimate: the scene with h times " << space_factor
+                  << " and k times " << time_factor << " (" << name << ")"
+                  << std::endl;
+      RunAtT result;
+      result.summary      = coarse.run();
+      result.displacement = interpolate(interpolate.locate(coarse),
+                                        coarse,
+                                        coarse.get_displacement());
+      return result;
+    }
 
-    // One row of the table: a quantity's value on the three runs (or, for
-    // the V-norm, ||eps(u_h(T))|| and the norms of the differences), its
-    // estimate and, with a manufactured solution, its exact error.
+
+    // @sect3{The estimates}
+
+    // One row of the table: a quantity's value (for the V-norm
+    // ||eps(u_h(T))||), its differences to the runs with 2h and 4h (for the
+    // V-norm the norms of the differences), the estimate, with the
+    // separation its space and time parts, and with a manufactured
+    // solution the exact error.
     struct EstimateRow
     {
       std::string        name;
@@ -218,14 +253,92 @@ namespace Contact
       double             d_fine;
       double             d_coarse;
       RichardsonEstimate estimate;
+      double             space_part  = std::numeric_limits<double>::quiet_NaN();
+      double             time_part   = std::numeric_limits<double>::quiet_NaN();
       double             exact_error = std::numeric_limits<double>::quiet_NaN();
     };
 
+    // The part of the error that halving only h (or only k) removes: the
+    // difference to the run with 2h (or 2k), scaled as the total is
+    // scaled from its difference (the same order, for a field the same
+    // correlation of consecutive errors).
+    double part_of_error(const EstimateRow &row, const double difference)
+    {
+      if (!std::isfinite(difference) || row.d_fine == 0)
+        return std::numeric_limits<double>::quiet_NaN();
+      return row.estimate.error * std::abs(difference / row.d_fine);
+    }
+
+    // runs: the given one, 2h/2k, 4h/4k, and with the separation 2h/k and
+    // h/2k.
+    template <int dim>
+    std::vector<EstimateRow> estimate_rows(const ContactProblem<dim> &fine,
+                                           const std::vector<RunAtT> &runs)
+    {
+      const auto difference_norm = [&](const VectorType &a,
+                                       const VectorType &b) {
+        VectorType difference(a);
+        difference -= b;
+        return fine.strain_norm(difference);
+      };
+      const bool               separate = runs.size() == 5;
+      std::vector<EstimateRow> rows;
+      EstimateRow              v{"V-norm of u",
+                    runs[0].summary.displacement_V_norm,
+                    difference_norm(runs[0].displacement, runs[1].displacement),
+                    difference_norm(runs[1].displacement, runs[2].displacement),
+                    {}};
+      v.estimate    = field_error_estimate(v.d_fine,
+                                        v.d_coarse,
+                                        difference_norm(runs[0].displacement,
+                                                        runs[2].displacement));
+      v.exact_error = runs[0].summary.final_errors.displacement_V;
+      if (separate)
+        {
+          v.space_part = part_of_error(v,
+                                       difference_norm(runs[0].displacement,
+                                                       runs[3].displacement));
+          v.time_part  = part_of_error(v,
+                                      difference_norm(runs[0].displacement,
+                                                      runs[4].displacement));
+        }
+      rows.push_back(v);
+
+      const auto value = [&](const unsigned int run, const unsigned int q) {
+        return runs[run].summary.final_quantities[q].second;
+      };
+      for (unsigned int q = 0; q < runs[0].summary.final_quantities.size(); ++q)
+        {
+          EstimateRow row{runs[0].summary.final_quantities[q].first,
+                          value(0, q),
+                          value(0, q) - value(1, q),
+                          value(1, q) - value(2, q),
+                          {}};
+          row.estimate =
+            scalar_error_estimate(row.d_fine, row.d_coarse, v.estimate.order);
+          if (separate)
+            {
+              row.space_part = part_of_error(row, value(0, q) - value(3, q));
+              row.time_part  = part_of_error(row, value(0, q) - value(4, q));
+            }
+          rows.push_back(row);
+        }
+      return rows;
+    }
+
+
+    // @sect3{The report}
+
     void write_table(const std::vector<EstimateRow> &rows,
                      const bool                      with_exact,
+                     const bool                      separate,
                      std::ostream                   &out)
     {
-      TableHandler table;
+      TableHandler             table;
+      std::vector<std::string> numbers = {"value",
+                                          "h vs 2h",
+                                          "2h vs 4h",
+                                          "estimated error"};
       for (const EstimateRow &row : rows)
         {
           table.add_value("quantity at T", row.name);
@@ -234,18 +347,81 @@ namespace Contact
           table.add_value("2h vs 4h", row.d_coarse);
           table.add_value("order", row.estimate.order);
           table.add_value("estimated error", row.estimate.error);
+          if (separate)
+            {
+              table.add_value("space part", row.space_part);
+              table.add_value("time part", row.time_part);
+            }
           if (with_exact)
             table.add_value("exact error", row.exact_error);
         }
-      for (const std::string column :
-           {"value", "h vs 2h", "2h vs 4h", "estimated error", "exact error"})
-        if (with_exact || column != "exact error")
-          {
-            table.set_scientific(column, true);
-            table.set_precision(column, 3);
-          }
+      if (separate)
+        numbers.insert(numbers.end(), {"space part", "time part"});
+      if (with_exact)
+        numbers.push_back("exact error");
+      for (const std::string &column : numbers)
+        {
+          table.set_scientific(column, true);
+          table.set_precision(column, 3);
+        }
       table.set_precision("order", 2);
       table.write_text(out, TableHandler::TextOutputFormat::org_mode_table);
+    }
+
+    std::string report(const Parameters               &parameters,
+                       const std::vector<RunAtT>      &runs,
+                       const std::vector<EstimateRow> &rows)
+    {
+      const bool         exact = parameters.verification.manufactured_solution;
+      const bool         separate = runs.size() == 5;
+      std::ostringstream out;
+      out << "Error estimate of this run at T = " << parameters.time.end_time
+          << " (h = " << runs[0].summary.cell_size
+          << ", k = " << runs[0].summary.time_step << "), from the runs with";
+      for (unsigned int r = 1; r < runs.size(); ++r)
+        out << (r == 1               ? " " :
+                r + 1 == runs.size() ? " and " :
+                                       ", ")
+            << "h = " << runs[r].summary.cell_size
+            << ", k = " << runs[r].summary.time_step;
+      out << ": order = log2(|2h vs 4h| / |h vs 2h|), estimated error = "
+          << "|h vs 2h| / (2^order - 1); the V-norm of u is ||eps(u(T))||, "
+          << "its differences are the V-norms of the differences, and its "
+          << "estimate allows for error fields that change shape from run "
+          << "to run (correlation c below)"
+          << (separate ? "; space and time part: what halving only h or "
+                         "only k removes" :
+                         "")
+          << (exact ? "; exact error: against the manufactured solution" : "")
+          << std::endl;
+      write_table(rows, exact, separate, out);
+      out << "V-norm of u: the error fields of consecutive runs correlate "
+          << "with c = " << std::setprecision(2) << rows[0].estimate.correlation
+          << " (c = 1 is Richardson's assumption; c = 0, errors that are "
+          << "orthogonal, halves the estimate for order 1)." << std::endl
+          << std::setprecision(6);
+      if (exact)
+        out << "Exact V-error at T of this run: "
+            << runs[0].summary.final_errors.displacement_V
+            << "; exact max V-error over the steps: "
+            << runs[0].summary.max_errors.displacement_V << std::endl;
+      // The time steps are T / ceil(N / 2^l): for N not a multiple of 4
+      // their ratios differ a little from 2 and 4.
+      for (unsigned int level = 1; level <= 2; ++level)
+        {
+          const double ratio =
+            runs[level].summary.time_step / runs[0].summary.time_step;
+          if (std::abs(ratio / (1u << level) - 1) > max_step_ratio_deviation)
+            out << "Warning: the time step of the run with " << (1u << level)
+                << "h is " << ratio << " times that of this run, not "
+                << (1u << level) << " (choose N = T/k a multiple of 4)."
+                << std::endl;
+        }
+      for (const EstimateRow &row : rows)
+        if (!row.estimate.warning.empty())
+          out << "Warning: " << row.name << ": " << row.estimate.warning << "."
+              << std::endl;
+      return out.str();
     }
   } // namespace
 
@@ -256,104 +432,30 @@ namespace Contact
   void run_with_error_estimate(ParameterHandler &prm,
                                const Parameters &parameters)
   {
-    ConditionalOStream console(
-      std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
-    const bool exact = parameters.verification.manufactured_solution;
-
-    // The run itself first; it stays, since the coarse runs' displacements
+    // The run itself first; it stays, since the other runs' displacements
     // are interpolated onto its mesh.
-    ContactProblem<dim>       fine(parameters);
-    std::array<RunSummary, 3> runs;
-    runs[0] = fine.run();
+    ContactProblem<dim> fine(parameters);
+    std::vector<RunAtT> runs(1);
+    runs[0].summary      = fine.run();
+    runs[0].displacement = fine.get_displacement();
     const ReferenceInterpolation<dim> interpolate(fine);
-    std::array<VectorType, 3>         u;
-    u[0] = fine.get_displacement();
-    for (unsigned int level = 1; level <= 2; ++level)
+    runs.push_back(run_coarse(prm, parameters, 2, 2, "coarse-1", interpolate));
+    runs.push_back(run_coarse(prm, parameters, 4, 4, "coarse-2", interpolate));
+    if (parameters.accuracy.separate_space_and_time)
       {
-        ContactProblem<dim> coarse(
-          parameters_of_coarse_run(prm, parameters, level));
-        console << std::endl
-                << "Error estimate: the scene with h and k times "
-                << (1u << level) << std::endl;
-        runs[level] = coarse.run();
-        u[level]    = interpolate(interpolate.locate(coarse),
-                               coarse,
-                               coarse.get_displacement());
+        runs.push_back(
+          run_coarse(prm, parameters, 2, 1, "coarse-space", interpolate));
+        runs.push_back(
+          run_coarse(prm, parameters, 1, 2, "coarse-time", interpolate));
       }
 
-    const auto difference_norm = [&](const VectorType &a, const VectorType &b) {
-      VectorType difference(a);
-      difference -= b;
-      return fine.strain_norm(difference);
-    };
-    std::vector<EstimateRow> rows;
-    {
-      EstimateRow row{"V-norm of u",
-                      runs[0].displacement_V_norm,
-                      difference_norm(u[0], u[1]),
-                      difference_norm(u[1], u[2]),
-                      {}};
-      row.estimate    = field_error_estimate(row.d_fine,
-                                          row.d_coarse,
-                                          difference_norm(u[0], u[2]));
-      row.exact_error = runs[0].final_errors.displacement_V;
-      rows.push_back(row);
-    }
-    for (unsigned int q = 0; q < runs[0].final_quantities.size(); ++q)
-      {
-        const auto &[name, value] = runs[0].final_quantities[q];
-        EstimateRow row{name,
-                        value,
-                        value - runs[1].final_quantities[q].second,
-                        runs[1].final_quantities[q].second -
-                          runs[2].final_quantities[q].second,
-                        {}};
-        row.estimate = scalar_error_estimate(row.d_fine,
-                                             row.d_coarse,
-                                             rows[0].estimate.order);
-        rows.push_back(row);
-      }
-
-    std::ostringstream report;
-    report << "Error estimate of this run at T = " << parameters.time.end_time
-           << " (h = " << runs[0].cell_size << ", k = " << runs[0].time_step
-           << "), from the runs with h = " << runs[1].cell_size
-           << ", k = " << runs[1].time_step << " and h = " << runs[2].cell_size
-           << ", k = " << runs[2].time_step
-           << ": order = log2(|2h vs 4h| / |h vs 2h|), estimated error = "
-           << "|h vs 2h| / (2^order - 1); the V-norm of u is ||eps(u(T))||, "
-           << "its differences are the V-norms of the differences, and its "
-           << "estimate allows for error fields that change shape from run "
-           << "to run (correlation c below)"
-           << (exact ? "; exact error: against the manufactured solution" : "")
-           << std::endl;
-    write_table(rows, exact, report);
-    report << "V-norm of u: the error fields of consecutive runs correlate "
-           << "with c = " << std::setprecision(2)
-           << rows[0].estimate.correlation
-           << " (c = 1 is Richardson's assumption; c = 0, errors that are "
-           << "orthogonal, halves the estimate for order 1)." << std::endl
-           << std::setprecision(6);
-    // The time steps are T / ceil(N / 2^l): for N not a multiple of 4 their
-    // ratios differ a little from 2 and 4.
-    for (unsigned int level = 1; level <= 2; ++level)
-      {
-        const double ratio = runs[level].time_step / runs[0].time_step;
-        if (std::abs(ratio / (1u << level) - 1) > max_step_ratio_deviation)
-          report << "Warning: the time step of the run with " << (1u << level)
-                 << "h is " << ratio << " times that of this run, not "
-                 << (1u << level) << " (choose N = T/k a multiple of 4)."
-                 << std::endl;
-      }
-    for (const EstimateRow &row : rows)
-      if (!row.estimate.warning.empty())
-        report << "Warning: " << row.name << ": " << row.estimate.warning << "."
-               << std::endl;
-    console << std::endl << report.str();
+    const std::string text =
+      report(parameters, runs, estimate_rows(fine, runs));
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
+        std::cout << std::endl << text;
         std::ofstream file(parameters.output.directory + "/error_estimate.txt");
-        file << report.str();
+        file << text;
         AssertThrow(file.good(),
                     ExcMessage("Cannot write '" + parameters.output.directory +
                                "/error_estimate.txt'."));

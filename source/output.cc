@@ -93,7 +93,7 @@ namespace Contact
     // convergence study's levels.
     bool is_result_directory(const std::string &name)
     {
-      static const std::regex written("coarse-[12]|level-[0-9]+");
+      static const std::regex written("coarse-(1|2|space|time)|level-[0-9]+");
       return std::regex_match(name, written);
     }
   } // namespace

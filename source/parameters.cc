@@ -810,6 +810,14 @@ namespace Contact
         "order observed between the three runs, with a warning where the "
         "runs are not in the asymptotic range. The table goes to the "
         "console and to <Output directory>/error_estimate.txt.");
+      prm.declare_entry(
+        "Separate space and time",
+        "false",
+        Patterns::Bool(),
+        "With 'Estimate error': also run with 2h and k and with h and 2k "
+        "(coarse-space, coarse-time; in 2D about 1/4 and 1/2 of the run) "
+        "and split every estimate into the part that halving h removes "
+        "and the part that halving k does.");
     }
     prm.leave_subsection();
   }
@@ -818,7 +826,8 @@ namespace Contact
   {
     prm.enter_subsection("Accuracy");
     {
-      estimate_error = prm.get_bool("Estimate error");
+      estimate_error          = prm.get_bool("Estimate error");
+      separate_space_and_time = prm.get_bool("Separate space and time");
     }
     prm.leave_subsection();
   }
