@@ -268,13 +268,30 @@ def boundary_faces(points, cells, cell_type):
     return faces[index[counts == 1]], index[counts == 1] // len(local_faces)
 
 
+def gamma3_faces(points, cells, cell_type, arrays):
+    """The boundary faces on Gamma_3: those with all corners on it, and
+    where Gamma_3 is flat also those in its plane with some corner on it
+    (the nodes Gamma_3 shares with a clamp carry no status)."""
+    faces, _ = boundary_faces(points, cells, cell_type)
+    status = arrays["contact_status"][faces]
+    on_gamma3 = (status > 0).all(axis=1)
+    nodes = points[arrays["contact_status"] > 0]
+    if len(nodes) == 0:
+        return faces[on_gamma3]
+    normal = int(np.argmin(np.ptp(nodes, axis=0)))
+    extent = np.ptp(points, axis=0).max()
+    if np.ptp(nodes[:, normal]) <= 1e-9 * extent:
+        in_plane = (np.abs(points[faces][:, :, normal] - nodes[0, normal])
+                    <= 1e-9 * extent).all(axis=1)
+        on_gamma3 |= in_plane & (status > 0).any(axis=1)
+    return faces[on_gamma3]
+
+
 def draw_gamma3_map(axis, points, cells, cell_type, arrays):
     """Gamma_3's faces in its plane (the two coordinates in which it
     extends furthest), coloured by the share of their nodes that slip.
     Returns the number of faces."""
-    faces, _ = boundary_faces(points, cells, cell_type)
-    status = arrays["contact_status"][faces]
-    faces = faces[(status > 0).all(axis=1)]
+    faces = gamma3_faces(points, cells, cell_type, arrays)
     if len(faces) == 0:
         axis.set_axis_off()
         return 0
@@ -371,7 +388,7 @@ def plot_deformed(directory, times, field, output):
             axis = figure.add_subplot(rows, columns, i + 1)
             n_cells = draw_deformed_2d(axis, points, cells, cell_type, arrays,
                                        field, limits)
-            shown.append(f"t = {t:.4g}: {n_cells} cells, {n_stick} stick / "
+            shown.append(f"t = {t:.4g}: {n_cells} drawn cells, {n_stick} stick / "
                          f"{n_slip} slip nodes")
         else:
             n_faces = draw_gamma3_map(

@@ -185,7 +185,8 @@ namespace Contact
         std::filesystem::remove(parameters.output.directory + "/.partial",
                                 error);
       }
-    output_directory_lock.reset();
+    // The lock on the output directory is kept until the problem is
+    // destroyed: an error estimate's coarse runs still write under it.
     require_self_checks();
 
     RunSummary summary;

@@ -90,11 +90,14 @@ namespace Contact
     }
 
     // The directories of an error estimate's coarse runs and of a
-    // convergence study's levels.
-    bool is_result_directory(const std::string &name)
+    // convergence study's levels: a name this program gives them, and the
+    // parameters.prm that each of its runs writes (a user's own
+    // 'level-1' folder is not one).
+    bool is_result_directory(const std::filesystem::path &path)
     {
       static const std::regex written("coarse-(1|2|space|time)|level-[0-9]+");
-      return std::regex_match(name, written);
+      return std::regex_match(path.filename().string(), written) &&
+             std::filesystem::exists(path / "parameters.prm");
     }
   } // namespace
 
@@ -119,10 +122,12 @@ namespace Contact
   // @sect4{ContactProblem::prepare_output_directory}
 
   // A fresh run first removes the results an earlier run left in the
-  // directory (VTU/PVD, time series, parameters, checkpoints; other files
-  // stay), so that its PVD lists only its own files and a later --resume
-  // cannot resume the earlier run. A resumed run keeps them, cut back to
-  // the checkpoint (load_checkpoint).
+  // directory (VTU/PVD, time series, Gamma_3 history, parameters,
+  // checkpoints, an error estimate and a study's table, and the coarse-*
+  // and level-* directories of such runs; other files stay), so that its PVD
+  // lists only its own files and a later --resume cannot resume the earlier
+  // run. A resumed run keeps them, cut back to the checkpoint
+  // (load_checkpoint).
   template <int dim>
   void ContactProblem<dim>::prepare_output_directory()
   {
@@ -137,8 +142,7 @@ namespace Contact
           if (entry.is_regular_file() &&
               is_result_file(entry.path().filename().string()))
             std::filesystem::remove(entry.path(), error);
-          else if (entry.is_directory() &&
-                   is_result_directory(entry.path().filename().string()))
+          else if (entry.is_directory() && is_result_directory(entry.path()))
             std::filesystem::remove_all(entry.path(), error);
         std::filesystem::remove_all(directory + "/.partial", error);
       }

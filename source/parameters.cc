@@ -847,7 +847,7 @@ namespace Contact
                         "A run that is not resumed replaces the results of "
                         "an earlier run there (its VTU/PVD, time series, "
                         "Gamma_3 history, parameters, checkpoints, error "
-                        "estimate with its coarse-1/2 and a study's table "
+                        "estimate with its coarse-* runs and a study's table "
                         "with its level-N); one run at a time "
                         "may use it (the lock file .lock names the run).");
       prm.declare_entry("VTU interval",
@@ -981,6 +981,13 @@ namespace Contact
   // (not a study, not a resumed run).
   void Parameters::check_error_estimate() const
   {
+    AssertThrow(accuracy.estimate_error || !accuracy.separate_space_and_time,
+                ExcMessage("Entry '" + Entry::separate_space_and_time +
+                           "' = true splits an error estimate: allowed with "
+                           "it is '" +
+                           Entry::estimate_error + "' = true."));
+    if (!accuracy.estimate_error)
+      return;
     AssertThrow(convergence_study.levels == 0 && !output.resume,
                 ExcMessage("Entry '" + Entry::estimate_error +
                            "' = true runs one scene with its error estimate; "
@@ -1007,17 +1014,22 @@ namespace Contact
           return static_cast<long>(std::max(1., std::round(edge / size)));
         };
         const long n = cells(geometry.cell_size);
-        check_entry(n % 4 == 0 && cells(2 * geometry.cell_size) == n / 2 &&
-                      cells(4 * geometry.cell_size) == n / 4,
-                    Entry::cell_size,
-                    geometry.cell_size,
-                    "with '" + Entry::estimate_error +
-                      "' = true, a size that divides every edge of the box "
-                      "into a multiple of 4 cells (the coarse runs have "
-                      "cells of 2h and 4h); here the edge " +
-                      std::string(1, "xyz"[d]) + " of length " +
-                      number_text(edge) + " gets " + std::to_string(n) +
-                      " cells");
+        check_entry(
+          n % 4 == 0 && cells(2 * geometry.cell_size) == n / 2 &&
+            cells(4 * geometry.cell_size) == n / 4,
+          Entry::cell_size,
+          geometry.cell_size,
+          "a size that divides every edge of the box into a "
+          "multiple of 4 cells with '" +
+            Entry::estimate_error +
+            "' = true (the coarse runs have cells of 2h and 4h); "
+            "for this edge e.g. " +
+            number_text(
+              edge /
+              (4 *
+               std::max(1l, std::lround(edge / (4 * geometry.cell_size))))) +
+            "; here the edge " + std::string(1, "xyz"[d]) + " of length " +
+            number_text(edge) + " gets " + std::to_string(n) + " cells");
       }
   }
 
@@ -1072,8 +1084,7 @@ namespace Contact
                 ExcMessage("Entry 'Output/Resume' (--resume): a convergence "
                            "study ('Convergence study/Levels' > 0) cannot be "
                            "resumed; allowed is Resume = false there."));
-    if (accuracy.estimate_error)
-      check_error_estimate();
+    check_error_estimate();
 
     std::ostringstream text;
     prm.print_parameters(text,
