@@ -219,6 +219,19 @@ namespace Contact
   };
 
 
+  /** Creates `directory` and locks it for this process while the returned
+   *  handle lives (collective; throws, naming the holder, when another
+   *  process has it). The kernel releases the lock however the process
+   *  ends. */
+  std::shared_ptr<const int> lock_output_directory(const std::string &directory,
+                                                   const MPI_Comm communicator);
+
+  /** The names of a target's pilot directories (target_error.cc), which a
+   *  fresh run removes with its other results. */
+  inline const std::string pilot_directory_pattern =
+    "pilot-q[12]-[24]?h-[24]?k";
+
+
   /** The stick/slip state of Gamma_3: its counts, and the x range of the
    *  slipping nodes (empty without slip). */
   struct SlipZone

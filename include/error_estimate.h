@@ -10,10 +10,14 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <contact_problem.h>
 #include <parameters.h>
 
+#include <cmath>
 #include <limits>
+#include <map>
 #include <string>
+#include <vector>
 
 namespace Contact
 {
@@ -27,6 +31,9 @@ namespace Contact
    *  their time step to the run's that differs from 2 or 4 by more than
    *  this (relative) gets a warning. */
   constexpr double max_step_ratio_deviation = 0.05;
+  /** Orders in h and k closer than this are not told apart: the estimate
+   *  then uses the one order the runs show. */
+  constexpr double min_order_separation = 0.25;
 
   /** The estimate from one quantity's values on the run (h, k), with 2h
    *  and with 4h, for differences d_fine = Q_h - Q_2h and d_coarse =
@@ -68,11 +75,131 @@ namespace Contact
                                           const double d_coarse,
                                           const double d_across);
 
-  /** Runs the scene of `parameters` and its two coarse versions, and prints
-   *  and writes the estimated errors (error_estimate.txt). */
+  /** A version of the scene `base`: element degree, h halved `finer`
+   *  times (doubled for negative values; a mesh file refined `finer` times
+   *  more), `n_steps` steps to T, written to `directory`. A quiet version
+   *  (a coarse run, a pilot) writes no VTU, Gamma_3 history or checkpoint
+   *  and runs without estimate or target; the others have the output of
+   *  `base` and its error estimate. */
+  struct SceneVersion
+  {
+    unsigned int degree;
+    int          finer;
+    unsigned int n_steps;
+    std::string  directory;
+    bool         quiet;
+  };
+
+  /** The parameters of `version`, set in prm (as --set would) and parsed. */
+  Parameters parameters_of_version(ParameterHandler   &prm,
+                                   const Parameters   &base,
+                                   const SceneVersion &version);
+
+  /** One row of an estimate's table: a quantity's value (for the V-norm
+   *  ||eps(u_h(T))||), its differences to the runs with 2h and 4h (for the
+   *  V-norm the norms of the differences), the estimate, with the
+   *  separation its space and time parts, and with a manufactured solution
+   *  the exact error. */
+  struct EstimateRow
+  {
+    std::string        name;
+    double             value;
+    double             d_fine;
+    double             d_coarse;
+    RichardsonEstimate estimate;
+    double             space_part  = std::numeric_limits<double>::quiet_NaN();
+    double             time_part   = std::numeric_limits<double>::quiet_NaN();
+    double             exact_error = std::numeric_limits<double>::quiet_NaN();
+    /** For worst_V_error: the time of the largest estimate. */
+    double time = std::numeric_limits<double>::quiet_NaN();
+  };
+
+  /** A run with its error estimate: its summary, the table, and the wall
+   *  time of all its runs. */
+  struct EstimatedRun
+  {
+    RunSummary               summary;
+    std::vector<EstimateRow> rows;
+    double                   wall_time = 0;
+  };
+
+  /** |e_h + e_k| for errors of norms E_h, E_k whose directions have the
+   *  cosine c (for a quantity: c = 1, their sizes add). */
+  inline double combined_error(const double space_error,
+                               const double time_error,
+                               const double cosine)
+  {
+    return std::sqrt(space_error * space_error + time_error * time_error +
+                     2 * cosine * space_error * time_error);
+  }
+
+  /** The orders p in h and q in k of a quantity's error, and the cosine of
+   *  the angle between its space and time errors, where other runs (a
+   *  target's pilots) measured them. */
+  struct TwoOrders
+  {
+    double space;
+    double time;
+    double cosine;
+  };
+  using KnownOrders = std::map<std::string, TwoOrders>;
+
+  /** The error of a run from d_fine and d_coarse (as above) where the error
+   *  is e_h + e_k with the known orders (error_estimate.cc); `field`: the
+   *  d are norms of field differences, else signed differences. NaN where
+   *  p and q are too close to tell the parts apart. */
+  double two_order_error_estimate(const double     d_fine,
+                                  const double     d_coarse,
+                                  const TwoOrders &orders,
+                                  const bool       field);
+
+
+  /** A run's summary, and its displacement at T and at the times of a
+   *  coarser time grid, interpolated onto another run's mesh. */
+  struct RunAtTimes
+  {
+    RunSummary              summary;
+    VectorType              displacement;
+    std::vector<VectorType> history;
+  };
+
   template <int dim>
-  void run_with_error_estimate(ParameterHandler &prm,
-                               const Parameters &parameters);
+  class ReferenceInterpolation;
+
+  /** Runs `problem`, keeping its displacement at every `stride`-th step
+   *  (none for 0) and at T, interpolated by `onto` (its own for null). */
+  template <int dim>
+  RunAtTimes run_onto(ContactProblem<dim>               &problem,
+                      const ReferenceInterpolation<dim> *onto,
+                      const unsigned int                 stride);
+
+  /** The estimate of a field from its three differences, with two known
+   *  orders where given (two_order_error_estimate) and else with the one
+   *  the runs show (field_error_estimate). */
+  RichardsonEstimate field_estimate(const double     d_fine,
+                                    const double     d_coarse,
+                                    const double     d_across,
+                                    const TwoOrders *known);
+
+  /** The row worst_V_error from the histories of three runs (h, 2h, 4h;
+   *  their common times t_j = (j + 1) coarse_time_step): the largest
+   *  estimate over the t_j, at `time`. */
+  template <int dim>
+  EstimateRow worst_time_row(const ContactProblem<dim> &fine,
+                             const RunAtTimes          &f,
+                             const RunAtTimes          &m,
+                             const RunAtTimes          &c,
+                             const double               coarse_time_step,
+                             const TwoOrders           *known);
+
+  /** Runs the scene of `parameters` and its two coarse versions, and prints
+   *  and writes the estimated errors (error_estimate.txt). A quantity with
+   *  known orders in h and k is extrapolated with both (error_estimate.cc).
+   */
+  template <int dim>
+  EstimatedRun run_with_error_estimate(ParameterHandler  &prm,
+                                       const Parameters  &parameters,
+                                       const KnownOrders &orders = {});
 } // namespace Contact
 
 #endif

@@ -90,6 +90,10 @@ namespace Contact
     inline const std::string estimate_error = "Accuracy/Estimate error";
     inline const std::string separate_space_and_time =
       "Accuracy/Separate space and time";
+    inline const std::string target_error      = "Accuracy/Target error";
+    inline const std::string target_error_type = "Accuracy/Target error type";
+    inline const std::string target_quantity   = "Accuracy/Target quantity";
+    inline const std::string cost_model        = "Accuracy/Cost model";
 
     /** All of the above, for the test. */
     inline std::vector<std::string> all()
@@ -135,7 +139,11 @@ namespace Contact
               manufactured_solution,
               levels,
               estimate_error,
-              separate_space_and_time};
+              separate_space_and_time,
+              target_error,
+              target_error_type,
+              target_quantity,
+              cost_model};
     }
   } // namespace Entry
 
@@ -308,6 +316,10 @@ namespace Contact
     void        parse_parameters(ParameterHandler &prm);
   };
 
+  /** The name of the largest V-error over the times of an estimate's
+   *  coarsest run (a row of the estimate, a 'Target quantity'). */
+  inline const std::string worst_V_error = "V-norm of u, max over t";
+
   struct AccuracyParameters
   {
     /** Also run the scene with h and k doubled and quadrupled, and report
@@ -316,6 +328,16 @@ namespace Contact
     /** Also run with 2h, k and with h, 2k, and split each estimate into
      *  the part that halving h removes and the part that halving k does. */
     bool separate_space_and_time;
+    /** 0: off; else the error that the program picks h, k and the element
+     *  degree for (target_error.cc). */
+    double target_error;
+    /** Relative to the size of the quantity, or absolute. */
+    bool target_is_relative;
+    /** "V-norm of u" or the name of a quantity of the estimate's table. */
+    std::string target_quantity;
+    /** Predict the cost of a run from the pilots' measured wall times, or
+     *  (reproducibly, for tests) from unknowns times steps. */
+    bool measured_cost;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);
@@ -365,6 +387,7 @@ namespace Contact
 
   private:
     void check_error_estimate() const;
+    void check_target_quantity() const;
   };
 
   /**

@@ -21,6 +21,7 @@
 #include <fstream>
 #include <future>
 #include <iomanip>
+#include <map>
 #include <regex>
 #include <sstream>
 
@@ -31,8 +32,8 @@ namespace Contact
     // The output directory, created, and locked with flock() on its file
     // '.lock' (which then holds the pid): the kernel releases the lock when
     // the process ends, however it ends. Returns the reason on failure.
-    std::string lock_output_directory(const std::string          &directory,
-                                      std::shared_ptr<const int> &lock)
+    std::string flock_output_directory(const std::string          &directory,
+                                       std::shared_ptr<const int> &lock)
     {
       std::error_code error;
       std::filesystem::create_directories(directory, error);
@@ -85,21 +86,50 @@ namespace Contact
       static const std::regex written(
         "solution_[0-9]{5}\\.([0-9]+\\.vtu|pvtu)|solution\\.pvd(\\.tmp)?|"
         "(time_series|gamma3_history)\\.csv(\\.tmp)?|checkpoint(\\.[0-9]+)?(\\.tmp)?|"
-        "parameters\\.prm|error_estimate\\.txt|convergence\\.txt");
+        "parameters\\.prm|error_estimate\\.txt|target\\.txt|convergence\\.txt");
       return std::regex_match(name, written);
     }
 
-    // The directories of an error estimate's coarse runs and of a
-    // convergence study's levels: a name this program gives them, and the
-    // parameters.prm that each of its runs writes (a user's own
+    // The directories of an error estimate's coarse runs, of a target's
+    // pilots and of a convergence study's levels: a name this program gives
+    // them, and the parameters.prm that each of its runs writes (a user's own
     // 'level-1' folder is not one).
     bool is_result_directory(const std::filesystem::path &path)
     {
-      static const std::regex written("coarse-(1|2|space|time)|level-[0-9]+");
+      static const std::regex written("coarse-(1|2|space|time)|level-[0-9]+|" +
+                                      pilot_directory_pattern);
       return std::regex_match(path.filename().string(), written) &&
              std::filesystem::exists(path / "parameters.prm");
     }
   } // namespace
+
+
+  // A directory this process holds already is shared rather than locked
+  // again (flock would refuse a second descriptor of the same process): an
+  // error estimate's or a target's runs write under the lock of the run
+  // that contains them.
+  std::shared_ptr<const int> lock_output_directory(const std::string &directory,
+                                                   const MPI_Comm communicator)
+  {
+    static std::map<std::string, std::weak_ptr<const int>> held;
+    std::shared_ptr<const int>                             lock;
+    std::string                                            failure;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::error_code   error;
+        const std::string key =
+          std::filesystem::weakly_canonical(directory, error).string();
+        lock = held[key].lock();
+        if (!lock)
+          {
+            failure   = flock_output_directory(directory, lock);
+            held[key] = lock;
+          }
+      }
+    failure = Utilities::MPI::broadcast(communicator, failure, 0);
+    AssertThrow(failure.empty(), ExcMessage(failure));
+    return lock;
+  }
 
 
   // @sect4{ContactProblem::claim_output_directory}
@@ -110,12 +140,8 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::claim_output_directory()
   {
-    std::string failure;
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      failure = lock_output_directory(parameters.output.directory,
-                                      output_directory_lock);
-    failure = Utilities::MPI::broadcast(mpi_communicator, failure, 0);
-    AssertThrow(failure.empty(), ExcMessage(failure));
+    output_directory_lock =
+      lock_output_directory(parameters.output.directory, mpi_communicator);
   }
 
 
@@ -142,7 +168,12 @@ namespace Contact
           if (entry.is_regular_file() &&
               is_result_file(entry.path().filename().string()))
             std::filesystem::remove(entry.path(), error);
-          else if (entry.is_directory() && is_result_directory(entry.path()))
+          else if (entry.is_directory() && is_result_directory(entry.path()) &&
+                   !(parameters.accuracy.target_error > 0 &&
+                     std::regex_match(entry.path().filename().string(),
+                                      std::regex(pilot_directory_pattern))))
+            // The run that a target chose keeps the pilots it was chosen
+            // by.
             std::filesystem::remove_all(entry.path(), error);
         std::filesystem::remove_all(directory + "/.partial", error);
       }

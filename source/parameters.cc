@@ -8,6 +8,7 @@
 
 #include <parameters.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -818,6 +819,40 @@ namespace Contact
         "(coarse-space, coarse-time; in 2D about 1/4 and 1/2 of the run) "
         "and split every estimate into the part that halving h removes "
         "and the part that halving k does.");
+      prm.declare_entry(
+        "Target error",
+        "0",
+        Patterns::Double(0),
+        "0: off. Otherwise the error at T, in 'Target quantity', that the "
+        "program picks the element degree (1 or 2), h and k for: pilot runs "
+        "on the scene's h and k and on 2h, 4h, 2k, 4k (<Output "
+        "directory>/pilot-*) measure how the error falls with h and with k "
+        "and what a run costs; the cheapest run predicted to reach the "
+        "target then runs, with its error estimate (as 'Estimate error'). "
+        "The choice and the predicted and estimated errors are printed and "
+        "written to <Output directory>/target.txt.");
+      prm.declare_entry("Target error type",
+                        "relative",
+                        Patterns::Selection("relative|absolute"),
+                        "relative: 'Target error' times the size of the "
+                        "quantity (for the V-norm ||eps(u_h(T))||); "
+                        "absolute: in the quantity's units.");
+      prm.declare_entry(
+        "Target quantity",
+        worst_V_error,
+        Patterns::Anything(),
+        "The quantity whose error 'Target error' bounds: '" + worst_V_error +
+          "' (the largest V-error ||eps(u - u_h)|| over the times t = 4Kj), "
+          "or at T: 'V-norm of u', 'friction dissipation', 'probe <i> u_x' "
+          "(u_y, u_z) of the i-th 'Output/Probe points' entry, 'slipping "
+          "share of Gamma_3' or 'slip zone starts at x'.");
+      prm.declare_entry("Cost model",
+                        "measured",
+                        Patterns::Selection("measured|unknowns times steps"),
+                        "How the target predicts what a run costs: from "
+                        "the pilots' measured wall times (a + b unknowns "
+                        "steps, per degree), or unknowns times steps "
+                        "(the same choice on every machine).");
     }
     prm.leave_subsection();
   }
@@ -828,6 +863,10 @@ namespace Contact
     {
       estimate_error          = prm.get_bool("Estimate error");
       separate_space_and_time = prm.get_bool("Separate space and time");
+      target_error            = prm.get_double("Target error");
+      target_is_relative      = prm.get("Target error type") == "relative";
+      target_quantity         = prm.get("Target quantity");
+      measured_cost           = prm.get("Cost model") == "measured";
     }
     prm.leave_subsection();
   }
@@ -977,20 +1016,38 @@ namespace Contact
   }
 
   // An error estimate runs the scene twice more, with h and k doubled and
-  // quadrupled: the coarse meshes must exist, and the runs are separate
-  // (not a study, not a resumed run).
+  // quadrupled, and a target's pilots do so in h and in k separately: the
+  // coarse meshes must exist, and the runs are separate (not a study, not
+  // a resumed run).
   void Parameters::check_error_estimate() const
   {
-    AssertThrow(accuracy.estimate_error || !accuracy.separate_space_and_time,
+    const bool target = accuracy.target_error > 0;
+    AssertThrow(accuracy.estimate_error || target ||
+                  !accuracy.separate_space_and_time,
                 ExcMessage("Entry '" + Entry::separate_space_and_time +
                            "' = true splits an error estimate: allowed with "
                            "it is '" +
-                           Entry::estimate_error + "' = true."));
-    if (!accuracy.estimate_error)
+                           Entry::estimate_error + "' = true or '" +
+                           Entry::target_error + "' > 0."));
+    if (target)
+      {
+        check_target_quantity();
+        check_entry(time.n_steps() % 4 == 0,
+                    Entry::time_step,
+                    time.end_time / time.n_steps(),
+                    "a step that divides '" + Entry::end_time +
+                      "' into a multiple of 4 steps with '" +
+                      Entry::target_error +
+                      "' > 0 (the pilots run with 2k and 4k on the same "
+                      "time grid)");
+      }
+    if (!accuracy.estimate_error && !target)
       return;
+    const std::string mode = target ? "'" + Entry::target_error + "' > 0" :
+                                      "'" + Entry::estimate_error + "' = true";
     AssertThrow(convergence_study.levels == 0 && !output.resume,
-                ExcMessage("Entry '" + Entry::estimate_error +
-                           "' = true runs one scene with its error estimate; "
+                ExcMessage("Entry " + mode +
+                           " runs one scene with its error estimate; "
                            "allowed with it are '" +
                            Entry::levels + "' = 0 and no --resume ('" +
                            Entry::resume + "' = false)."));
@@ -999,9 +1056,9 @@ namespace Contact
         check_entry(geometry.mesh_refinements >= 2,
                     Entry::mesh_refinements,
                     geometry.mesh_refinements,
-                    "at least 2 with '" + Entry::estimate_error +
-                      "' = true (the coarse runs use one and two "
-                      "refinements fewer)");
+                    "at least 2 with " + mode +
+                      " (the coarse runs use one and two refinements "
+                      "fewer)");
         return;
       }
     // The box has round(edge / h) cells along each edge: the coarse runs
@@ -1020,9 +1077,9 @@ namespace Contact
           Entry::cell_size,
           geometry.cell_size,
           "a size that divides every edge of the box into a "
-          "multiple of 4 cells with '" +
-            Entry::estimate_error +
-            "' = true (the coarse runs have cells of 2h and 4h); "
+          "multiple of 4 cells with " +
+            mode +
+            " (the coarse runs have cells of 2h and 4h); "
             "for this edge e.g. " +
             number_text(
               edge /
@@ -1031,6 +1088,29 @@ namespace Contact
             "; here the edge " + std::string(1, "xyz"[d]) + " of length " +
             number_text(edge) + " gets " + std::to_string(n) + " cells");
       }
+  }
+
+  // The names of the quantities at T that final_quantities() gives.
+  void Parameters::check_target_quantity() const
+  {
+    std::vector<std::string> names = {worst_V_error,
+                                      "V-norm of u",
+                                      "friction dissipation",
+                                      "slipping share of Gamma_3",
+                                      "slip zone starts at x"};
+    for (unsigned int i = 0; i < output.probe_points.size(); ++i)
+      for (unsigned int d = 0; d < dimension; ++d)
+        names.push_back("probe " + std::to_string(i + 1) + " u_" +
+                        std::string(1, "xyz"[d]));
+    std::string list;
+    for (const std::string &name : names)
+      list += (list.empty() ? "'" : ", '") + name + "'";
+    AssertThrow(
+      std::find(names.begin(), names.end(), accuracy.target_quantity) !=
+        names.end(),
+      ExcMessage("Entry '" + Entry::target_quantity + "' = '" +
+                 accuracy.target_quantity +
+                 "' is not a quantity of this scene; allowed: " + list + "."));
   }
 
   void Parameters::parse_parameters(ParameterHandler &prm)

@@ -10,6 +10,7 @@
 
 #include <contact_problem.h>
 #include <error_estimate.h>
+#include <target_error.h>
 #include <reference_interpolation.h>
 #include <run.h>
 
@@ -689,6 +690,10 @@ namespace Contact
       run_convergence_study<2>(prm, parameters);
     else if (parameters.convergence_study.levels > 0)
       run_convergence_study<3>(prm, parameters);
+    else if (parameters.accuracy.target_error > 0 && dimension == 2)
+      run_to_target<2>(prm, parameters);
+    else if (parameters.accuracy.target_error > 0)
+      run_to_target<3>(prm, parameters);
     else if (parameters.accuracy.estimate_error && dimension == 2)
       run_with_error_estimate<2>(prm, parameters);
     else if (parameters.accuracy.estimate_error)

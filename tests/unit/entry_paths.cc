@@ -68,10 +68,10 @@ int main()
   bool          in_entry  = false;
   for (std::string line; std::getline(header, line);)
     {
-      if (line.find("namespace Entry") != std::string::npos)
-        in_entry = true;
-      else if (line.find("} // namespace Entry") != std::string::npos)
+      if (line.find("} // namespace Entry") != std::string::npos)
         in_entry = false;
+      else if (line.find("namespace Entry") != std::string::npos)
+        in_entry = true;
       else if (in_entry &&
                line.find("inline const std::string") != std::string::npos)
         ++constants;

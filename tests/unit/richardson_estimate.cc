@@ -97,6 +97,39 @@ int main()
                 << ", warning: " << (e.warning.empty() ? "none" : e.warning)
                 << std::endl;
     }
+  // Errors e_h + e_k of orders 2 in h and 1 in k (quadratic elements) on
+  // runs with (h, k), (2h, 2k), (4h, 4k): d_fine = 3 e_h + e_k, d_coarse =
+  // 12 e_h + 2 e_k. The two-order estimate must recover |e_h + e_k| for a
+  // quantity and, with the cosine c of the parts, for a field; one order
+  // (plain Richardson) does not where the parts are comparable.
+  for (const double space_share : {0., 0.3, 0.7, 1.})
+    for (const double c : {0., 0.5})
+      {
+        const double E_h = 1e-3 * space_share, E_k = 1e-3 - E_h;
+        const double d_fine   = Contact::combined_error(3 * E_h, E_k, c);
+        const double d_coarse = Contact::combined_error(12 * E_h, 2 * E_k, c);
+        const double exact    = Contact::combined_error(E_h, E_k, c);
+        std::cout
+          << "space share " << space_share << ", cosine " << c
+          << ": two orders / true error "
+          << Contact::two_order_error_estimate(d_fine,
+                                               d_coarse,
+                                               {2, 1, c},
+                                               true) /
+               exact
+          << ", for a quantity "
+          << Contact::two_order_error_estimate(3 * E_h - E_k,
+                                               12 * E_h - 2 * E_k,
+                                               {2, 1, 1},
+                                               false) /
+               std::abs(E_h - E_k)
+          << ", one order "
+          << Contact::richardson_estimate(d_fine, d_coarse, false).error / exact
+          << std::endl;
+      }
+  std::cout << "orders 1 and 0.9 are not told apart: "
+            << Contact::two_order_error_estimate(1e-3, 2e-3, {1, 0.9, 0}, true)
+            << std::endl;
   print("norms of field differences, halving", 1e-3, 2e-3, false);
   print("differences that change sign", 1e-3, -2e-3, true);
   print("differences that grow", 2e-3, 1e-3, true);
