@@ -603,10 +603,15 @@ namespace Contact
           << (exact ? "; exact error: against the manufactured solution" : "")
           << std::endl;
       for (const auto &[name, known] : orders)
-        out << name << ": estimated as the sum of a space and a time part "
-            << "with the orders " << known.space << " in h and " << known.time
-            << " in k that the target's pilots measured (the order column "
-            << "is what the three runs show)." << std::endl;
+        out << name << ": the target's pilots measured the orders "
+            << known.space << " in h and " << known.time << " in k; "
+            << (std::abs(known.space - known.time) >= min_order_separation ?
+                  "estimated as the sum of a space and a time part with "
+                  "these orders (the order column is what the three runs "
+                  "show)." :
+                  "too close to tell the parts apart: one order, as for "
+                  "the other rows.")
+            << std::endl;
       write_table(rows, exact, separate, out);
       for (const EstimateRow &row : rows)
         if (std::isfinite(row.time))

@@ -117,8 +117,9 @@ namespace Contact
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         std::error_code   error;
-        const std::string key =
-          std::filesystem::weakly_canonical(directory, error).string();
+        const std::string key = std::filesystem::weakly_canonical(
+                                  std::filesystem::absolute(directory), error)
+                                  .string();
         lock = held[key].lock();
         if (!lock)
           {
@@ -129,6 +130,23 @@ namespace Contact
     failure = Utilities::MPI::broadcast(communicator, failure, 0);
     AssertThrow(failure.empty(), ExcMessage(failure));
     return lock;
+  }
+
+
+  void remove_result_directories(const std::string &directory,
+                                 const std::string &pattern,
+                                 const MPI_Comm     communicator)
+  {
+    if (Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+    const std::regex name(pattern);
+    std::error_code  error;
+    for (const auto &entry :
+         std::filesystem::directory_iterator(directory, error))
+      if (entry.is_directory() &&
+          std::regex_match(entry.path().filename().string(), name) &&
+          std::filesystem::exists(entry.path() / "parameters.prm"))
+        std::filesystem::remove_all(entry.path(), error);
   }
 
 

@@ -30,12 +30,10 @@
 #include <cmath>
 #include <functional>
 #include <memory>
-#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
 #include <optional>
-#include <regex>
 #include <sstream>
 
 namespace Contact
@@ -574,13 +572,9 @@ namespace Contact
     };
     // The lock of the whole target run; the chosen run shares it.
     const auto lock = lock_output_directory(directory, MPI_COMM_WORLD);
-    if (root)
-      for (const auto &entry : std::filesystem::directory_iterator(directory))
-        if (entry.is_directory() &&
-            std::regex_match(entry.path().filename().string(),
-                             std::regex(pilot_directory_pattern)) &&
-            std::filesystem::exists(entry.path() / "parameters.prm"))
-          std::filesystem::remove_all(entry.path());
+    remove_result_directories(directory,
+                              pilot_directory_pattern,
+                              MPI_COMM_WORLD);
 
     const PilotResults pilots =
       run_pilots<dim>(prm, parameters, [&](const std::string &line) {
