@@ -226,12 +226,14 @@ namespace Contact
   std::shared_ptr<const int> lock_output_directory(const std::string &directory,
                                                    const MPI_Comm communicator);
 
-  /** Removes the subdirectories of `directory` whose names match `pattern`
-   *  and that hold a parameters.prm (runs of this program, not a user's
-   *  folder of the same name); on the first process. */
-  void remove_result_directories(const std::string &directory,
-                                 const std::string &pattern,
-                                 const MPI_Comm     communicator);
+  /** Removes what earlier runs left in `directory`: the files this program
+   *  writes (VTU/PVD, time series, Gamma_3 history, parameters,
+   *  checkpoints, estimate, target and study tables) and the coarse-*,
+   *  level-* and (unless kept) pilot-* directories of such runs; other
+   *  files stay. On the first process. */
+  void remove_results(const std::string &directory,
+                      const bool         keep_pilots,
+                      const MPI_Comm     communicator);
 
   /** The names of a target's pilot directories (target_error.cc), which a
    *  fresh run removes with its other results. */

@@ -436,11 +436,15 @@ namespace Contact
     // correlation of consecutive errors). For a quantity it carries the
     // sign of its difference relative to the total's: parts of opposite
     // signs, or a part larger than the total, are space and time errors
-    // that cancel.
+    // that cancel. Where the part's order is known (a target's pilots), the
+    // difference is extrapolated with it.
     double part_of_error(const EstimateRow &row,
                          const double       difference,
-                         const bool         is_field)
+                         const bool         is_field,
+                         const double       known_order)
     {
+      if (std::isfinite(known_order))
+        return difference / (std::pow(2., known_order) - 1);
       if (!std::isfinite(difference) || row.d_fine == 0)
         return std::numeric_limits<double>::quiet_NaN();
       const double ratio = difference / row.d_fine;
@@ -464,6 +468,26 @@ namespace Contact
         difference -= b;
         return fine.strain_norm(difference);
       };
+      // The orders of a row's two parts where they are known and tell the
+      // parts apart (the estimate then uses them), else NaN.
+      const auto two_orders = [&](const std::string &name) {
+        const TwoOrders *orders_of_row = known(name);
+        return orders_of_row &&
+                   std::abs(orders_of_row->space - orders_of_row->time) >=
+                     min_order_separation ?
+                 orders_of_row :
+                 nullptr;
+      };
+      const auto space_order = [&](const std::string &name) {
+        const TwoOrders *orders_of_row = two_orders(name);
+        return orders_of_row ? orders_of_row->space :
+                               std::numeric_limits<double>::quiet_NaN();
+      };
+      const auto time_order = [&](const std::string &name) {
+        const TwoOrders *orders_of_row = two_orders(name);
+        return orders_of_row ? orders_of_row->time :
+                               std::numeric_limits<double>::quiet_NaN();
+      };
       const bool               separate = runs.size() == 5;
       std::vector<EstimateRow> rows;
       EstimateRow              v{"V-norm of u",
@@ -482,11 +506,13 @@ namespace Contact
           v.space_part = part_of_error(v,
                                        difference_norm(runs[0].displacement,
                                                        runs[3].displacement),
-                                       true);
+                                       true,
+                                       space_order(v.name));
           v.time_part  = part_of_error(v,
                                       difference_norm(runs[0].displacement,
                                                       runs[4].displacement),
-                                      true);
+                                      true,
+                                      time_order(v.name));
         }
       rows.push_back(v);
       if (!runs[2].history.empty())
@@ -523,10 +549,14 @@ namespace Contact
             }
           if (separate)
             {
-              row.space_part =
-                part_of_error(row, value(0, q) - value(3, q), false);
-              row.time_part =
-                part_of_error(row, value(0, q) - value(4, q), false);
+              row.space_part = part_of_error(row,
+                                             value(0, q) - value(3, q),
+                                             false,
+                                             space_order(row.name));
+              row.time_part  = part_of_error(row,
+                                            value(0, q) - value(4, q),
+                                            false,
+                                            time_order(row.name));
             }
           rows.push_back(row);
         }

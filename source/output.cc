@@ -116,7 +116,9 @@ namespace Contact
     std::string                                            failure;
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
-        std::error_code   error;
+        // The key of a directory that exists: 'out/' and 'out' alike.
+        std::error_code error;
+        std::filesystem::create_directories(directory, error);
         const std::string key = std::filesystem::weakly_canonical(
                                   std::filesystem::absolute(directory), error)
                                   .string();
@@ -133,20 +135,24 @@ namespace Contact
   }
 
 
-  void remove_result_directories(const std::string &directory,
-                                 const std::string &pattern,
-                                 const MPI_Comm     communicator)
+  void remove_results(const std::string &directory,
+                      const bool         keep_pilots,
+                      const MPI_Comm     communicator)
   {
     if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
-    const std::regex name(pattern);
+    const std::regex pilot(pilot_directory_pattern);
     std::error_code  error;
     for (const auto &entry :
          std::filesystem::directory_iterator(directory, error))
-      if (entry.is_directory() &&
-          std::regex_match(entry.path().filename().string(), name) &&
-          std::filesystem::exists(entry.path() / "parameters.prm"))
+      if (entry.is_regular_file() &&
+          is_result_file(entry.path().filename().string()))
+        std::filesystem::remove(entry.path(), error);
+      else if (entry.is_directory() && is_result_directory(entry.path()) &&
+               !(keep_pilots &&
+                 std::regex_match(entry.path().filename().string(), pilot)))
         std::filesystem::remove_all(entry.path(), error);
+    std::filesystem::remove_all(directory + "/.partial", error);
   }
 
 
@@ -180,21 +186,10 @@ namespace Contact
       return;
     std::error_code error;
     if (!parameters.output.resume)
-      {
-        for (const auto &entry :
-             std::filesystem::directory_iterator(directory, error))
-          if (entry.is_regular_file() &&
-              is_result_file(entry.path().filename().string()))
-            std::filesystem::remove(entry.path(), error);
-          else if (entry.is_directory() && is_result_directory(entry.path()) &&
-                   !(parameters.accuracy.target_error > 0 &&
-                     std::regex_match(entry.path().filename().string(),
-                                      std::regex(pilot_directory_pattern))))
-            // The run that a target chose keeps the pilots it was chosen
-            // by.
-            std::filesystem::remove_all(entry.path(), error);
-        std::filesystem::remove_all(directory + "/.partial", error);
-      }
+      // The run that a target chose keeps the pilots it was chosen by.
+      remove_results(directory,
+                     parameters.accuracy.target_error > 0,
+                     mpi_communicator);
     // VTU pieces are written here first and renamed into the directory
     // when complete (write_vtu).
     std::filesystem::create_directories(directory + "/.partial", error);

@@ -823,11 +823,12 @@ namespace Contact
         "Target error",
         "0",
         Patterns::Double(0),
-        "0: off. Otherwise the error at T, in 'Target quantity', that the "
-        "program picks the element degree (1 or 2), h and k for: pilot runs "
+        "0: off. Otherwise the error in 'Target quantity' (by default the "
+        "largest V-error over time) that the program picks the element "
+        "degree (1 or 2), h and k for: pilot runs "
         "on the scene's h and k and on 2h, 4h, 2k, 4k (<Output "
         "directory>/pilot-*) measure how the error falls with h and with k "
-        "and what a run costs; the cheapest run predicted to reach the "
+        "and what a run costs; the cheapest run predicted within half the "
         "target then runs, with its error estimate (as 'Estimate error'). "
         "The choice and the predicted and estimated errors are printed and "
         "written to <Output directory>/target.txt.");
@@ -835,7 +836,8 @@ namespace Contact
                         "relative",
                         Patterns::Selection("relative|absolute"),
                         "relative: 'Target error' times the size of the "
-                        "quantity (for the V-norm ||eps(u_h(T))||); "
+                        "quantity on the first pilot (for the V-norm "
+                        "||eps(u_h)||, at T or its largest over time); "
                         "absolute: in the quantity's units.");
       prm.declare_entry(
         "Target quantity",

@@ -493,15 +493,12 @@ namespace Contact
       for (unsigned int level = 0; level <= L; ++level)
         parameters_of_level(prm, base, level, /*announce=*/false);
       // The study owns its directory while it runs (a plain run there
-      // would clean away its levels), and a study with fewer levels than
-      // the last one leaves none of that one's levels or table behind.
+      // would clean away its levels), and starts it afresh: a study with
+      // fewer levels than the last one leaves none of that one's levels or
+      // table behind.
       const auto lock =
         lock_output_directory(base.output.directory, MPI_COMM_WORLD);
-      remove_result_directories(base.output.directory,
-                                "level-[0-9]+",
-                                MPI_COMM_WORLD);
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        std::filesystem::remove(base.output.directory + "/convergence.txt");
+      remove_results(base.output.directory, false, MPI_COMM_WORLD);
 
       // Collects the displacement at the common times (every 2^l-th step of
       // level l when k is refined), interpolated onto the reference mesh.

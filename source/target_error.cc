@@ -143,7 +143,10 @@ namespace Contact
             std::isfinite(estimate.order) ?
               std::clamp(estimate.order, min_plausible_order, max_order) :
               min_plausible_order;
-          fit.error = std::abs(d_fine) / (std::pow(2., fit.order) - 1);
+          // Without an order (differences that change sign, or a quantity
+          // equal on the two finer runs) the estimate's own error stays.
+          if (std::isfinite(estimate.order))
+            fit.error = std::abs(d_fine) / (std::pow(2., fit.order) - 1);
           fit.note =
             "measured order " + number_text(estimate.order) + " taken as " +
             number_text(fit.order) +
@@ -188,7 +191,7 @@ namespace Contact
         return;
       // The first run of the process also loads what the libraries bind
       // lazily: not a cost of its size.
-      double n = 0, sx = 0, st = 0, sxx = 0, sxt = 0, largest = 0;
+      double n = 0, sx = 0, st = 0, sxx = 0, sxt = 0;
       for (const Pilot &pilot : pilots)
         if (pilot.degree == model.degree && &pilot != &pilots.front())
           {
@@ -196,15 +199,16 @@ namespace Contact
             const double      x   = double(run.n_dofs) * run.n_steps;
             const double      t   = run.wall_time;
             n += 1, sx += x, st += t, sxx += x * x, sxt += x * t;
-            largest = std::max(largest, t / x);
           }
       const double denominator = n * sxx - sx * sx;
       model.b = denominator > 0 ? (n * sxt - sx * st) / denominator : 0;
       model.a = (st - model.b * sx) / n;
+      // A fit that is not a fixed plus a proportional cost: proportional
+      // only, by least squares.
       if (!(model.b > 0) || model.a < 0)
         {
           model.a = 0;
-          model.b = largest;
+          model.b = sxt / sxx;
         }
     }
 
@@ -232,11 +236,12 @@ namespace Contact
                                        const unsigned int  dim,
                                        const double        end_time,
                                        const double        K,
-                                       const double        allowed)
+                                       const double        allowed,
+                                       const unsigned int  max_steps)
     {
       const double space_error =
         model.space.error * std::pow(2., -model.space.order * m);
-      if (space_error >= allowed)
+      if (!(space_error < allowed) || !std::isfinite(time.error))
         return std::nullopt;
       // The time error E_k that makes |e_h + e_k| = allowed:
       // E_k^2 + 2 cosine E_h E_k + E_h^2 - allowed^2 = 0.
@@ -249,9 +254,11 @@ namespace Contact
         k = std::min(k,
                      K * std::pow(time_error_allowed / time.error,
                                   1. / time.order));
-      unsigned int n_steps =
-        4 * static_cast<unsigned int>(std::ceil(end_time / k / 4 - 1e-9));
-      n_steps             = std::max(n_steps, 4u);
+      const double steps = 4 * std::ceil(end_time / k / 4 - 1e-9);
+      if (!(steps <= max_steps))
+        return std::nullopt;
+      const unsigned int n_steps =
+        std::max(static_cast<unsigned int>(steps), 4u);
       const double n_dofs = double(model.n_dofs) * std::pow(2., dim * m);
       const double work = n_dofs * (n_steps + std::pow(0.5, dim) * n_steps / 2 +
                                     std::pow(0.25, dim) * n_steps / 4);
@@ -353,6 +360,10 @@ namespace Contact
                                  true}));
         pilots.push_back(
           {name, degree, run_onto(*problem, interpolate.get(), 1)});
+        // The cost model, and so the choice, must be the same on every
+        // process.
+        double &wall_time = pilots.back().run.summary.wall_time;
+        wall_time         = Utilities::MPI::max(wall_time, MPI_COMM_WORLD);
         if (!base)
           {
             base        = std::move(problem);
@@ -460,7 +471,8 @@ namespace Contact
                                          dim,
                                          parameters.time.end_time,
                                          K,
-                                         allowed))
+                                         allowed,
+                                         parameters.time.max_steps))
               if (!best || c->predicted_cost < best->predicted_cost)
                 best = c;
           out << "Degree " << model.degree << ": "
@@ -572,18 +584,29 @@ namespace Contact
     };
     // The lock of the whole target run; the chosen run shares it.
     const auto lock = lock_output_directory(directory, MPI_COMM_WORLD);
-    remove_result_directories(directory,
-                              pilot_directory_pattern,
-                              MPI_COMM_WORLD);
+    // Nothing of an earlier run stays next to the pilots: if no run
+    // reaches the target, the directory holds the pilots only.
+    remove_results(directory, false, MPI_COMM_WORLD);
 
     const PilotResults pilots =
       run_pilots<dim>(prm, parameters, [&](const std::string &line) {
         print(line + "\n");
       });
-    const auto  &accuracy = parameters.accuracy;
-    const double target   = accuracy.target_is_relative ?
-                              accuracy.target_error * pilots.size :
-                              accuracy.target_error;
+    const auto &accuracy = parameters.accuracy;
+    AssertThrow(std::isfinite(pilots.size) && std::isfinite(pilots.time.error),
+                ExcMessage("Entry '" + Entry::target_quantity + "' = '" +
+                           accuracy.target_quantity +
+                           "' is not defined on the pilots (e.g. no slip "
+                           "zone, or no node on Gamma_3): choose a quantity "
+                           "that this scene has."));
+    AssertThrow(pilots.size > 0 || !accuracy.target_is_relative,
+                ExcMessage("Entry '" + Entry::target_error_type +
+                           "' = relative: the size of '" +
+                           accuracy.target_quantity +
+                           "' is 0 on the pilots; give an absolute target."));
+    const double target = accuracy.target_is_relative ?
+                            accuracy.target_error * pilots.size :
+                            accuracy.target_error;
     print("\n" + pilots_report(pilots, parameters, target));
     std::ostringstream choice;
     choice << std::setprecision(3);
@@ -595,8 +618,10 @@ namespace Contact
                            "' = " + number_text(accuracy.target_error) +
                            ": the pilots predict an error above the target "
                            "for every degree up to h = H/" +
-                           std::to_string(1u << max_halvings) +
-                           " (see the lines above). Ask for a larger "
+                           std::to_string(1u << max_halvings) + " and '" +
+                           Entry::max_steps +
+                           "' = " + std::to_string(parameters.time.max_steps) +
+                           " steps (see the lines above). Ask for a larger "
                            "target, or start from a smaller '" +
                            Entry::cell_size + "' and '" + Entry::time_step +
                            "' if the pilots are not yet in the asymptotic "
