@@ -42,7 +42,7 @@ namespace Contact
   {
     // The chosen run is predicted to have this fraction of the target: the
     // model extrapolates from coarse runs (on the manufactured solution it
-    // predicted 0.7 times the largest error over time of a run with 16
+    // predicted 0.7 times the largest error over time of a run with 14
     // times the pilots' unknowns and 7.5 times their steps, whose worst
     // time came earlier than the pilots could see).
     constexpr double target_safety = 0.5;
