@@ -292,6 +292,7 @@ namespace Contact
     void         make_grid();
     void         build_mesh(Triangulation<dim> &mesh);
     unsigned int make_box(Triangulation<dim> &mesh);
+    unsigned int make_shell(Triangulation<dim> &mesh);
     void         check_memory(const double       cells,
                               const double       unknowns,
                               const std::string &entry) const;

@@ -44,6 +44,12 @@ namespace Contact
       "Geometry/Finite element degree";
     inline const std::string mesh_file         = "Geometry/Mesh file";
     inline const std::string mesh_refinements  = "Geometry/Mesh refinements";
+    inline const std::string domain            = "Geometry/Domain";
+    inline const std::string inner_radius      = "Geometry/Inner radius";
+    inline const std::string outer_radius      = "Geometry/Outer radius";
+    inline const std::string shell_length      = "Geometry/Shell length";
+    inline const std::string cells_around      = "Geometry/Cells around";
+    inline const std::string mapping_degree    = "Geometry/Mapping degree";
     inline const std::string refinement_points = "Geometry/Refinement points";
     inline const std::string refinement_radius = "Geometry/Refinement radius";
     inline const std::string clamped_boundary_ids =
@@ -104,6 +110,12 @@ namespace Contact
               finite_element_degree,
               mesh_file,
               mesh_refinements,
+              domain,
+              inner_radius,
+              outer_radius,
+              shell_length,
+              cells_around,
+              mapping_degree,
               refinement_points,
               refinement_radius,
               clamped_boundary_ids,
@@ -149,9 +161,25 @@ namespace Contact
 
   struct GeometryParameters
   {
-    /** A gmsh .msh file; empty: the box of lower_corner, upper_corner. */
-    std::string         mesh_file;
-    unsigned int        mesh_refinements;
+    /** A gmsh .msh file; empty: the box of lower_corner, upper_corner, or
+     *  the shell. */
+    std::string  mesh_file;
+    unsigned int mesh_refinements;
+    /** The annulus (2D) or tube along z (3D) between inner_radius and
+     *  outer_radius around the origin, instead of the box. */
+    bool         shell;
+    double       inner_radius;
+    double       outer_radius;
+    double       shell_length;
+    unsigned int cells_around;
+    /** Degree of the polynomial mapping of the cells: 2 and more follow a
+     *  curved boundary (the shell's circles) between the nodes. */
+    unsigned int mapping_degree;
+    /** The box of lower_corner, upper_corner, divided by cell_size. */
+    bool is_box() const
+    {
+      return mesh_file.empty() && !shell;
+    }
     std::vector<double> lower_corner;
     std::vector<double> upper_corner;
     double              cell_size;

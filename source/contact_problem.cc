@@ -50,14 +50,17 @@ namespace Contact
       return std::make_unique<FE_Q<dim>>(geometry.fe_degree);
     }
 
-    // Straight-sided cells: the linear mapping of the cell shape.
+    // The map of the reference cell: linear (straight edges), or of the
+    // 'Mapping degree', whose points between the vertices lie on the
+    // manifold of a curved boundary. Assembly, the normals of Gamma_3 and
+    // its nodal weights all use this one.
     template <int dim>
     std::unique_ptr<const Mapping<dim>>
     make_mapping(const GeometryParameters &geometry)
     {
       if (geometry.simplex_cells)
         return std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
-      return std::make_unique<MappingQ<dim>>(1);
+      return std::make_unique<MappingQ<dim>>(geometry.mapping_degree);
     }
   } // namespace
 
@@ -193,7 +196,7 @@ namespace Contact
     // A box has round(edge / h) cells along each edge: the largest of
     // their sizes is the h it has.
     summary.cell_size = 0;
-    if (parameters.geometry.mesh_file.empty())
+    if (parameters.geometry.is_box())
       for (unsigned int d = 0; d < dim; ++d)
         {
           const double edge = parameters.geometry.upper_corner[d] -

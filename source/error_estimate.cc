@@ -255,7 +255,7 @@ namespace Contact
       out << std::setprecision(17) << value;
       return out.str();
     };
-    if (base.geometry.mesh_file.empty())
+    if (base.geometry.is_box())
       apply_override(prm,
                      Entry::cell_size,
                      text(std::ldexp(base.geometry.cell_size, -version.finer)));

@@ -103,7 +103,42 @@ namespace Contact
                         "0",
                         Patterns::Integer(0, 10),
                         "Global refinements of the mesh read from the Mesh "
-                        "file.");
+                        "file, or of the shell's coarse mesh.");
+      prm.declare_entry(
+        "Domain",
+        "box",
+        Patterns::Selection("box|shell"),
+        "box: Lower and Upper corner, divided by the Cell size; shell: the "
+        "annulus (2D) or the tube along z from z = 0 to the Shell length "
+        "(3D) between the Inner and the Outer radius around the origin, "
+        "Cells around the circle, refined Mesh refinements times along "
+        "the circles (boundary ids 0 inner, 1 outer, 2 z = 0, 3 z = "
+        "length). A Mesh file replaces both.");
+      prm.declare_entry("Inner radius",
+                        "0.5",
+                        Patterns::Double(0),
+                        "Inner radius of the shell [m].");
+      prm.declare_entry("Outer radius",
+                        "1",
+                        Patterns::Double(0),
+                        "Outer radius of the shell [m].");
+      prm.declare_entry("Shell length",
+                        "0.25",
+                        Patterns::Double(0),
+                        "Length of the tube along z in 3D [m].");
+      prm.declare_entry("Cells around",
+                        "8",
+                        Patterns::Integer(3, 1000),
+                        "Cells of the shell's coarse mesh around the circle "
+                        "(one layer across the wall; in 3D as many along z "
+                        "as keep the cells about as long as wide).");
+      prm.declare_entry(
+        "Mapping degree",
+        "1",
+        Patterns::Integer(1, 4),
+        "Degree of the polynomial map of each cell: 1, straight edges (a "
+        "polygon for a circle); 2 or more, edges that follow a curved "
+        "boundary (the shell's circles) between the nodes.");
       prm.declare_entry("Lower corner",
                         "0, 0",
                         Patterns::List(Patterns::Double(), 2, 3),
@@ -177,6 +212,12 @@ namespace Contact
     {
       mesh_file        = Utilities::trim(prm.get("Mesh file"));
       mesh_refinements = prm.get_integer("Mesh refinements");
+      shell            = (prm.get("Domain") == "shell");
+      inner_radius     = prm.get_double("Inner radius");
+      outer_radius     = prm.get_double("Outer radius");
+      shell_length     = prm.get_double("Shell length");
+      cells_around     = prm.get_integer("Cells around");
+      mapping_degree   = prm.get_integer("Mapping degree");
       lower_corner     = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Lower corner")));
       upper_corner = Utilities::string_to_double(
@@ -202,30 +243,34 @@ namespace Contact
                 0.,
                 "a nonzero vector");
 
-    check_entry(lower_corner.size() == dim,
-                "Geometry/Lower corner",
-                lower_corner.size(),
-                "exactly Dimension numbers");
-    check_entry(upper_corner.size() == dim,
-                "Geometry/Upper corner",
-                upper_corner.size(),
-                "exactly Dimension numbers");
-    for (unsigned int d = 0; d < dim; ++d)
-      check_entry(upper_corner[d] > lower_corner[d],
-                  "Geometry/Upper corner",
-                  upper_corner[d],
-                  "a value above the matching Geometry/Lower corner in "
-                  "every coordinate");
-    check_entry(cell_size > 0, "Geometry/Cell size", cell_size, "h > 0");
-    double shortest_edge = std::numeric_limits<double>::max();
-    for (unsigned int d = 0; d < dim; ++d)
-      shortest_edge =
-        std::min(shortest_edge, upper_corner[d] - lower_corner[d]);
-    check_entry(!mesh_file.empty() || cell_size <= shortest_edge,
-                "Geometry/Cell size",
-                cell_size,
-                "h at most the shortest edge of the box, " +
-                  Utilities::to_string(shortest_edge));
+    // The corners and the cell size describe the box only.
+    if (is_box())
+      {
+        check_entry(lower_corner.size() == dim,
+                    "Geometry/Lower corner",
+                    lower_corner.size(),
+                    "exactly Dimension numbers");
+        check_entry(upper_corner.size() == dim,
+                    "Geometry/Upper corner",
+                    upper_corner.size(),
+                    "exactly Dimension numbers");
+        for (unsigned int d = 0; d < dim; ++d)
+          check_entry(upper_corner[d] > lower_corner[d],
+                      "Geometry/Upper corner",
+                      upper_corner[d],
+                      "a value above the matching Geometry/Lower corner in "
+                      "every coordinate");
+        check_entry(cell_size > 0, "Geometry/Cell size", cell_size, "h > 0");
+        double shortest_edge = std::numeric_limits<double>::max();
+        for (unsigned int d = 0; d < dim; ++d)
+          shortest_edge =
+            std::min(shortest_edge, upper_corner[d] - lower_corner[d]);
+        check_entry(cell_size <= shortest_edge,
+                    "Geometry/Cell size",
+                    cell_size,
+                    "h at most the shortest edge of the box, " +
+                      Utilities::to_string(shortest_edge));
+      }
     // FE_SimplexP of deal.II 9.4 has degrees 1 and 2 only.
     check_entry(!simplex_cells || fe_degree <= 2,
                 "Geometry/Finite element degree",
@@ -237,6 +282,38 @@ namespace Contact
                 ExcMessage("Entry 'Geometry/Mass matrix': lumped is "
                            "available for 'Cell shape = hypercube' only; "
                            "allowed with simplices is consistent."));
+    check_entry(!shell || mesh_file.empty(),
+                "Geometry/Domain",
+                0.,
+                "box with a 'Geometry/Mesh file' (the file is the domain)");
+    check_entry(!shell || outer_radius > inner_radius,
+                "Geometry/Outer radius",
+                outer_radius,
+                "a radius above the Inner radius, " +
+                  Utilities::to_string(inner_radius));
+    check_entry(!shell || inner_radius > 0,
+                "Geometry/Inner radius",
+                inner_radius,
+                "r > 0 with 'Geometry/Domain = shell'");
+    check_entry(!shell || dim == 2 || shell_length > 0,
+                "Geometry/Shell length",
+                shell_length,
+                "a length > 0 with 'Geometry/Domain = shell' in 3D");
+    // The shell's circles are a manifold about the origin (about the z
+    // axis in 3D): a rotated mesh would leave it.
+    check_entry(!shell || rotation_angle == 0,
+                "Geometry/Rotation angle",
+                rotation_angle,
+                "0 with 'Geometry/Domain = shell'");
+    check_entry(!shell || !simplex_cells,
+                "Geometry/Domain",
+                1.,
+                "box with 'Cell shape = simplex' (the shell is built of "
+                "quadrilaterals/hexahedra)");
+    check_entry(!simplex_cells || mapping_degree == 1,
+                "Geometry/Mapping degree",
+                mapping_degree,
+                "1 with 'Cell shape = simplex'");
     check_entry(!simplex_cells || refinement_radius == 0.,
                 "Geometry/Refinement radius",
                 refinement_radius,
@@ -1053,7 +1130,7 @@ namespace Contact
                            "allowed with it are '" +
                            Entry::levels + "' = 0 and no --resume ('" +
                            Entry::resume + "' = false)."));
-    if (!geometry.mesh_file.empty())
+    if (!geometry.is_box())
       {
         check_entry(geometry.mesh_refinements >= 2,
                     Entry::mesh_refinements,

@@ -66,10 +66,12 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::build_mesh(Triangulation<dim> &mesh)
   {
-    const auto        &geometry = parameters.geometry;
-    const unsigned int n_refinements =
-      geometry.mesh_file.empty() ? make_box(mesh) : read_mesh_file(mesh);
-    const double angle = geometry.rotation_angle * numbers::PI / 180.;
+    const auto        &geometry      = parameters.geometry;
+    const unsigned int n_refinements = !geometry.mesh_file.empty() ?
+                                         read_mesh_file(mesh) :
+                                       geometry.shell ? make_shell(mesh) :
+                                                        make_box(mesh);
+    const double       angle = geometry.rotation_angle * numbers::PI / 180.;
     if (angle != 0.)
       {
         if constexpr (dim == 2)
@@ -155,6 +157,57 @@ namespace Contact
       GridGenerator::subdivided_hyper_rectangle(
         mesh, subdivisions, lower, upper, /*colorize=*/true);
     return n_refinements;
+  }
+
+
+  // @sect4{ContactProblem::make_shell}
+
+  // The annulus or the tube of the bushing scene: deal.II's shell with its
+  // spherical (2D) or cylindrical (3D) manifold, so that refinement puts
+  // new vertices on the circles and a mapping of degree 2 or more curves
+  // the cells' edges along them. Returns the number of refinements.
+  template <int dim>
+  unsigned int ContactProblem<dim>::make_shell(Triangulation<dim> &mesh)
+  {
+    const auto  &geometry = parameters.geometry;
+    const double inner = geometry.inner_radius, outer = geometry.outer_radius;
+    {
+      const double cells =
+        std::pow(2., dim * geometry.mesh_refinements) * geometry.cells_around *
+        (dim == 3 ? geometry.shell_length / (outer - inner) : 1.);
+      check_memory(cells,
+                   dim * cells * std::pow(geometry.fe_degree, dim),
+                   Entry::mesh_refinements);
+    }
+    if constexpr (dim == 2)
+      GridGenerator::hyper_shell(
+        mesh, Point<dim>(), inner, outer, geometry.cells_around, true);
+    else
+      {
+        const double width = 2 * numbers::PI * inner / geometry.cells_around;
+        GridGenerator::cylinder_shell(
+          mesh,
+          geometry.shell_length,
+          inner,
+          outer,
+          geometry.cells_around,
+          std::max(1u,
+                   static_cast<unsigned int>(
+                     std::round(geometry.shell_length / width))));
+        const double length = geometry.shell_length;
+        for (const auto &face : mesh.active_face_iterators())
+          if (face->at_boundary())
+            {
+              const Point<dim> center = face->center();
+              const double     radius = std::hypot(center[0], center[1]);
+              face->set_boundary_id(
+                std::abs(center[2]) < 1e-10 * length          ? 2 :
+                std::abs(center[2] - length) < 1e-10 * length ? 3 :
+                radius < (inner + outer) / 2                  ? 0 :
+                                                                1);
+            }
+      }
+    return geometry.mesh_refinements;
   }
 
 
@@ -777,6 +830,7 @@ namespace Contact
   template void         ContactProblem<dim>::check_memory(const double,               \
                                                   const double,               \
                                                   const std::string &) const; \
+  template unsigned int ContactProblem<dim>::make_shell(Triangulation<dim> &);        \
   template unsigned int ContactProblem<dim>::read_mesh_file(                          \
     Triangulation<dim> &);                                                            \
   template void ContactProblem<dim>::grade_towards_points(                            \

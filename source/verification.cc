@@ -23,6 +23,10 @@ namespace Contact
   {
     const auto &geometry = parameters.geometry;
     const auto &boundary = parameters.boundary;
+    AssertThrow(geometry.is_box(),
+                ExcMessage("'" + Entry::manufactured_solution +
+                           "' needs the box: '" + Entry::domain +
+                           " = box' and no '" + Entry::mesh_file + "'."));
     AssertThrow(geometry.lower_corner[0] == 0. &&
                   geometry.lower_corner[1] == 0.,
                 ExcMessage("'" + Entry::manufactured_solution +
