@@ -3,6 +3,7 @@
 
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/quadrature.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -12,6 +13,7 @@
 
 #include <reference_interpolation.h>
 
+#include <limits>
 #include <utility>
 
 namespace Contact
@@ -118,6 +120,10 @@ namespace Contact
           boxes.emplace_back(box, cell);
         }
     const auto tree = pack_rtree(boxes);
+    const bool cell_shape_is_hypercube =
+      level.get_dof_handler()
+        .get_triangulation()
+        .all_reference_cells_are_hyper_cube();
 
     std::vector<NodeInCell> located;
     for (unsigned int m = 0; m < all_nodes.size(); ++m)
@@ -137,6 +143,66 @@ namespace Contact
           }
         catch (const typename Mapping<dim>::ExcTransformationFailed &)
           {}
+
+    // A node on a curved boundary may lie just outside every cell of a
+    // coarser level (the coarse cells' boundary is the mapping's polynomial,
+    // or the chord, not the circle): the nearest cell of all processes takes
+    // it, at its projection onto that cell.
+    std::vector<unsigned int> found(all_nodes.size(), 0);
+    for (const NodeInCell &node : located)
+      found[node.node] = 1;
+    MPI_Allreduce(MPI_IN_PLACE,
+                  found.data(),
+                  found.size(),
+                  MPI_UNSIGNED,
+                  MPI_MAX,
+                  MPI_COMM_WORLD);
+    std::vector<double>     distance(all_nodes.size(),
+                                 std::numeric_limits<double>::max());
+    std::vector<NodeInCell> nearest(all_nodes.size());
+    for (unsigned int m = 0; m < all_nodes.size(); ++m)
+      if (found[m] == 0 && cell_shape_is_hypercube)
+        for (const auto &[box, cell] :
+             tree | boost::geometry::index::adaptors::queried(
+                      boost::geometry::index::nearest(all_nodes[m], 4)))
+          try
+            {
+              const Point<dim> unit =
+                level.get_mapping().transform_real_to_unit_cell(cell,
+                                                                all_nodes[m]);
+              const double d = GeometryInfo<dim>::distance_to_unit_cell(unit);
+              if (d < distance[m])
+                {
+                  distance[m] = d;
+                  nearest[m]  = {m,
+                                 cell,
+                                 GeometryInfo<dim>::project_to_unit_cell(unit)};
+                }
+            }
+          catch (const typename Mapping<dim>::ExcTransformationFailed &)
+            {}
+    std::vector<double> smallest(distance.size());
+    MPI_Allreduce(distance.data(),
+                  smallest.data(),
+                  distance.size(),
+                  MPI_DOUBLE,
+                  MPI_MIN,
+                  MPI_COMM_WORLD);
+    std::vector<unsigned int> taker(all_nodes.size());
+    for (unsigned int m = 0; m < all_nodes.size(); ++m)
+      taker[m] =
+        (found[m] == 0 && distance[m] < 0.1 && distance[m] == smallest[m]) ?
+          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) :
+          numbers::invalid_unsigned_int;
+    MPI_Allreduce(MPI_IN_PLACE,
+                  taker.data(),
+                  taker.size(),
+                  MPI_UNSIGNED,
+                  MPI_MIN,
+                  MPI_COMM_WORLD);
+    for (unsigned int m = 0; m < all_nodes.size(); ++m)
+      if (taker[m] == Utilities::MPI::this_mpi_process(MPI_COMM_WORLD))
+        located.push_back(nearest[m]);
     return located;
   }
 

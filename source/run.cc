@@ -444,7 +444,7 @@ namespace Contact
              (study.refine == Refine::space ? 1. : factor);
       // A mesh read from a file is refined globally instead of by the
       // cell size of a box.
-      const bool        mesh_file = !base.geometry.mesh_file.empty();
+      const bool        mesh_file = !base.geometry.is_box();
       const std::string refinements =
         std::to_string(base.geometry.mesh_refinements +
                        (study.refine == Refine::time ? 0 : level));

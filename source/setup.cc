@@ -171,10 +171,16 @@ namespace Contact
   {
     const auto  &geometry = parameters.geometry;
     const double inner = geometry.inner_radius, outer = geometry.outer_radius;
+    // In 3D as many cells along z as keep them about as long as wide.
+    const unsigned int n_axial =
+      dim == 2 ? 1 :
+                 std::max(1u,
+                          static_cast<unsigned int>(std::round(
+                            geometry.shell_length / (2 * numbers::PI * inner /
+                                                     geometry.cells_around))));
     {
-      const double cells =
-        std::pow(2., dim * geometry.mesh_refinements) * geometry.cells_around *
-        (dim == 3 ? geometry.shell_length / (outer - inner) : 1.);
+      const double cells = std::pow(2., dim * geometry.mesh_refinements) *
+                           geometry.cells_around * n_axial;
       check_memory(cells,
                    dim * cells * std::pow(geometry.fe_degree, dim),
                    Entry::mesh_refinements);
@@ -184,22 +190,25 @@ namespace Contact
         mesh, Point<dim>(), inner, outer, geometry.cells_around, true);
     else
       {
-        const double width = 2 * numbers::PI * inner / geometry.cells_around;
-        GridGenerator::cylinder_shell(
-          mesh,
-          geometry.shell_length,
-          inner,
-          outer,
-          geometry.cells_around,
-          std::max(1u,
-                   static_cast<unsigned int>(
-                     std::round(geometry.shell_length / width))));
+        GridGenerator::cylinder_shell(mesh,
+                                      geometry.shell_length,
+                                      inner,
+                                      outer,
+                                      geometry.cells_around,
+                                      n_axial);
+        // By the faces' vertices, which lie on the circles (a face's center
+        // lies inside its circle, for few cells around below the middle
+        // radius even on the outer one).
         const double length = geometry.shell_length;
         for (const auto &face : mesh.active_face_iterators())
           if (face->at_boundary())
             {
               const Point<dim> center = face->center();
-              const double     radius = std::hypot(center[0], center[1]);
+              double           radius = 0;
+              for (const unsigned int v : face->vertex_indices())
+                radius =
+                  std::max(radius,
+                           std::hypot(face->vertex(v)[0], face->vertex(v)[1]));
               face->set_boundary_id(
                 std::abs(center[2]) < 1e-10 * length          ? 2 :
                 std::abs(center[2] - length) < 1e-10 * length ? 3 :
@@ -535,17 +544,24 @@ namespace Contact
   // of basis, only the components that represent it do.
   namespace
   {
-    std::array<Tensor<1, 2>, 1> tangent_basis(const Tensor<1, 2> &normal)
+    std::array<Tensor<1, 2>, 1> tangent_basis(const Tensor<1, 2> &normal,
+                                              const unsigned int = 0)
     {
       return {{Tensor<1, 2>({-normal[1], normal[0]})}};
     }
 
-    std::array<Tensor<1, 3>, 2> tangent_basis(const Tensor<1, 3> &normal)
+    // `preferred`: the axis least aligned with all of Gamma_3's normals,
+    // so that t_1 is the same direction along a curved Gamma_3 (the axis
+    // of a tube), where it is not too close to this node's normal.
+    std::array<Tensor<1, 3>, 2> tangent_basis(const Tensor<1, 3> &normal,
+                                              const unsigned int  preferred = 3)
     {
       unsigned int axis = 0;
       for (unsigned int d = 1; d < 3; ++d)
         if (std::abs(normal[d]) < std::abs(normal[axis]))
           axis = d;
+      if (preferred < 3 && std::abs(normal[preferred]) < 0.5)
+        axis = preferred;
       Tensor<1, 3> first;
       first[axis] = 1;
       first -= (first * normal) * normal;
@@ -583,18 +599,26 @@ namespace Contact
     template <int dim>
     std::array<Tensor<1, dim>, dim - 1>
     free_tangents(const std::vector<Tensor<1, dim>> &constrained,
-                  const Tensor<1, dim>              &normal)
+                  const Tensor<1, dim>              &normal,
+                  const unsigned int                 preferred)
     {
       if (constrained.size() == 1)
         return tangent_basis(constrained[0] * normal > 0 ? constrained[0] :
-                                                           -constrained[0]);
+                                                           -constrained[0],
+                             preferred);
       std::array<Tensor<1, dim>, dim - 1> tangents;
       if constexpr (dim == 3)
         {
-          const Tensor<1, dim> reference = tangent_basis(normal)[0];
+          // Oriented like the reference tangent it is closest to (on a
+          // tube's end t_1 is orthogonal to the axis, the first reference).
+          const auto reference = tangent_basis(normal, preferred);
           tangents[0] = cross_product_3d(constrained[0], constrained[1]);
           tangents[0] /= tangents[0].norm();
-          if (tangents[0] * reference < 0)
+          const double along_first  = tangents[0] * reference[0],
+                       along_second = tangents[0] * reference[1];
+          if ((std::abs(along_first) >= std::abs(along_second) ?
+                 along_first :
+                 along_second) < 0)
             tangents[0] *= -1;
         }
       return tangents;
@@ -664,6 +688,15 @@ namespace Contact
               directions[i][d] = r[3 * dim + 3 + i * dim + d];
         }
 
+    // The axis least aligned with all normals (the first on ties).
+    std::array<double, dim> largest{};
+    for (const auto &[key, node] : nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        largest[d] =
+          std::max(largest[d], std::abs(node.normal[d]) / node.normal.norm());
+    const unsigned int preferred = static_cast<unsigned int>(
+      std::min_element(largest.begin(), largest.end()) - largest.begin());
+
     std::vector<ContactNode<dim>> contact_nodes;
     for (auto &[key, node] : nodes)
       {
@@ -674,7 +707,7 @@ namespace Contact
         if (constrained.size() == dim)
           continue;
         node.normal /= node.normal.norm();
-        node.tangents      = free_tangents(constrained, node.normal);
+        node.tangents      = free_tangents(constrained, node.normal, preferred);
         node.locally_owned = locally_owned_dofs.is_element(node.dofs[0]);
         contact_nodes.push_back(node);
       }
