@@ -181,17 +181,6 @@ namespace Contact
                                     const double     d_across,
                                     const TwoOrders *known);
 
-  /** The row worst_V_error from the histories of three runs (h, 2h, 4h;
-   *  their common times t_j = (j + 1) coarse_time_step): the largest
-   *  estimate over the t_j, at `time`. */
-  template <int dim>
-  EstimateRow worst_time_row(const ContactProblem<dim> &fine,
-                             const RunAtTimes          &f,
-                             const RunAtTimes          &m,
-                             const RunAtTimes          &c,
-                             const double               coarse_time_step,
-                             const TwoOrders           *known);
-
   /** Runs the scene of `parameters` and its two coarse versions, and prints
    *  and writes the estimated errors (error_estimate.txt). A quantity with
    *  known orders in h and k is extrapolated with both (error_estimate.cc).

@@ -350,49 +350,53 @@ namespace Contact
   }
 
 
-  // The error of a run over time: at each time that all three runs share,
-  // the estimate from the three differences; the row is that of the
-  // largest.
-  template <int dim>
-  EstimateRow worst_time_row(const ContactProblem<dim> &fine,
-                             const RunAtTimes          &f,
-                             const RunAtTimes          &m,
-                             const RunAtTimes          &c,
-                             const double               coarse_time_step,
-                             const TwoOrders           *known)
-  {
-    const auto difference_norm = [&](const VectorType &a, const VectorType &b) {
-      VectorType difference(a);
-      difference -= b;
-      return fine.strain_norm(difference);
-    };
-    EstimateRow worst{worst_V_error, 0, 0, 0, {}};
-    worst.estimate.error = -1;
-    const std::size_t n_times =
-      std::min({f.history.size(), m.history.size(), c.history.size()});
-    for (std::size_t j = 0; j < n_times; ++j)
-      {
-        const double d_fine   = difference_norm(f.history[j], m.history[j]);
-        const double d_coarse = difference_norm(m.history[j], c.history[j]);
-        const RichardsonEstimate estimate = field_estimate(
-          d_fine, d_coarse, difference_norm(f.history[j], c.history[j]), known);
-        if (estimate.error > worst.estimate.error)
-          worst = {worst_V_error,
-                   fine.strain_norm(f.history[j]),
-                   d_fine,
-                   d_coarse,
-                   estimate,
-                   std::numeric_limits<double>::quiet_NaN(),
-                   std::numeric_limits<double>::quiet_NaN(),
-                   f.summary.max_errors.displacement_V,
-                   (j + 1) * coarse_time_step};
-      }
-    return worst;
-  }
-
-
   namespace
   {
+    // The error of a run over time: at each time that all three runs share,
+    // the estimate from the three differences; the row is that of the
+    // largest.
+    template <int dim>
+    EstimateRow worst_time_row(const ContactProblem<dim> &fine,
+                               const RunAtTimes          &f,
+                               const RunAtTimes          &m,
+                               const RunAtTimes          &c,
+                               const double               coarse_time_step,
+                               const TwoOrders           *known)
+    {
+      const auto difference_norm = [&](const VectorType &a,
+                                       const VectorType &b) {
+        VectorType difference(a);
+        difference -= b;
+        return fine.strain_norm(difference);
+      };
+      EstimateRow worst{worst_V_error, 0, 0, 0, {}};
+      worst.estimate.error = -1;
+      const std::size_t n_times =
+        std::min({f.history.size(), m.history.size(), c.history.size()});
+      for (std::size_t j = 0; j < n_times; ++j)
+        {
+          const double d_fine   = difference_norm(f.history[j], m.history[j]);
+          const double d_coarse = difference_norm(m.history[j], c.history[j]);
+          const RichardsonEstimate estimate =
+            field_estimate(d_fine,
+                           d_coarse,
+                           difference_norm(f.history[j], c.history[j]),
+                           known);
+          if (estimate.error > worst.estimate.error)
+            worst = {worst_V_error,
+                     fine.strain_norm(f.history[j]),
+                     d_fine,
+                     d_coarse,
+                     estimate,
+                     std::numeric_limits<double>::quiet_NaN(),
+                     std::numeric_limits<double>::quiet_NaN(),
+                     f.summary.max_errors.displacement_V,
+                     (j + 1) * coarse_time_step};
+        }
+      return worst;
+    }
+
+
     // @sect3{The coarse runs}
 
     // The scene with h times `space_factor` and k times `time_factor`, its
@@ -736,18 +740,6 @@ namespace Contact
   template RunAtTimes   run_onto<3>(ContactProblem<3> &,
                                   const ReferenceInterpolation<3> *,
                                   const unsigned int);
-  template EstimateRow  worst_time_row<2>(const ContactProblem<2> &,
-                                         const RunAtTimes &,
-                                         const RunAtTimes &,
-                                         const RunAtTimes &,
-                                         const double,
-                                         const TwoOrders *);
-  template EstimateRow  worst_time_row<3>(const ContactProblem<3> &,
-                                         const RunAtTimes &,
-                                         const RunAtTimes &,
-                                         const RunAtTimes &,
-                                         const double,
-                                         const TwoOrders *);
   template EstimatedRun run_with_error_estimate<2>(ParameterHandler &,
                                                    const Parameters &,
                                                    const KnownOrders &);
