@@ -18,6 +18,10 @@ writes into <directory>/figures/ (or --output):
   stick_slip.png       the space-time diagram of the stick/slip state on
                        Gamma_3 (coordinate against time; in 3D the fraction
                        of slipping nodes at each coordinate value)
+
+Along Gamma_3 the figures use the coordinate in which it extends furthest,
+or, where Gamma_3 is a circle or a cylinder about the z-axis (a shell's
+inner or outer boundary), the angle atan2(y, x) in degrees.
   energies.png         energies and dissipations, the self-check residuals
                        and the iteration counts per step
   convergence.png      for a convergence study (convergence.txt): every
@@ -414,10 +418,25 @@ def plot_deformed(directory, times, field, output):
 
 # @sect3{Gamma_3: profiles and the space-time diagram}
 
+def add_angle(history):
+    """Where every node of Gamma_3 has the same distance from the z-axis
+    (to 1e-6), the column 'angle', atan2(y, x) in degrees: the coordinate
+    along a closed Gamma_3."""
+    radius = np.hypot(history["x"], history["y"])
+    if radius.min() > 0 and np.ptp(radius) <= 1e-6 * radius.max():
+        history["angle"] = np.degrees(np.arctan2(history["y"], history["x"]))
+
+
+def axis_label(coordinate):
+    return ("angle on Γ3 [°]" if coordinate == "angle" else
+            f"{coordinate} on Γ3")
+
+
 def gamma3_coordinate(history, name):
-    """The coordinate along which Gamma_3 is drawn: the one named, or the
-    one in which Gamma_3's nodes extend furthest."""
-    coordinates = [c for c in ("x", "y", "z") if c in history]
+    """The coordinate along which Gamma_3 is drawn: the one named, the
+    angle about the z-axis where Gamma_3 is a circle or a cylinder about
+    it, or the coordinate in which Gamma_3's nodes extend furthest."""
+    coordinates = [c for c in ("x", "y", "z", "angle") if c in history]
     if name:
         if name not in coordinates:
             sys.exit(f"plot_run.py: --coordinate must be one of "
@@ -427,6 +446,8 @@ def gamma3_coordinate(history, name):
                      f"Gamma_3 has {name} = {history[name][0]:g}; choose one "
                      "along which Gamma_3 extends")
         return name
+    if "angle" in history:
+        return "angle"
     return max(coordinates, key=lambda c: np.ptp(history[c]))
 
 
@@ -439,13 +460,16 @@ def history_at(history, t):
 
 def plot_gamma3_map(axis, nodes, coordinate):
     """In 3D: Gamma_3's nodes in its plane (the coordinate along which the
-    profiles run and the other one in which Gamma_3 extends furthest)."""
+    profiles run and the other one in which Gamma_3 extends furthest; z
+    across the angle of a cylinder)."""
     others = [c for c in ("x", "y", "z") if c != coordinate]
-    across = max(others, key=lambda c: np.ptp(nodes[c]))
+    across = ("z" if coordinate == "angle" else
+              max(others, key=lambda c: np.ptp(nodes[c])))
     axis.scatter(nodes[coordinate], nodes[across], s=6, marker="s",
                  c=nodes["state"] == SLIP, cmap=STATE_MAP, vmin=0, vmax=1)
     axis.set_ylabel(f"{across} on Γ3")
-    axis.set_aspect("equal", adjustable="box")
+    if coordinate != "angle":
+        axis.set_aspect("equal", adjustable="box")
 
 
 def plot_gamma3_profiles(history, times, coordinate, output):
@@ -492,7 +516,7 @@ def plot_gamma3_profiles(history, times, coordinate, output):
                      "above the bound")
         if rows == 3:
             plot_gamma3_map(axes[2, column], nodes, coordinate)
-        axes[-1, column].set_xlabel(f"{coordinate} on Γ3")
+        axes[-1, column].set_xlabel(axis_label(coordinate))
     axes[0, 0].set_ylabel(label)
     axes[1, 0].set_ylabel("slip rate |w_τ|")
     axes[0, 0].legend(fontsize=7)
@@ -533,7 +557,7 @@ def plot_stick_slip(history, coordinate, output):
     figure, axis = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
     mesh = axis.pcolormesh(edges_s, edges_t, fraction, shading="flat",
                            cmap=STATE_MAP, vmin=0, vmax=1, rasterized=True)
-    axis.set_xlabel(f"{coordinate} on Γ3")
+    axis.set_xlabel(axis_label(coordinate))
     axis.set_ylabel("t")
     axis.set_title("stick (blue) and slip (red) on Γ3")
     if "z" in history:
@@ -633,9 +657,11 @@ def main():
                         "(vectors by their length)")
     parser.add_argument("--times", help="comma-separated times "
                         "(default: the run's Report times)")
-    parser.add_argument("--coordinate", choices=("x", "y", "z"),
-                        help="coordinate along Gamma_3 (default: the one "
-                        "in which Gamma_3 extends furthest)")
+    parser.add_argument("--coordinate", choices=("x", "y", "z", "angle"),
+                        help="coordinate along Gamma_3 (default: the angle "
+                        "about the z-axis where Gamma_3 is a circle or a "
+                        "cylinder about it, else the coordinate in which "
+                        "Gamma_3 extends furthest)")
     parser.add_argument("--output", help="directory for the PNG files "
                         "(default: <directory>/figures)")
     arguments = parser.parse_args()
@@ -677,6 +703,7 @@ def main():
         reason = "Gamma_3 has no nodes (Contact boundary ids empty?)"
     else:
         reason = None
+        add_angle(history)
         coordinate = gamma3_coordinate(history, arguments.coordinate)
         record("gamma3_profiles.png",
                plot_gamma3_profiles(history, times, coordinate, output))

@@ -128,6 +128,11 @@ namespace Contact
    *   - negative_friction_power: a step whose friction power on the
    *     slipping nodes is negative, relative to the energies (friction
    *     only dissipates; FrictionSolver::slip_power).
+   *   - moment_balance: the balance of moments about the z-axis, (5.2)
+   *     tested with the rigid rotation r = e_z x x, relative to the
+   *     largest moment so far (moment_scale). Checked only where r lies in
+   *     V_h (MomentBalance): it catches wrong loads, velocities, and
+   *     normals of a curved Gamma_3 whose reactions would turn the body.
    */
   struct SelfCheckValues
   {
@@ -137,6 +142,8 @@ namespace Contact
     double friction_law_allowance  = 0;
     double friction_law_excess     = 0;
     double negative_friction_power = 0;
+    double moment_balance          = 0;
+    double moment_scale            = 0;
 
     void take_largest(const SelfCheckValues &other)
     {
@@ -149,13 +156,16 @@ namespace Contact
         std::max(friction_law_excess, other.friction_law_excess);
       negative_friction_power =
         std::max(negative_friction_power, other.negative_friction_power);
+      moment_balance = std::max(moment_balance, other.moment_balance);
+      moment_scale   = std::max(moment_scale, other.moment_scale);
     }
 
     template <class Archive>
     void serialize(Archive &archive, const unsigned int /*version*/)
     {
       archive &algebraic_energy &quadrature_energy &friction_law
-        &friction_law_allowance &friction_law_excess &negative_friction_power;
+        &friction_law_allowance &friction_law_excess &negative_friction_power
+          &moment_balance &moment_scale;
     }
   };
 
@@ -174,6 +184,29 @@ namespace Contact
     double elastic       = 0; // 1/2 int B eps(u_n) : eps(u_n)
     double viscous_power = 0; // int A eps(w_n) : eps(w_n)
     double elastic_power = 0; // int B eps(w_n) : eps(w_n)
+  };
+
+
+  /**
+   * The moments about the z-axis through the origin (the axis normal to
+   * the plane in 2D) at t_n: the angular momentum L_n = int rho (x x w_n)_z
+   * (with the mass matrix's quadrature), the moment of the loads F_n, that
+   * of the friction forces -C^T eta_n on the body, and what is left of
+   * (L_n - L_{n-1}) / k: the moment of the reactions of the constraints
+   * (clamp, normal reactions of Gamma_3 and of symmetry planes). (5.2)
+   * tested with the rotation r = e_z x x gives
+   *   (L_n - L_{n-1}) / k = applied + friction + reaction
+   * where r lies in V_h, with reaction = 0: no clamp, and every normal
+   * constraint normal to r, as on a Gamma_3 that is a circle or a cylinder
+   * around the z-axis; and the mapping's degree at most the element's, so
+   * that r is its own interpolant.
+   */
+  struct MomentBalance
+  {
+    double angular_momentum = 0;
+    double applied          = 0;
+    double friction         = 0;
+    double reaction         = 0;
   };
 
 
@@ -213,8 +246,9 @@ namespace Contact
     ErrorNorms final_errors;
     /** What a contact engineer reads of the state at T, by name: the
      *  probe displacements, the friction dissipation, the slipping share
-     *  of Gamma_3's nodes and where the slip zone starts (NaN without
-     *  slip). An error estimate compares them between runs. */
+     *  of Gamma_3's nodes, where the slip zone starts (on an open Gamma_3;
+     *  NaN without slip) and the time of the first slip. An error estimate
+     * compares them between runs. */
     std::vector<std::pair<std::string, double>> final_quantities;
   };
 
@@ -249,6 +283,31 @@ namespace Contact
     unsigned int n_slip  = 0;
     double       from    = 0;
     double       to      = 0;
+  };
+
+
+  /**
+   * The first slip of a run (ContactProblem::track_slip_onset): its time
+   * (NaN while every node sticks), its step, whether the time was
+   * extrapolated, and the friction's utilisation max_p |eta_p| /
+   * (m_p S mu(0)) of the last two steps in which every node stuck, from
+   * which it is.
+   */
+  struct SlipOnset
+  {
+    double       time         = std::numeric_limits<double>::quiet_NaN();
+    unsigned int step         = 0;
+    bool         extrapolated = false;
+    double       utilisation  = 0;
+    double       previous_utilisation = 0;
+    unsigned int stick_steps          = 0;
+
+    template <class Archive>
+    void serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &time &step &extrapolated &utilisation &previous_utilisation
+        &stick_steps;
+    }
   };
 
 
@@ -312,20 +371,21 @@ namespace Contact
                          const Vector<double> &)>;
     using NodeVisitor =
       std::function<void(const ContactNode<dim> &, const Tensor<1, dim> &)>;
-    void             assemble_matrices();
-    void             form_system_matrix();
-    void             visit_loads(const double       load_time,
-                                 const bool         with_body_force,
-                                 const bool         with_surface_loads,
-                                 const CellVisitor &visit_cell,
-                                 const NodeVisitor &visit_node) const;
-    void             assemble_load(const double load_time,
-                                   VectorType  &load_vector,
-                                   const bool   with_body_force,
-                                   const bool   with_surface_loads) const;
-    void             assemble_constant_body_load();
-    double           load_power(const double      load_time,
-                                const FastVector &w_ghosted) const;
+    void assemble_matrices();
+    void form_system_matrix();
+    void visit_loads(const double       load_time,
+                     const bool         with_body_force,
+                     const bool         with_surface_loads,
+                     const CellVisitor &visit_cell,
+                     const NodeVisitor &visit_node) const;
+    void assemble_load(const double load_time,
+                       VectorType  &load_vector,
+                       const bool   with_body_force,
+                       const bool   with_surface_loads) const;
+    void assemble_constant_body_load();
+    std::vector<double>
+                     load_power(const double                           load_time,
+                                const std::vector<const FastVector *> &fields) const;
     void             set_initial_values();
     void             warn_of_normal_component(const VectorType  &values,
                                               const std::string &entry) const;
@@ -356,8 +416,10 @@ namespace Contact
     FieldIntegrals field_integrals(const FastVector &u,
                                    const FastVector &w,
                                    const FastVector &old_w) const;
+    void           setup_moment_balance();
     void           start_self_checks();
     void           check_step();
+    void           update_moments(const double applied_moment);
     void           print_self_checks() const;
     void           require_self_checks() const;
 
@@ -397,6 +459,7 @@ namespace Contact
     bool           is_nearest_step(const double t) const;
     bool           report_due() const;
     SlipZone       slip_zone() const;
+    void           track_slip_onset();
     void           report_contact_state();
     std::vector<std::pair<std::string, double>> final_quantities() const;
     void                                        print_summary() const;
@@ -459,13 +522,15 @@ namespace Contact
     // The matrices of (5.2): mass (with rho), viscosity A_h, elasticity
     // B_h, and K = (1/k) M + A_h + k B_h, all condensed with the
     // constraints (assembly.cc). K is factorised once per run
-    // (time_stepping.cc). momentum_density[d]_i =
-    // int rho phi_i . e_d gives the momentum of a velocity as a dot product.
+    // (time_stepping.cc). momentum_density[d]_i = int rho phi_i . e_d and
+    // angular_momentum_density_i = int rho (x x phi_i)_z give the momentum
+    // and the angular momentum of a velocity as dot products.
     MatrixType                     mass_matrix;
     MatrixType                     viscosity_matrix;
     MatrixType                     elasticity_matrix;
     MatrixType                     system_matrix;
     std::array<VectorType, dim>    momentum_density;
+    VectorType                     angular_momentum_density;
     std::unique_ptr<Factorization> factorization;
 
     // The time step state: u_n, w_n, the loads F_n and the previous ones
@@ -496,6 +561,13 @@ namespace Contact
     EnergyBalance   energy_by_quadrature;
     SelfCheckValues step_checks;
     SelfCheckValues largest_checks;
+    // The rotation r = e_z x x (interpolated), its tangential components on
+    // Gamma_3 (C r), whether r lies in V_h (the moment balance is then a
+    // self-check), and the moments of the last step.
+    FastVector     rotation;
+    Vector<double> rotation_on_gamma3;
+    bool           moment_balance_is_checked = false;
+    MomentBalance  moments;
     // Above it a self-check has failed, and the run ends with an error
     // (the summary prints which).
     static constexpr double self_check_tolerance = 1e-8;
@@ -512,6 +584,7 @@ namespace Contact
     std::ofstream                               gamma3_history;
     std::vector<std::pair<double, std::string>> pvd_records;
     std::vector<double>                         pending_report_times;
+    SlipOnset                                   slip_onset;
     StepStatistics                              totals;
     // Wall time of the steps' first solves with K (or substitutions with
     // its factor), summed over the steps computed by this process's run

@@ -45,7 +45,8 @@ namespace Contact
     FEValues<dim>                        mass_values(*mapping,
                               fe,
                               mass_quadrature,
-                              update_values | update_JxW_values);
+                              update_values | update_quadrature_points |
+                                update_JxW_values);
     const FEValuesExtractors::Vector     displacements(0);
     const unsigned int                   n_dofs = fe.n_dofs_per_cell();
     FullMatrix<double>                   cell_mass(n_dofs, n_dofs);
@@ -56,6 +57,7 @@ namespace Contact
     std::vector<SymmetricTensor<2, dim>> eps(n_dofs);
     std::vector<double>                  div(n_dofs);
     std::vector<Vector<double>> cell_momentum(dim, Vector<double>(n_dofs));
+    Vector<double>              cell_angular_momentum(n_dofs);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -67,15 +69,19 @@ namespace Contact
           cell_elasticity = 0;
           for (auto &vector : cell_momentum)
             vector = 0;
+          cell_angular_momentum = 0;
           for (const unsigned int q : mass_values.quadrature_point_indices())
             {
               for (unsigned int i = 0; i < n_dofs; ++i)
                 phi[i] = mass_values[displacements].value(i, q);
-              const double JxW = mass_values.JxW(q);
+              const double      JxW = mass_values.JxW(q);
+              const Point<dim> &x   = mass_values.quadrature_point(q);
               for (unsigned int i = 0; i < n_dofs; ++i)
                 {
                   for (unsigned int d = 0; d < dim; ++d)
                     cell_momentum[d](i) += rho * phi[i][d] * JxW;
+                  cell_angular_momentum(i) +=
+                    rho * (x[0] * phi[i][1] - x[1] * phi[i][0]) * JxW;
                   for (unsigned int j = 0; j < n_dofs; ++j)
                     cell_mass(i, j) += rho * phi[i] * phi[j] * JxW;
                 }
@@ -111,9 +117,11 @@ namespace Contact
                                                  elasticity_matrix);
           for (unsigned int d = 0; d < dim; ++d)
             momentum_density[d].add(dof_indices, cell_momentum[d]);
+          angular_momentum_density.add(dof_indices, cell_angular_momentum);
         }
     for (VectorType &vector : momentum_density)
       vector.compress(VectorOperation::add);
+    angular_momentum_density.compress(VectorOperation::add);
     for (MatrixType *matrix :
          {&mass_matrix, &viscosity_matrix, &elasticity_matrix})
       matrix->compress(VectorOperation::add);
@@ -315,43 +323,47 @@ namespace Contact
 
   // @sect4{ContactProblem::load_power}
 
-  // F(t) . w for a velocity in V_h, from the loads' expressions at time t
-  // and the velocity's values on each cell, without the assembled load
+  // F(t) . w for fields w in V_h (ghosted), from the loads' expressions at
+  // time t and the fields' values on each cell, without the assembled load
   // vector: int f_0 . w_h dx + int_Gamma2 f_2 . w_h ds (+ the nodal f_3 of
-  // a manufactured solution), with the quadrature of the assembly. A body
-  // force constant in time is integrated once (constant_body_power holds
-  // its cell vectors).
+  // a manufactured solution), with the quadrature of the assembly. The
+  // loads are evaluated once for all fields (the velocity's power and the
+  // rotation's moment). A body force constant in time is integrated once
+  // (constant_body_cell_loads holds its cell vectors).
   template <int dim>
-  double ContactProblem<dim>::load_power(const double      load_time,
-                                         const FastVector &w_ghosted) const
+  std::vector<double> ContactProblem<dim>::load_power(
+    const double                           load_time,
+    const std::vector<const FastVector *> &fields) const
   {
-    Vector<double> w_cell(fe.n_dofs_per_cell());
-    double         power      = 0;
-    const auto     visit_cell = [&](const auto           &cell,
-                                const Vector<double> &cell_rhs) {
-      cell->get_dof_values(w_ghosted, w_cell);
-      power += cell_rhs * w_cell;
+    Vector<double>      w_cell(fe.n_dofs_per_cell());
+    std::vector<double> power(fields.size());
+    const auto          add_cell = [&](const auto           &cell,
+                              const Vector<double> &cell_rhs) {
+      for (unsigned int i = 0; i < fields.size(); ++i)
+        {
+          cell->get_dof_values(*fields[i], w_cell);
+          power[i] += cell_rhs * w_cell;
+        }
     };
     visit_loads(load_time,
                 !body_force_is_constant,
                 true,
-                visit_cell,
+                add_cell,
                 [&](const ContactNode<dim> &node, const Tensor<1, dim> &force) {
                   if (node.locally_owned)
-                    for (unsigned int d = 0; d < dim; ++d)
-                      power += force[d] * w_ghosted[node.dofs[d]];
+                    for (unsigned int i = 0; i < fields.size(); ++i)
+                      for (unsigned int d = 0; d < dim; ++d)
+                        power[i] += force[d] * (*fields[i])[node.dofs[d]];
                 });
     if (body_force_is_constant)
       {
         unsigned int index = 0;
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
-            {
-              cell->get_dof_values(w_ghosted, w_cell);
-              power += constant_body_cell_loads[index++] * w_cell;
-            }
+            add_cell(cell, constant_body_cell_loads[index++]);
       }
-    return Utilities::MPI::sum(power, mpi_communicator);
+    Utilities::MPI::sum(power, mpi_communicator, power);
+    return power;
   }
 
 
@@ -529,30 +541,30 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                                       \
-  template void   ContactProblem<dim>::assemble_matrices();                    \
-  template void   ContactProblem<dim>::form_system_matrix();                   \
-  template void   ContactProblem<dim>::assemble_load(const double,             \
+#define INSTANTIATE(dim)                                                     \
+  template void ContactProblem<dim>::assemble_matrices();                    \
+  template void ContactProblem<dim>::form_system_matrix();                   \
+  template void ContactProblem<dim>::assemble_load(const double,             \
                                                    VectorType &,             \
                                                    const bool,               \
                                                    const bool) const;        \
-  template void   ContactProblem<dim>::visit_loads(const double,               \
+  template void ContactProblem<dim>::visit_loads(const double,               \
                                                  const bool,                 \
                                                  const bool,                 \
                                                  const CellVisitor &,        \
                                                  const NodeVisitor &) const; \
-  template void   ContactProblem<dim>::assemble_constant_body_load();          \
-  template double ContactProblem<dim>::load_power(const double,                \
-                                                  const FastVector &) const;   \
-  template void   ContactProblem<dim>::set_initial_values();                   \
-  template void   ContactProblem<dim>::warn_of_normal_component(               \
+  template void ContactProblem<dim>::assemble_constant_body_load();          \
+  template std::vector<double> ContactProblem<dim>::load_power(              \
+    const double, const std::vector<const FastVector *> &) const;            \
+  template void ContactProblem<dim>::set_initial_values();                   \
+  template void ContactProblem<dim>::warn_of_normal_component(               \
     const VectorType &, const std::string &) const;                          \
-  template void ContactProblem<dim>::condensed_product(const MatrixType &,     \
-                                                       const VectorType &,     \
-                                                       VectorType &) const;    \
-  template void ContactProblem<dim>::update_energy_balance(                    \
-    const VelocityProducts &);                                                 \
-  template VelocityProducts ContactProblem<dim>::velocity_products() const;    \
+  template void ContactProblem<dim>::condensed_product(const MatrixType &,   \
+                                                       const VectorType &,   \
+                                                       VectorType &) const;  \
+  template void ContactProblem<dim>::update_energy_balance(                  \
+    const VelocityProducts &);                                               \
+  template VelocityProducts ContactProblem<dim>::velocity_products() const;  \
   template Tensor<1, dim>   ContactProblem<dim>::momentum() const;
 
   INSTANTIATE(2)

@@ -39,7 +39,7 @@ namespace Contact
 {
   namespace
   {
-    const std::string checkpoint_format = "contact checkpoint 5";
+    const std::string checkpoint_format = "contact checkpoint 6";
 
     std::uint32_t crc32(const std::string &bytes)
     {
@@ -163,7 +163,7 @@ namespace Contact
     for (ErrorNorms *errors : {&current_errors, &max_errors})
       archive & errors->displacement_V & errors->velocity_L2 &
         errors->displacement_L2;
-    archive &pvd_records &pending_report_times;
+    archive &pvd_records &pending_report_times &slip_onset;
   }
 
 

@@ -259,6 +259,7 @@ namespace Contact
 
         totals.add_counts(statistics);
 
+        track_slip_onset();
         write_time_series_row(statistics);
         write_gamma3_history_rows();
         if (vtu_interval > 0 && (step_number % vtu_interval == 0 ||

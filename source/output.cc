@@ -222,7 +222,9 @@ namespace Contact
              "friction_dissipation,numerical_dissipation,algebraic_energy_residual,"
              "quadrature_energy_residual,friction_law_residual,momentum_x,"
              "momentum_y"
-          << (dim == 3 ? ",momentum_z" : "");
+          << (dim == 3 ? ",momentum_z" : "")
+          << ",angular_momentum,applied_moment,friction_moment,"
+             "reaction_moment";
         for (unsigned int i = 0; i < probes.size(); ++i)
           for (unsigned int d = 0; d < dim; ++d)
             time_series << ",probe" << i + 1 << "_u_"
@@ -351,6 +353,8 @@ namespace Contact
                 << step_checks.friction_law;
     for (unsigned int d = 0; d < dim; ++d)
       time_series << ',' << p[d];
+    time_series << ',' << moments.angular_momentum << ',' << moments.applied
+                << ',' << moments.friction << ',' << moments.reaction;
     for (const Tensor<1, dim> &u : probe_values)
       for (unsigned int d = 0; d < dim; ++d)
         time_series << ',' << u[d];
@@ -727,6 +731,13 @@ namespace Contact
   }
 
 
+  // @sect4{ContactProblem::slip_zone}
+
+  // The slipping nodes of Gamma_3 and where they are: the range of their x
+  // on a box or a mesh file; on a shell, whose Gamma_3 is closed, the
+  // smallest arc about the z-axis that holds them all, from `from` to `to`
+  // counterclockwise in degrees: the complement of the widest gap between
+  // slipping nodes.
   template <int dim>
   SlipZone ContactProblem<dim>::slip_zone() const
   {
@@ -734,18 +745,83 @@ namespace Contact
       friction_solver->boundary().nodes;
     const std::vector<NodeState> &node_state =
       friction_solver->state().node_state;
-    SlipZone zone;
+    SlipZone            zone;
+    std::vector<double> angles;
     for (unsigned int p = 0; p < contact_nodes.size(); ++p)
       if (node_state[p] == NodeState::stick)
         ++zone.n_stick;
       else
         {
-          const double x = contact_nodes[p].location[0];
-          zone.from      = (zone.n_slip == 0 ? x : std::min(zone.from, x));
-          zone.to        = (zone.n_slip == 0 ? x : std::max(zone.to, x));
+          const Point<dim> &x = contact_nodes[p].location;
+          zone.from = (zone.n_slip == 0 ? x[0] : std::min(zone.from, x[0]));
+          zone.to   = (zone.n_slip == 0 ? x[0] : std::max(zone.to, x[0]));
+          angles.push_back(std::atan2(x[1], x[0]) * 180 / numbers::PI);
           ++zone.n_slip;
         }
+    if (parameters.geometry.shell && !angles.empty())
+      {
+        std::sort(angles.begin(), angles.end());
+        const unsigned int n = angles.size();
+        // From slipping node i to the next one counterclockwise.
+        const auto gap = [&](const unsigned int i) {
+          return i + 1 < n ? angles[i + 1] - angles[i] :
+                             angles[0] + 360 - angles[i];
+        };
+        unsigned int widest = n - 1;
+        for (unsigned int i = 0; i < n; ++i)
+          if (gap(i) > gap(widest))
+            widest = i;
+        zone.from = angles[(widest + 1) % n];
+        zone.to   = angles[widest];
+      }
     return zone;
+  }
+
+
+  // @sect4{ContactProblem::track_slip_onset}
+
+  // The time of the first slip. The first step with a slipping node, t_n,
+  // alone would move in jumps of k as h changes; instead the friction's
+  // utilisation max_p |eta_p| / (m_p S mu(0)) of the last two steps in
+  // which every node stuck is extrapolated linearly to 1, within
+  // [t_{n-1}, t_n]. So the onset converges in h at a fixed k, and its error
+  // in k is that of the scheme, not k itself.
+  template <int dim>
+  void ContactProblem<dim>::track_slip_onset()
+  {
+    if (!std::isnan(slip_onset.time) || friction_law.is_frictionless())
+      return;
+    const std::vector<ContactNode<dim>> &nodes =
+      friction_solver->boundary().nodes;
+    const auto &[friction_force, slip_velocity, node_state] =
+      friction_solver->state();
+    double utilisation = 0;
+    for (unsigned int p = 0; p < nodes.size(); ++p)
+      if (node_state[p] != NodeState::stick)
+        {
+          const double previous = time - time_step;
+          double       rise     = 0;
+          if (slip_onset.stick_steps >= 2)
+            rise = (slip_onset.utilisation - slip_onset.previous_utilisation) /
+                   time_step;
+          slip_onset.step         = step_number;
+          slip_onset.extrapolated = rise > 0;
+          slip_onset.time =
+            rise > 0 ?
+              std::clamp(previous + (1 - slip_onset.utilisation) / rise,
+                         previous,
+                         time) :
+              previous;
+          return;
+        }
+      else if (nodes[p].weight > 0)
+        utilisation =
+          std::max(utilisation,
+                   nodes[p].tangential_vector(friction_force, p).norm() /
+                     (nodes[p].weight * friction_law.bound(0.)));
+    slip_onset.previous_utilisation = slip_onset.utilisation;
+    slip_onset.utilisation          = utilisation;
+    ++slip_onset.stick_steps;
   }
 
 
@@ -774,10 +850,12 @@ namespace Contact
     if (n_nodes > 0)
       quantities.emplace_back("slipping share of Gamma_3",
                               double(zone.n_slip) / n_nodes);
-    quantities.emplace_back("slip zone starts at x",
-                            zone.n_slip > 0 ?
-                              zone.from :
-                              std::numeric_limits<double>::quiet_NaN());
+    if (!parameters.geometry.shell)
+      quantities.emplace_back("slip zone starts at x",
+                              zone.n_slip > 0 ?
+                                zone.from :
+                                std::numeric_limits<double>::quiet_NaN());
+    quantities.emplace_back("time of the first slip", slip_onset.time);
     return quantities;
   }
 
@@ -802,9 +880,12 @@ namespace Contact
                         Entry::end_time + "'" :
                       "")
                 << "): " << n_stick << " stick, " << n_slip << " slip";
-          if (n_slip > 0)
+          if (n_slip > 0 && !parameters.geometry.shell)
             pcout << ", slip zone x in [" << slip_from << ", " << slip_to
                   << "]";
+          else if (n_slip > 0 && n_stick > 0)
+            pcout << ", slip on the arc from " << slip_from << " to " << slip_to
+                  << " degrees (counterclockwise)";
           // The sum of the nodal forces: along the tangent in 2D, as a
           // vector in 3D.
           Tensor<1, dim> friction;
@@ -812,7 +893,8 @@ namespace Contact
             friction += contact_nodes[p].tangential_vector(friction_force, p);
           // A scalar along the tangent where Gamma_3 is straight (all its
           // nodes share one tangent), the vector otherwise. (The slip zone
-          // is given by its x range, which locates it on any Gamma_3.)
+          // is given by its x range, which locates it on any open Gamma_3,
+          // or on a shell's closed one by its arc.)
           bool straight = (dim == 2 && !contact_nodes.empty());
           for (const ContactNode<dim> &node : contact_nodes)
             straight =
@@ -864,6 +946,18 @@ namespace Contact
           << energy.viscous_dissipation << ", friction "
           << energy.friction_dissipation << ", numerical "
           << energy.numerical_dissipation << std::endl;
+    if (slip_onset.extrapolated)
+      pcout << "First slip at t = " << std::setprecision(8) << slip_onset.time
+            << " (in step " << slip_onset.step
+            << ", extrapolated from the friction's utilisation at the two "
+               "steps before)"
+            << std::endl;
+    else if (!std::isnan(slip_onset.time))
+      pcout << "First slip in step " << slip_onset.step
+            << " (from t = " << std::setprecision(8) << slip_onset.time
+            << " on; no two steps before it in which every node stuck, to "
+               "extrapolate from)"
+            << std::endl;
     print_self_checks();
     if (exact_solution)
       pcout << "Errors, largest over the steps: ||eps(u - u_h)|| "
@@ -910,6 +1004,7 @@ namespace Contact
   template void ContactProblem<dim>::claim_output_directory();                 \
   template void ContactProblem<dim>::prepare_output_directory();               \
   template void ContactProblem<dim>::write_gamma3_history_rows();              \
+  template void ContactProblem<dim>::track_slip_onset();                       \
   template void ContactProblem<dim>::write_time_series_row(                    \
     const StepStatistics &);                                                   \
   template std::string ContactProblem<dim>::vtu_piece_name(const unsigned int, \

@@ -1,16 +1,20 @@
 /* The checks every run makes of its own results (doc/verification.md):
    the energy identity of the scheme twice, from the matrices and by
    quadrature of the fields, the friction law at the converged slip rates,
-   and the sign of the friction power. A run that fails one of them ends
-   with an error instead of presenting its results as good. */
+   the sign of the friction power, and the balance of moments about the
+   z-axis where a rigid rotation is admissible. A run that fails one of
+   them ends with an error instead of presenting its results as good. */
 
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/lac/la_parallel_vector.h>
+
+#include <deal.II/numerics/vector_tools.h>
 
 #include <contact_problem.h>
 
@@ -136,12 +140,49 @@ namespace Contact
   }
 
 
+  // @sect4{ContactProblem::setup_moment_balance}
+
+  // The rigid rotation r = e_z x x, interpolated, its tangential components
+  // on Gamma_3, and whether the balance of moments is a self-check: where r
+  // lies in V_h, (5.2) tested with r has no reaction term, and where the
+  // mapping's degree is at most the element's, r is its own interpolant, so
+  // eps(r) = 0 takes the internal forces out and the angular momentum with
+  // the exact x is r^T M w. Whether r lies in V_h is asked of the
+  // constraints themselves (they leave r as it is): a clamp, or a normal
+  // constraint not normal to r, excludes it. On a curved Gamma_3 around the
+  // axis this is the test of its discrete normals: they must be radial.
+  template <int dim>
+  void ContactProblem<dim>::setup_moment_balance()
+  {
+    std::vector<std::function<double(const Point<dim> &)>> components(
+      dim, [](const Point<dim> &) { return 0.; });
+    components[0] = [](const Point<dim> &x) { return -x[1]; };
+    components[1] = [](const Point<dim> &x) { return x[0]; };
+    VectorType r(locally_owned_dofs, mpi_communicator);
+    VectorTools::interpolate(*mapping,
+                             dof_handler,
+                             FunctionFromFunctionObjects<dim>(components),
+                             r);
+    VectorType constrained(r);
+    constraints.distribute(constrained);
+    constrained -= r;
+    const auto &geometry = parameters.geometry;
+    moment_balance_is_checked =
+      constrained.linfty_norm() <= 1e-12 * r.linfty_norm() &&
+      (geometry.simplex_cells || geometry.mapping_degree <= fe.degree);
+    rotation           = fast_ghosted(r);
+    rotation_on_gamma3 = friction_solver->boundary().tangential_velocities(r);
+  }
+
+
   // @sect4{ContactProblem::start_self_checks}
 
   // The initial energy by quadrature, after set_initial_values().
   template <int dim>
   void ContactProblem<dim>::start_self_checks()
   {
+    moments                  = MomentBalance();
+    moments.angular_momentum = angular_momentum_density * velocity;
     const FastVector u = fast_ghosted(displacement), w = fast_ghosted(velocity);
     const FieldIntegrals integrals = field_integrals(u, w, w);
     energy_by_quadrature           = EnergyBalance();
@@ -179,8 +220,10 @@ namespace Contact
     balance.viscous_dissipation += k * integrals.viscous_power;
     balance.numerical_dissipation +=
       integrals.velocity_jump + 0.5 * k * k * integrals.elastic_power;
-    balance.external_work += k * load_power(time, w);
+    const std::vector<double> load_powers = load_power(time, {&w, &rotation});
+    balance.external_work += k * load_powers[0];
     balance.friction_dissipation = energy.friction_dissipation;
+    update_moments(load_powers[1]);
 
     const auto relative = [](const double value, const double scale) {
       return std::abs(value) /
@@ -199,7 +242,37 @@ namespace Contact
     step_checks.negative_friction_power =
       relative(std::min(k * friction_solver->slip_power(velocity), 0.),
                energy.scale());
+    step_checks.moment_scale = std::max(
+      {std::abs(moments.applied),
+       std::abs(moments.friction),
+       std::abs(moments.applied + moments.friction + moments.reaction)});
+    step_checks.moment_balance =
+      moment_balance_is_checked ?
+        relative(moments.reaction,
+                 std::max(step_checks.moment_scale,
+                          largest_checks.moment_scale)) :
+        0.;
     largest_checks.take_largest(step_checks);
+  }
+
+
+  // @sect4{ContactProblem::update_moments}
+
+  // The moments of the step (MomentBalance): L_n and L_{n-1} by the angular
+  // momentum density (from w_{n-1}, so that a resumed run needs nothing
+  // more of the past), the loads' moment F_n . r, and the friction's
+  // -eta_n . C r.
+  template <int dim>
+  void ContactProblem<dim>::update_moments(const double applied_moment)
+  {
+    const double old_angular_momentum = angular_momentum_density * old_velocity;
+    moments.angular_momentum          = angular_momentum_density * velocity;
+    moments.applied                   = applied_moment;
+    moments.friction =
+      -(friction_solver->state().friction_force * rotation_on_gamma3);
+    moments.reaction =
+      (moments.angular_momentum - old_angular_momentum) / time_step -
+      moments.applied - moments.friction;
   }
 
 
@@ -234,6 +307,20 @@ namespace Contact
     line("negative friction power on slipping nodes",
          c.negative_friction_power,
          c.negative_friction_power);
+    if (moment_balance_is_checked)
+      line("balance of moments about the z-axis",
+           c.moment_balance,
+           c.moment_balance);
+    else if (parameters.geometry.shell)
+      pcout << "  (balance of moments about the z-axis: not checked, "
+            << (parameters.geometry.mapping_degree > fe.degree ?
+                  "the mapping's degree is above the element's, so the "
+                  "rigid rotation is not in the finite element space; "
+                  "column reaction_moment of time_series.csv shows how far "
+                  "the balance holds)" :
+                  "the constraints exclude the rotation (a clamp, or "
+                  "normals not normal to it))")
+            << std::endl;
   }
 
 
@@ -267,6 +354,10 @@ namespace Contact
         "the friction power on the slipping nodes, which must not be "
         "negative,",
         "friction_dissipation");
+    add(largest_checks.moment_balance,
+        "the balance of moments about the z-axis (the reactions of the "
+        "constraints must have no moment)",
+        "reaction_moment");
     std::ostringstream message;
     message << "Self-check failed (tolerance " << self_check_tolerance
             << "):" << failures.str() << "\nThe results in '"
@@ -288,7 +379,9 @@ namespace Contact
     const FastVector &, const FastVector &, const FastVector &) const;      \
   template FastVector ContactProblem<dim>::fast_ghosted(const VectorType &) \
     const;                                                                  \
+  template void ContactProblem<dim>::setup_moment_balance();                \
   template void ContactProblem<dim>::start_self_checks();                   \
+  template void ContactProblem<dim>::update_moments(const double);          \
   template void ContactProblem<dim>::check_step();                          \
   template void ContactProblem<dim>::print_self_checks() const;             \
   template void ContactProblem<dim>::require_self_checks() const;           \

@@ -466,6 +466,7 @@ namespace Contact
                      mpi_communicator);
     for (VectorType &vector : momentum_density)
       vector.reinit(locally_owned_dofs, mpi_communicator);
+    angular_momentum_density.reinit(locally_owned_dofs, mpi_communicator);
     for (VectorType *vector :
          {&displacement, &velocity, &old_displacement, &old_velocity, &load})
       vector->reinit(locally_owned_dofs, mpi_communicator);
@@ -479,6 +480,7 @@ namespace Contact
                                                             pcout,
                                                             computing_timer);
     friction_solver->set_sabotage(sabotage);
+    setup_moment_balance();
     setup_probes();
 
     pcout << "Mesh: " << triangulation->n_global_active_cells() << " cells, "
@@ -486,6 +488,18 @@ namespace Contact
           << ", " << dof_handler.n_dofs() << " unknowns, "
           << friction_solver->boundary().nodes.size()
           << " free nodes on Gamma_3" << std::endl;
+    // Measured on the bushing (doc/verification.md, "A curved Gamma_3"):
+    // Q2 nodes on the chords of a circle make the slip onset converge at
+    // first order in h only, Q2 on the curved cells at second order.
+    const auto &geometry = parameters.geometry;
+    if (geometry.shell && geometry.mapping_degree < fe.degree)
+      pcout << "Warning: '" << Entry::mapping_degree
+            << "' = " << geometry.mapping_degree << " is below '"
+            << Entry::finite_element_degree << "' = " << fe.degree
+            << ": the element's nodes on the circles lie on their chords, "
+               "which costs the tractions on Gamma_3 an order of accuracy "
+               "(doc/verification.md); set both equal."
+            << std::endl;
   }
 
 

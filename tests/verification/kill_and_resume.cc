@@ -37,6 +37,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 extern char **environ;
@@ -71,8 +72,12 @@ pid_t start(const unsigned int              processes,
 
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  // The console output goes to a log next to the output directory, which
+  // the test shows when a run fails.
+  const std::string log = directory + ".log";
+  posix_spawn_file_actions_addopen(
+    &actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
@@ -183,6 +188,61 @@ bool same_time_series(const std::string &a_name, const std::string &b_name)
   return true;
 }
 
+// The processes whose parent is `parent`, from /proc. Open MPI's mpirun
+// starts each rank in a process group of its own, so killing mpirun's
+// group leaves the ranks running on their own for a second or two (they
+// then went on writing into the output directory while the resumed run
+// started, which that run refused as locked): the ranks are killed by
+// their process ids as well, as a batch system kills the whole job.
+// The state and the parent of a process from /proc/<pid>/stat
+// ("pid (command) state ppid ...", the command may contain blanks); state
+// 'X' if there is no such process.
+std::pair<char, pid_t> process_state(const std::string &pid)
+{
+  std::ifstream stat("/proc/" + pid + "/stat");
+  std::string   line;
+  std::getline(stat, line);
+  const auto closing = line.rfind(')');
+  if (closing == std::string::npos)
+    return {'X', 0};
+  std::istringstream fields(line.substr(closing + 1));
+  char               state = 'X';
+  pid_t              ppid  = 0;
+  fields >> state >> ppid;
+  return {state, ppid};
+}
+
+std::vector<pid_t> children(const pid_t parent)
+{
+  std::vector<pid_t> result;
+  for (const auto &entry : fs::directory_iterator("/proc"))
+    {
+      const std::string name = entry.path().filename().string();
+      if (name.find_first_not_of("0123456789") == std::string::npos &&
+          process_state(name).second == parent)
+        result.push_back(std::stoi(name));
+    }
+  return result;
+}
+
+// Kills the job and every process it started, and waits until they are
+// gone.
+int kill_job(const pid_t job)
+{
+  const std::vector<pid_t> ranks = children(job);
+  kill(-job, SIGKILL);
+  for (const pid_t rank : ranks)
+    kill(rank, SIGKILL);
+  const int status = wait_for(job);
+  // Gone, or a zombie (which the container's init may never reap).
+  for (const pid_t rank : ranks)
+    for (char state = 'R';
+         (state = process_state(std::to_string(rank)).first) != 'X' &&
+         state != 'Z';)
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  return status;
+}
+
 bool killed_by_sigkill(const int status)
 {
   return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
@@ -200,7 +260,10 @@ void kill_and_resume(const unsigned int processes)
   const std::string full   = "run-full-" + std::to_string(processes),
                     killed = "run-killed-" + std::to_string(processes);
   for (const std::string &directory : {full, killed})
-    fs::remove_all(directory);
+    {
+      fs::remove_all(directory);
+      fs::remove(directory + ".log");
+    }
   wait_for(start(processes, full, {}));
 
   // A loaded machine may let the run finish before the kill comes: then it
@@ -210,6 +273,7 @@ void kill_and_resume(const unsigned int processes)
        ++attempt)
     {
       fs::remove_all(killed);
+      fs::remove(killed + ".log");
       const pid_t job =
         start(processes, killed, {"--set", "Output/Checkpoint interval=5"});
       bool still_running = true;
@@ -221,19 +285,22 @@ void kill_and_resume(const unsigned int processes)
         }
       if (still_running)
         {
-          kill(-job, SIGKILL);
-          kill_status = wait_for(job);
+          kill_status = kill_job(job);
         }
     }
   std::cout << "killed by SIGKILL mid-run: "
             << yes_no(killed_by_sigkill(kill_status)) << std::endl;
 
-  const int resume_status = wait_for(start(
+  const int  resume_status = wait_for(start(
     processes, killed, {"--set", "Output/Checkpoint interval=5", "--resume"}));
-  std::cout << "resumed run exited with status 0: "
-            << yes_no(WIFEXITED(resume_status) &&
-                      WEXITSTATUS(resume_status) == 0)
+  const bool resumed =
+    WIFEXITED(resume_status) && WEXITSTATUS(resume_status) == 0;
+  std::cout << "resumed run exited with status 0: " << yes_no(resumed)
             << std::endl;
+  if (!resumed)
+    std::cerr << "The resumed run ended with status " << resume_status
+              << "; its console output and that of the killed run:\n"
+              << contents(killed + ".log") << std::endl;
 
   const std::set<std::string> files = output_files(full);
   bool                        same  = (files == output_files(killed));
