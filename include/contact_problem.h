@@ -362,8 +362,12 @@ namespace Contact
     void         make_constraints();
     std::vector<ContactNode<dim>> contact_nodes() const;
     std::map<types::global_dof_index, ContactNode<dim>>
-         integrate_contact_faces() const;
-    void setup_probes();
+                 integrate_contact_faces() const;
+    void         setup_probes();
+    unsigned int probe_near_curved_boundary(
+      const Point<dim> &point,
+      std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
+        &probe) const;
 
     // assembly.cc
     using CellVisitor =

@@ -286,10 +286,10 @@ namespace Contact
                 ExcMessage("Entry 'Geometry/Mass matrix': lumped is "
                            "available for 'Cell shape = hypercube' only; "
                            "allowed with simplices is consistent."));
-    check_entry(!shell || mesh_file.empty(),
-                "Geometry/Domain",
-                0.,
-                "box with a 'Geometry/Mesh file' (the file is the domain)");
+    AssertThrow(!shell || mesh_file.empty(),
+                ExcMessage("Entry 'Geometry/Domain': shell does not go "
+                           "with a 'Geometry/Mesh file' (the file is the "
+                           "domain); allowed with a mesh file is box."));
     check_entry(!shell || outer_radius > inner_radius,
                 "Geometry/Outer radius",
                 outer_radius,
@@ -309,11 +309,10 @@ namespace Contact
                 "Geometry/Rotation angle",
                 rotation_angle,
                 "0 with 'Geometry/Domain = shell'");
-    check_entry(!shell || !simplex_cells,
-                "Geometry/Domain",
-                1.,
-                "box with 'Cell shape = simplex' (the shell is built of "
-                "quadrilaterals/hexahedra)");
+    AssertThrow(!shell || !simplex_cells,
+                ExcMessage("Entry 'Geometry/Domain': shell is built of "
+                           "quadrilaterals/hexahedra; allowed with 'Cell "
+                           "shape = simplex' is box."));
     check_entry(!simplex_cells || mapping_degree == 1,
                 "Geometry/Mapping degree",
                 mapping_degree,
@@ -1000,7 +999,10 @@ namespace Contact
                         Patterns::Anything(),
                         "Points 'x, y[, z]' separated by ';' whose "
                         "displacement is written to time_series.csv "
-                        "(columns probe<i>_u_x, ...).");
+                        "(columns probe<i>_u_x, ...). On a shell a point "
+                        "between its radii that the cells miss by the "
+                        "geometry error of their curved boundary is taken "
+                        "at the nearest point of the cell around it.");
       prm.declare_entry("Progress interval",
                         "1",
                         Patterns::Integer(0),

@@ -838,13 +838,15 @@ namespace Contact
           }
         catch (const ExceptionBase &)
           {}
-        const unsigned int evaluating_process =
+        unsigned int evaluating_process =
           Utilities::MPI::min(probe.first.state() == IteratorState::valid ?
                                 this_process :
                                 n_processes,
                               mpi_communicator);
         std::ostringstream text;
         text << point;
+        if (evaluating_process == n_processes && parameters.geometry.shell)
+          evaluating_process = probe_near_curved_boundary(point, probe);
         AssertThrow(evaluating_process < n_processes,
                     ExcMessage("Entry '" + Entry::probe_points +
                                "': the point " + text.str() +
@@ -854,6 +856,63 @@ namespace Contact
           probe.first = typename DoFHandler<dim>::active_cell_iterator();
         probes.push_back(probe);
       }
+  }
+
+
+  // @sect4{ContactProblem::probe_near_curved_boundary}
+
+  // A point of the shell (between its radii, and in 3D its end faces, to
+  // 1e-6 of the outer radius, as a point typed with a few digits is) that
+  // no cell contains, because the cells' boundary is a polygon or a
+  // polynomial through points of the circle, not the circle itself: the
+  // nearest point of the cell around it (its reference coordinates, up to
+  // half a cell outside, moved onto the reference cell). Of all processes
+  // the one with the nearest cell evaluates it (the lowest rank on ties);
+  // the return value is that process, or the number of processes if the
+  // point is not of the shell.
+  template <int dim>
+  unsigned int ContactProblem<dim>::probe_near_curved_boundary(
+    const Point<dim> &point,
+    std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
+      &probe) const
+  {
+    const auto  &geometry = parameters.geometry;
+    const double radius   = std::hypot(point[0], point[1]),
+                 slack    = 1e-6 * geometry.outer_radius;
+    const unsigned int n_processes =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    if (radius < geometry.inner_radius - slack ||
+        radius > geometry.outer_radius + slack ||
+        (dim == 3 && (point[dim - 1] < -slack ||
+                      point[dim - 1] > geometry.shell_length + slack)))
+      return n_processes;
+    double outside = std::numeric_limits<double>::max();
+    try
+      {
+        for (const auto &candidate :
+             GridTools::find_all_active_cells_around_point(
+               *mapping, dof_handler, point, 0.5))
+          {
+            const Point<dim> inside =
+              GeometryInfo<dim>::project_to_unit_cell(candidate.second);
+            if (candidate.first->is_locally_owned() &&
+                inside.distance(candidate.second) < outside)
+              {
+                outside = inside.distance(candidate.second);
+                probe   = {candidate.first, inside};
+              }
+          }
+      }
+    catch (const ExceptionBase &)
+      {}
+    const double       nearest = Utilities::MPI::min(outside, mpi_communicator);
+    const unsigned int this_process =
+      Utilities::MPI::this_mpi_process(mpi_communicator);
+    return Utilities::MPI::min(nearest < std::numeric_limits<double>::max() &&
+                                   outside == nearest ?
+                                 this_process :
+                                 n_processes,
+                               mpi_communicator);
   }
 
 
@@ -889,8 +948,12 @@ namespace Contact
   template std::vector<ContactNode<dim>> ContactProblem<dim>::contact_nodes()         \
     const;                                                                            \
   template std::map<types::global_dof_index, ContactNode<dim>>                        \
-                      ContactProblem<dim>::integrate_contact_faces() const;           \
-  template void       ContactProblem<dim>::setup_probes();                            \
+                        ContactProblem<dim>::integrate_contact_faces() const;         \
+  template void         ContactProblem<dim>::setup_probes();                          \
+  template unsigned int ContactProblem<dim>::probe_near_curved_boundary(              \
+    const Point<dim> &,                                                               \
+    std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>> &)          \
+    const;                                                                            \
   template VectorType ContactProblem<dim>::ghosted(const VectorType &) const;
 
   INSTANTIATE(2)
