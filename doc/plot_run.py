@@ -18,15 +18,15 @@ writes into <directory>/figures/ (or --output):
   stick_slip.png       the space-time diagram of the stick/slip state on
                        Gamma_3 (coordinate against time; in 3D the fraction
                        of slipping nodes at each coordinate value)
-
-Along Gamma_3 the figures use the coordinate in which it extends furthest,
-or, where Gamma_3 is a circle or a cylinder about the z-axis (a shell's
-inner or outer boundary), the angle atan2(y, x) in degrees.
   energies.png         energies and dissipations, the self-check residuals
                        and the iteration counts per step
   convergence.png      for a convergence study (convergence.txt): every
                        error against h (or k, when only k changes) and
                        against the wall time of each level
+
+Along Gamma_3 the figures use the coordinate in which it extends furthest,
+or, where Gamma_3 is a circle or a cylinder about the z-axis (a shell's
+inner or outer boundary), the angle atan2(y, x) in degrees.
 
 Each figure needs its own file: deformed.png the VTU output (solution.pvd),
 the Gamma_3 figures gamma3_history.csv, energies.png time_series.csv; a

@@ -130,9 +130,10 @@ namespace Contact
    *     only dissipates; FrictionSolver::slip_power).
    *   - moment_balance: the balance of moments about the z-axis, (5.2)
    *     tested with the rigid rotation r = e_z x x, relative to the
-   *     largest moment so far (moment_scale). Checked only where r lies in
-   *     V_h (MomentBalance): it catches wrong loads, velocities, and
-   *     normals of a curved Gamma_3 whose reactions would turn the body.
+   *     largest sum so far of the magnitudes of the products it adds up
+   *     (moment_scale, update_moments()). Checked only where r lies in
+   *     V_h (MomentBalance): it catches wrong loads or velocities in the
+   *     balance law of the angular momentum.
    */
   struct SelfCheckValues
   {
@@ -210,6 +211,15 @@ namespace Contact
   };
 
 
+  /** F(t) . w of a field w, and the sum of the magnitudes of the products
+   *  it is the sum of: the scale of its round-off. */
+  struct LoadPower
+  {
+    double power     = 0;
+    double magnitude = 0;
+  };
+
+
   /** M w_n, A w_n and B w_n of a step's velocity (condensed). */
   struct VelocityProducts
   {
@@ -283,29 +293,38 @@ namespace Contact
     unsigned int n_slip  = 0;
     double       from    = 0;
     double       to      = 0;
+    // On a shell: the sticking nodes on the arc from `from` to `to`.
+    unsigned int n_stick_inside = 0;
   };
 
 
   /**
    * The first slip of a run (ContactProblem::track_slip_onset): its time
-   * (NaN while every node sticks), its step, whether the time was
-   * extrapolated, and the friction's utilisation max_p |eta_p| /
-   * (m_p S mu(0)) of the last two steps in which every node stuck, from
-   * which it is.
+   * (NaN while every node sticks), its step, how the time was found, and
+   * the friction's utilisation max_p |eta_p| / (m_p S mu(0)) of the last
+   * two steps in which every node stuck, from which it is extrapolated.
    */
   struct SlipOnset
   {
-    double       time         = std::numeric_limits<double>::quiet_NaN();
-    unsigned int step         = 0;
-    bool         extrapolated = false;
-    double       utilisation  = 0;
+    enum class Estimate : unsigned int
+    {
+      extrapolated, // within the step, from the utilisation
+      beyond_step,  // the extrapolation passes t_n: t_n
+      not_rising,   // the utilisation did not rise: t_{n-1}
+      too_few_steps // fewer than two all-stick steps before: t_{n-1}
+    };
+
+    double       time        = std::numeric_limits<double>::quiet_NaN();
+    unsigned int step        = 0;
+    Estimate     estimate    = Estimate::too_few_steps;
+    double       utilisation = 0;
     double       previous_utilisation = 0;
     unsigned int stick_steps          = 0;
 
     template <class Archive>
     void serialize(Archive &archive, const unsigned int /*version*/)
     {
-      archive &time &step &extrapolated &utilisation &previous_utilisation
+      archive &time &step &estimate &utilisation &previous_utilisation
         &stick_steps;
     }
   };
@@ -387,7 +406,7 @@ namespace Contact
                        const bool   with_body_force,
                        const bool   with_surface_loads) const;
     void assemble_constant_body_load();
-    std::vector<double>
+    std::vector<LoadPower>
                      load_power(const double                           load_time,
                                 const std::vector<const FastVector *> &fields) const;
     void             set_initial_values();
@@ -423,7 +442,7 @@ namespace Contact
     void           setup_moment_balance();
     void           start_self_checks();
     void           check_step();
-    void           update_moments(const double applied_moment);
+    double         update_moments(const LoadPower &applied);
     void           print_self_checks() const;
     void           require_self_checks() const;
 
@@ -464,6 +483,7 @@ namespace Contact
     bool           report_due() const;
     SlipZone       slip_zone() const;
     void           track_slip_onset();
+    void           print_slip_onset() const;
     void           report_contact_state();
     std::vector<std::pair<std::string, double>> final_quantities() const;
     void                                        print_summary() const;
@@ -566,10 +586,12 @@ namespace Contact
     SelfCheckValues step_checks;
     SelfCheckValues largest_checks;
     // The rotation r = e_z x x (interpolated), its tangential components on
-    // Gamma_3 (C r), whether r lies in V_h (the moment balance is then a
+    // Gamma_3 (C r), how much the constraints change it relative to its
+    // size, whether it lies in V_h (the moment balance is then a
     // self-check), and the moments of the last step.
     FastVector     rotation;
     Vector<double> rotation_on_gamma3;
+    double         rotation_defect           = 0;
     bool           moment_balance_is_checked = false;
     MomentBalance  moments;
     // Above it a self-check has failed, and the run ends with an error

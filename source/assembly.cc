@@ -328,21 +328,29 @@ namespace Contact
   // vector: int f_0 . w_h dx + int_Gamma2 f_2 . w_h ds (+ the nodal f_3 of
   // a manufactured solution), with the quadrature of the assembly. The
   // loads are evaluated once for all fields (the velocity's power and the
-  // rotation's moment). A body force constant in time is integrated once
+  // rotation's moment), and with each the sum of the magnitudes of the
+  // products it adds up (of every cell's and node's entry), the scale of its
+  // round-off. A body force constant in time is integrated once
   // (constant_body_cell_loads holds its cell vectors).
   template <int dim>
-  std::vector<double> ContactProblem<dim>::load_power(
+  std::vector<LoadPower> ContactProblem<dim>::load_power(
     const double                           load_time,
     const std::vector<const FastVector *> &fields) const
   {
-    Vector<double>      w_cell(fe.n_dofs_per_cell());
-    std::vector<double> power(fields.size());
-    const auto          add_cell = [&](const auto           &cell,
+    Vector<double> w_cell(fe.n_dofs_per_cell());
+    // Power and magnitude of field i at 2 i and 2 i + 1, summed at once.
+    std::vector<double> sums(2 * fields.size());
+    const auto          add = [&](const unsigned int i, const double product) {
+      sums[2 * i] += product;
+      sums[2 * i + 1] += std::abs(product);
+    };
+    const auto add_cell = [&](const auto           &cell,
                               const Vector<double> &cell_rhs) {
       for (unsigned int i = 0; i < fields.size(); ++i)
         {
           cell->get_dof_values(*fields[i], w_cell);
-          power[i] += cell_rhs * w_cell;
+          for (unsigned int j = 0; j < w_cell.size(); ++j)
+            add(i, cell_rhs[j] * w_cell[j]);
         }
     };
     visit_loads(load_time,
@@ -353,7 +361,7 @@ namespace Contact
                   if (node.locally_owned)
                     for (unsigned int i = 0; i < fields.size(); ++i)
                       for (unsigned int d = 0; d < dim; ++d)
-                        power[i] += force[d] * (*fields[i])[node.dofs[d]];
+                        add(i, force[d] * (*fields[i])[node.dofs[d]]);
                 });
     if (body_force_is_constant)
       {
@@ -362,8 +370,11 @@ namespace Contact
           if (cell->is_locally_owned())
             add_cell(cell, constant_body_cell_loads[index++]);
       }
-    Utilities::MPI::sum(power, mpi_communicator, power);
-    return power;
+    Utilities::MPI::sum(sums, mpi_communicator, sums);
+    std::vector<LoadPower> result(fields.size());
+    for (unsigned int i = 0; i < fields.size(); ++i)
+      result[i] = {sums[2 * i], sums[2 * i + 1]};
+    return result;
   }
 
 
@@ -554,7 +565,7 @@ namespace Contact
                                                  const CellVisitor &,        \
                                                  const NodeVisitor &) const; \
   template void ContactProblem<dim>::assemble_constant_body_load();          \
-  template std::vector<double> ContactProblem<dim>::load_power(              \
+  template std::vector<LoadPower> ContactProblem<dim>::load_power(           \
     const double, const std::vector<const FastVector *> &) const;            \
   template void ContactProblem<dim>::set_initial_values();                   \
   template void ContactProblem<dim>::warn_of_normal_component(               \

@@ -746,16 +746,22 @@ namespace Contact
     const std::vector<NodeState> &node_state =
       friction_solver->state().node_state;
     SlipZone            zone;
-    std::vector<double> angles;
+    std::vector<double> angles, stick_angles;
+    const auto          angle = [](const Point<dim> &x) {
+      return std::atan2(x[1], x[0]) * 180 / numbers::PI;
+    };
     for (unsigned int p = 0; p < contact_nodes.size(); ++p)
       if (node_state[p] == NodeState::stick)
-        ++zone.n_stick;
+        {
+          stick_angles.push_back(angle(contact_nodes[p].location));
+          ++zone.n_stick;
+        }
       else
         {
           const Point<dim> &x = contact_nodes[p].location;
           zone.from = (zone.n_slip == 0 ? x[0] : std::min(zone.from, x[0]));
           zone.to   = (zone.n_slip == 0 ? x[0] : std::max(zone.to, x[0]));
-          angles.push_back(std::atan2(x[1], x[0]) * 180 / numbers::PI);
+          angles.push_back(angle(x));
           ++zone.n_slip;
         }
     if (parameters.geometry.shell && !angles.empty())
@@ -773,6 +779,13 @@ namespace Contact
             widest = i;
         zone.from = angles[(widest + 1) % n];
         zone.to   = angles[widest];
+        // Counterclockwise from `from`, in [0, 360).
+        const auto turn = [&](const double a) {
+          return std::fmod(a - zone.from + 720, 360.);
+        };
+        for (const double a : stick_angles)
+          if (turn(a) < turn(zone.to))
+            ++zone.n_stick_inside;
       }
     return zone;
   }
@@ -783,9 +796,13 @@ namespace Contact
   // The time of the first slip. The first step with a slipping node, t_n,
   // alone would move in jumps of k as h changes; instead the friction's
   // utilisation max_p |eta_p| / (m_p S mu(0)) of the last two steps in
-  // which every node stuck is extrapolated linearly to 1, within
-  // [t_{n-1}, t_n]. So the onset converges in h at a fixed k, and its error
-  // in k is that of the scheme, not k itself.
+  // which every node stuck is extrapolated linearly to 1 (not before
+  // t_{n-1}). So the onset converges in h at a fixed k where the
+  // utilisation rises smoothly. Where it cannot be extrapolated the step's
+  // end or start is taken, and the summary says which
+  // (SlipOnset::Estimate): such a time moves in jumps of k. (A node that
+  // slips in the first half of a cut step and sticks again in the second
+  // is not seen: the state is that at the end of the step.)
   template <int dim>
   void ContactProblem<dim>::track_slip_onset()
   {
@@ -799,19 +816,29 @@ namespace Contact
     for (unsigned int p = 0; p < nodes.size(); ++p)
       if (node_state[p] != NodeState::stick)
         {
+          using Estimate        = SlipOnset::Estimate;
           const double previous = time - time_step;
-          double       rise     = 0;
-          if (slip_onset.stick_steps >= 2)
-            rise = (slip_onset.utilisation - slip_onset.previous_utilisation) /
-                   time_step;
-          slip_onset.step         = step_number;
-          slip_onset.extrapolated = rise > 0;
-          slip_onset.time =
-            rise > 0 ?
-              std::clamp(previous + (1 - slip_onset.utilisation) / rise,
-                         previous,
-                         time) :
-              previous;
+          const double rise =
+            (slip_onset.utilisation - slip_onset.previous_utilisation) /
+            time_step;
+          slip_onset.step = step_number;
+          slip_onset.time = previous;
+          if (slip_onset.stick_steps < 2)
+            slip_onset.estimate = Estimate::too_few_steps;
+          else if (!(rise > 0))
+            slip_onset.estimate = Estimate::not_rising;
+          else if (previous + (1 - slip_onset.utilisation) / rise > time)
+            {
+              slip_onset.estimate = Estimate::beyond_step;
+              slip_onset.time     = time;
+            }
+          else
+            {
+              slip_onset.estimate = Estimate::extrapolated;
+              slip_onset.time =
+                std::max(previous,
+                         previous + (1 - slip_onset.utilisation) / rise);
+            }
           return;
         }
       else if (nodes[p].weight > 0)
@@ -822,6 +849,40 @@ namespace Contact
     slip_onset.previous_utilisation = slip_onset.utilisation;
     slip_onset.utilisation          = utilisation;
     ++slip_onset.stick_steps;
+  }
+
+
+  // @sect4{ContactProblem::print_slip_onset}
+
+  // The summary's line of the first slip, with how its time was found.
+  template <int dim>
+  void ContactProblem<dim>::print_slip_onset() const
+  {
+    using Estimate = SlipOnset::Estimate;
+    if (std::isnan(slip_onset.time))
+      return;
+    pcout << "First slip at t = " << std::setprecision(8) << slip_onset.time
+          << " (in step " << slip_onset.step << ", ";
+    switch (slip_onset.estimate)
+      {
+        case Estimate::extrapolated:
+          pcout << "extrapolated from the friction's utilisation at the two "
+                   "steps before";
+          break;
+        case Estimate::beyond_step:
+          pcout << "its end: the friction's utilisation at the two steps "
+                   "before extrapolates to later";
+          break;
+        case Estimate::not_rising:
+          pcout << "its start: the friction's utilisation did not rise over "
+                   "the two steps before";
+          break;
+        case Estimate::too_few_steps:
+          pcout << "its start: fewer than two steps before it in which every "
+                   "node stuck, to extrapolate from";
+          break;
+      }
+    pcout << ")" << std::endl;
   }
 
 
@@ -871,7 +932,7 @@ namespace Contact
             friction_solver->boundary().nodes;
           const Vector<double> &friction_force =
             friction_solver->state().friction_force;
-          const auto [n_stick, n_slip, slip_from, slip_to] = slip_zone();
+          const SlipZone zone = slip_zone();
           pcout << "Report t = " << std::setprecision(6) << *t << " (step "
                 << step_number << ", t_n = " << time
                 << (*t - time > 0.5 * time_step * (1 + 1e-12) ?
@@ -879,13 +940,19 @@ namespace Contact
                       "'" +
                         Entry::end_time + "'" :
                       "")
-                << "): " << n_stick << " stick, " << n_slip << " slip";
-          if (n_slip > 0 && !parameters.geometry.shell)
-            pcout << ", slip zone x in [" << slip_from << ", " << slip_to
+                << "): " << zone.n_stick << " stick, " << zone.n_slip
+                << " slip";
+          if (zone.n_slip > 0 && !parameters.geometry.shell)
+            pcout << ", slip zone x in [" << zone.from << ", " << zone.to
                   << "]";
-          else if (n_slip > 0 && n_stick > 0)
-            pcout << ", slip on the arc from " << slip_from << " to " << slip_to
-                  << " degrees (counterclockwise)";
+          else if (zone.n_slip > 0 && zone.n_stick > 0)
+            {
+              pcout << ", slip on the arc from " << zone.from << " to "
+                    << zone.to << " degrees (counterclockwise)";
+              if (zone.n_stick_inside > 0)
+                pcout << ", which holds " << zone.n_stick_inside
+                      << " sticking nodes too";
+            }
           // The sum of the nodal forces: along the tangent in 2D, as a
           // vector in 3D.
           Tensor<1, dim> friction;
@@ -946,18 +1013,7 @@ namespace Contact
           << energy.viscous_dissipation << ", friction "
           << energy.friction_dissipation << ", numerical "
           << energy.numerical_dissipation << std::endl;
-    if (slip_onset.extrapolated)
-      pcout << "First slip at t = " << std::setprecision(8) << slip_onset.time
-            << " (in step " << slip_onset.step
-            << ", extrapolated from the friction's utilisation at the two "
-               "steps before)"
-            << std::endl;
-    else if (!std::isnan(slip_onset.time))
-      pcout << "First slip in step " << slip_onset.step
-            << " (from t = " << std::setprecision(8) << slip_onset.time
-            << " on; no two steps before it in which every node stuck, to "
-               "extrapolate from)"
-            << std::endl;
+    print_slip_onset();
     print_self_checks();
     if (exact_solution)
       pcout << "Errors, largest over the steps: ||eps(u - u_h)|| "
@@ -1005,6 +1061,7 @@ namespace Contact
   template void ContactProblem<dim>::prepare_output_directory();               \
   template void ContactProblem<dim>::write_gamma3_history_rows();              \
   template void ContactProblem<dim>::track_slip_onset();                       \
+  template void ContactProblem<dim>::print_slip_onset() const;                 \
   template void ContactProblem<dim>::write_time_series_row(                    \
     const StepStatistics &);                                                   \
   template std::string ContactProblem<dim>::vtu_piece_name(const unsigned int, \

@@ -148,9 +148,10 @@ namespace Contact
   // mapping's degree is at most the element's, r is its own interpolant, so
   // eps(r) = 0 takes the internal forces out and the angular momentum with
   // the exact x is r^T M w. Whether r lies in V_h is asked of the
-  // constraints themselves (they leave r as it is): a clamp, or a normal
-  // constraint not normal to r, excludes it. On a curved Gamma_3 around the
-  // axis this is the test of its discrete normals: they must be radial.
+  // constraints themselves (they leave r as it is, to 1e-12 of its size): a
+  // clamp, or a normal constraint not normal to r, excludes it; on a
+  // circular Gamma_3 about the axis, so do nodes' normals that are not
+  // radial, by how much the summary says (rotation_defect).
   template <int dim>
   void ContactProblem<dim>::setup_moment_balance()
   {
@@ -167,8 +168,9 @@ namespace Contact
     constraints.distribute(constrained);
     constrained -= r;
     const auto &geometry = parameters.geometry;
+    rotation_defect      = constrained.linfty_norm() / r.linfty_norm();
     moment_balance_is_checked =
-      constrained.linfty_norm() <= 1e-12 * r.linfty_norm() &&
+      rotation_defect <= 1e-12 &&
       (geometry.simplex_cells || geometry.mapping_degree <= fe.degree);
     rotation           = fast_ghosted(r);
     rotation_on_gamma3 = friction_solver->boundary().tangential_velocities(r);
@@ -177,12 +179,16 @@ namespace Contact
 
   // @sect4{ContactProblem::start_self_checks}
 
-  // The initial energy by quadrature, after set_initial_values().
+  // The initial energy by quadrature, after set_initial_values(), and the
+  // moments of the row of step 0: the angular momentum and the loads'
+  // moment at t = 0 (no friction force acts before the first step, and the
+  // reaction, a rate, is not defined there: 0).
   template <int dim>
   void ContactProblem<dim>::start_self_checks()
   {
     moments                  = MomentBalance();
     moments.angular_momentum = angular_momentum_density * velocity;
+    moments.applied          = load_power(0., {&rotation})[0].power;
     const FastVector u = fast_ghosted(displacement), w = fast_ghosted(velocity);
     const FieldIntegrals integrals = field_integrals(u, w, w);
     energy_by_quadrature           = EnergyBalance();
@@ -220,10 +226,11 @@ namespace Contact
     balance.viscous_dissipation += k * integrals.viscous_power;
     balance.numerical_dissipation +=
       integrals.velocity_jump + 0.5 * k * k * integrals.elastic_power;
-    const std::vector<double> load_powers = load_power(time, {&w, &rotation});
-    balance.external_work += k * load_powers[0];
+    const std::vector<LoadPower> load_powers =
+      load_power(time, {&w, &rotation});
+    balance.external_work += k * load_powers[0].power;
     balance.friction_dissipation = energy.friction_dissipation;
-    update_moments(load_powers[1]);
+    const double moment_scale    = update_moments(load_powers[1]);
 
     const auto relative = [](const double value, const double scale) {
       return std::abs(value) /
@@ -242,10 +249,7 @@ namespace Contact
     step_checks.negative_friction_power =
       relative(std::min(k * friction_solver->slip_power(velocity), 0.),
                energy.scale());
-    step_checks.moment_scale = std::max(
-      {std::abs(moments.applied),
-       std::abs(moments.friction),
-       std::abs(moments.applied + moments.friction + moments.reaction)});
+    step_checks.moment_scale = moment_scale;
     step_checks.moment_balance =
       moment_balance_is_checked ?
         relative(moments.reaction,
@@ -261,18 +265,37 @@ namespace Contact
   // The moments of the step (MomentBalance): L_n and L_{n-1} by the angular
   // momentum density (from w_{n-1}, so that a resumed run needs nothing
   // more of the past), the loads' moment F_n . r, and the friction's
-  // -eta_n . C r.
+  // -eta_n . C r. Returned is the scale of the reaction's round-off: the
+  // sum of the magnitudes of all products that the four sums add up. The
+  // moments themselves are no scale: a ring under pressure alone, or
+  // spinning freely, has no moment at all.
   template <int dim>
-  void ContactProblem<dim>::update_moments(const double applied_moment)
+  double ContactProblem<dim>::update_moments(const LoadPower &applied)
   {
-    const double old_angular_momentum = angular_momentum_density * old_velocity;
-    moments.angular_momentum          = angular_momentum_density * velocity;
-    moments.applied                   = applied_moment;
-    moments.friction =
-      -(friction_solver->state().friction_force * rotation_on_gamma3);
-    moments.reaction =
-      (moments.angular_momentum - old_angular_momentum) / time_step -
-      moments.applied - moments.friction;
+    // a . b (by the vectors' own dot product, whose summation is more
+    // accurate than a plain loop's), and the sum of |a_i b_i|.
+    const auto dot =
+      [this](const auto &a, const auto &b, const bool distributed) {
+        double magnitude = 0;
+        auto   b_entry   = b.begin();
+        for (auto a_entry = a.begin(); a_entry != a.end(); ++a_entry, ++b_entry)
+          magnitude += std::abs(*a_entry * *b_entry);
+        if (distributed)
+          magnitude = Utilities::MPI::sum(magnitude, mpi_communicator);
+        return std::array<double, 2>{{a * b, magnitude}};
+      };
+    const auto old_momentum = dot(angular_momentum_density, old_velocity, true);
+    const auto momentum     = dot(angular_momentum_density, velocity, true);
+    // Every process has all of eta and C r.
+    const auto friction =
+      dot(friction_solver->state().friction_force, rotation_on_gamma3, false);
+    moments.angular_momentum = momentum[0];
+    moments.applied          = applied.power;
+    moments.friction         = -friction[0];
+    moments.reaction         = (momentum[0] - old_momentum[0]) / time_step -
+                       moments.applied - moments.friction;
+    return (momentum[1] + old_momentum[1]) / time_step + applied.magnitude +
+           friction[1];
   }
 
 
@@ -311,15 +334,19 @@ namespace Contact
       line("balance of moments about the z-axis",
            c.moment_balance,
            c.moment_balance);
+    else if (parameters.geometry.shell && rotation_defect > 1e-12)
+      pcout << "  (balance of moments about the z-axis: not checked, the "
+               "constraints exclude the rotation: they change it by "
+            << rotation_defect
+            << " of its size, by a clamp, or by normals that are not "
+               "radial)"
+            << std::endl;
     else if (parameters.geometry.shell)
-      pcout << "  (balance of moments about the z-axis: not checked, "
-            << (parameters.geometry.mapping_degree > fe.degree ?
-                  "the mapping's degree is above the element's, so the "
-                  "rigid rotation is not in the finite element space; "
-                  "column reaction_moment of time_series.csv shows how far "
-                  "the balance holds)" :
-                  "the constraints exclude the rotation (a clamp, or "
-                  "normals not normal to it))")
+      pcout << "  (balance of moments about the z-axis: not checked, the "
+               "mapping's degree is above the element's, so the rigid "
+               "rotation is not in the finite element space; column "
+               "reaction_moment of time_series.csv shows how far the "
+               "balance holds)"
             << std::endl;
   }
 
@@ -379,13 +406,13 @@ namespace Contact
     const FastVector &, const FastVector &, const FastVector &) const;      \
   template FastVector ContactProblem<dim>::fast_ghosted(const VectorType &) \
     const;                                                                  \
-  template void ContactProblem<dim>::setup_moment_balance();                \
-  template void ContactProblem<dim>::start_self_checks();                   \
-  template void ContactProblem<dim>::update_moments(const double);          \
-  template void ContactProblem<dim>::check_step();                          \
-  template void ContactProblem<dim>::print_self_checks() const;             \
-  template void ContactProblem<dim>::require_self_checks() const;           \
-  template void ContactProblem<dim>::set_sabotage(const Sabotage<dim> &);
+  template void   ContactProblem<dim>::setup_moment_balance();              \
+  template void   ContactProblem<dim>::start_self_checks();                 \
+  template double ContactProblem<dim>::update_moments(const LoadPower &);   \
+  template void   ContactProblem<dim>::check_step();                        \
+  template void   ContactProblem<dim>::print_self_checks() const;           \
+  template void   ContactProblem<dim>::require_self_checks() const;         \
+  template void   ContactProblem<dim>::set_sabotage(const Sabotage<dim> &);
 
   INSTANTIATE(2)
   INSTANTIATE(3)

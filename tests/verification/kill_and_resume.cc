@@ -6,7 +6,8 @@
    uninterrupted one exactly: the same time_series.csv (12 digits, every
    step), the same VTU/PVTU/PVD files with the same contents (the fields are
    written in binary, so this is bitwise; only deal.II's time stamp line
-   differs), and no temporary or partial file left behind.
+   differs), the same time of the first slip in its summary (checkpointed
+   state), and no temporary or partial file left behind.
 
    The same on two processes (each writes its own checkpoint file and VTU
    piece), where the whole job, mpirun and both processes, is killed at
@@ -231,14 +232,21 @@ int kill_job(const pid_t job)
 {
   const std::vector<pid_t> ranks = children(job);
   kill(-job, SIGKILL);
+  // Each rank, and the group it leads.
   for (const pid_t rank : ranks)
-    kill(rank, SIGKILL);
+    {
+      kill(rank, SIGKILL);
+      kill(-rank, SIGKILL);
+    }
   const int status = wait_for(job);
-  // Gone, or a zombie (which the container's init may never reap).
+  // Gone, or a zombie (which the container's init may never reap); at
+  // most ten seconds.
+  const auto deadline =
+    std::chrono::steady_clock::now() + std::chrono::seconds(10);
   for (const pid_t rank : ranks)
     for (char state = 'R';
          (state = process_state(std::to_string(rank)).first) != 'X' &&
-         state != 'Z';)
+         state != 'Z' && std::chrono::steady_clock::now() < deadline;)
       std::this_thread::sleep_for(std::chrono::milliseconds(2));
   return status;
 }
@@ -337,6 +345,23 @@ void kill_and_resume(const unsigned int processes)
   for (const auto &entry : fs::directory_iterator(killed))
     leftovers = leftovers || entry.path().extension() == ".tmp";
   std::cout << "no temporary or partial files left: " << yes_no(!leftovers)
+            << std::endl;
+
+  // The first slip is part of the checkpointed state: the resumed run's
+  // summary (the last in its log, after the killed run's) must give the
+  // uninterrupted run's.
+  const auto last_first_slip = [](const std::string &log) {
+    std::istringstream lines(contents(log));
+    std::string        found;
+    for (std::string line; std::getline(lines, line);)
+      if (line.rfind("First slip", 0) == 0)
+        found = line;
+    return found;
+  };
+  const std::string first_slip = last_first_slip(full + ".log");
+  std::cout << "the same first slip as the uninterrupted run: "
+            << yes_no(!first_slip.empty() &&
+                      first_slip == last_first_slip(killed + ".log"))
             << std::endl;
 }
 
