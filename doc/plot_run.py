@@ -293,24 +293,39 @@ def gamma3_faces(points, cells, cell_type, arrays):
 
 def draw_gamma3_map(axis, points, cells, cell_type, arrays):
     """Gamma_3's faces in its plane (the two coordinates in which it
-    extends furthest), coloured by the share of their nodes that slip.
-    Returns the number of faces."""
+    extends furthest), or, on a cylinder about the z-axis, unrolled to the
+    angle atan2(y, x) and z; coloured by the share of their nodes that
+    slip. Returns the number of faces."""
     faces = gamma3_faces(points, cells, cell_type, arrays)
     if len(faces) == 0:
         axis.set_axis_off()
         return 0
-    in_plane = np.argsort(np.ptp(points[faces].reshape(-1, 3), axis=0))[1:]
-    in_plane = sorted(in_plane)
+    corners = points[faces]
+    radius = np.hypot(corners[:, :, 0], corners[:, :, 1])
+    if radius.min() > 0 and np.ptp(radius) <= 1e-6 * radius.max():
+        angle = np.degrees(np.arctan2(corners[:, :, 1], corners[:, :, 0]))
+        # A face across +-180 degrees is drawn on the positive side.
+        across = np.ptp(angle, axis=1) > 180
+        angle[across] = np.where(angle[across] < 0, angle[across] + 360,
+                                 angle[across])
+        polygons_in_plane = np.stack([angle, corners[:, :, 2]], axis=2)
+        labels = ("angle on Γ3 [°]", "z on Γ3")
+    else:
+        in_plane = sorted(np.argsort(np.ptp(corners.reshape(-1, 3),
+                                            axis=0))[1:])
+        polygons_in_plane = corners[:, :, in_plane]
+        labels = tuple(f"{'xyz'[c]} on Γ3" for c in in_plane)
     polygons = PolyCollection(
-        points[faces][:, :, in_plane],
+        polygons_in_plane,
         facecolors=STATE_MAP((arrays["contact_status"][faces] == SLIP)
                              .mean(axis=1)),
         edgecolors="white", linewidths=0.3)
     axis.add_collection(polygons)
     axis.autoscale_view()
-    axis.set_aspect("equal")
-    axis.set_xlabel(f"{'xyz'[in_plane[0]]} on Γ3")
-    axis.set_ylabel(f"{'xyz'[in_plane[1]]} on Γ3")
+    if labels[0] != "angle on Γ3 [°]":
+        axis.set_aspect("equal")
+    axis.set_xlabel(labels[0])
+    axis.set_ylabel(labels[1])
     return len(faces)
 
 
@@ -565,7 +580,8 @@ def plot_stick_slip(history, coordinate, output):
     figure.savefig(os.path.join(output, "stick_slip.png"), dpi=DPI)
     plt.close(figure)
     slip_rows = np.nonzero(np.nan_to_num(fraction).max(axis=1) > 0)[0]
-    first = (f"slip first at t = {step_times[slip_rows[0]]:.4g}"
+    first = (f"the first step with slip ends at t = "
+             f"{step_times[slip_rows[0]]:.4g}"
              if len(slip_rows) else "no slip")
     return (f"{len(step_values)} steps x {len(edges_s) - 1} positions along "
             f"{coordinate}; {first}")

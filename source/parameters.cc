@@ -138,11 +138,13 @@ namespace Contact
         Patterns::Integer(1, 4),
         "Degree of the polynomial map of each cell: 1, straight edges (a "
         "polygon for a circle); 2 or more, edges that follow a curved "
-        "boundary (the shell's circles) between the nodes. On a shell, "
-        "the 'Finite element degree' is best (the rigid rotation about the "
-        "axis is then in the discrete space, and Q2 nodes on chords lose an "
-        "order of accuracy in the tractions on Gamma_3: "
-        "doc/verification.md).");
+        "boundary (the shell's circles) between the nodes. On a shell use "
+        "2 or more: equal to the 'Finite element degree' keeps the rigid "
+        "rotation about the axis in the discrete space (the moments balance "
+        "to round-off, a self-check); above it (Q1) it gave the bushing's "
+        "slip onset most accurately, but balances the moments only to "
+        "O(h^2); below it Q2 loses an order on Gamma_3 "
+        "(doc/verification.md).");
       prm.declare_entry("Lower corner",
                         "0, 0",
                         Patterns::List(Patterns::Double(), 2, 3),

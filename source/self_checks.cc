@@ -335,12 +335,18 @@ namespace Contact
            c.moment_balance,
            c.moment_balance);
     else if (parameters.geometry.shell && rotation_defect > 1e-12)
-      pcout << "  (balance of moments about the z-axis: not checked, the "
-               "constraints exclude the rotation: they change it by "
-            << rotation_defect
-            << " of its size, by a clamp, or by normals that are not "
-               "radial)"
-            << std::endl;
+      {
+        pcout << "  (balance of moments about the z-axis: not checked, ";
+        if (!parameters.boundary.clamped_ids.empty())
+          pcout << "a clamp holds the body against turning; column "
+                   "reaction_moment of time_series.csv is its moment)";
+        else
+          pcout << "the nodes' normals on the constraints' boundaries are "
+                   "not all normal to the rotation about the axis: they "
+                   "change it by "
+                << rotation_defect << " of its size)";
+        pcout << std::endl;
+      }
     else if (parameters.geometry.shell)
       pcout << "  (balance of moments about the z-axis: not checked, the "
                "mapping's degree is above the element's, so the rigid "

@@ -338,13 +338,17 @@ namespace Contact
           point[d] = coordinates[d];
         points.push_back(point);
       }
-    // The uniform size before grading (the first active cell of this
-    // process may be an artificial, coarser one).
-    double h = 0;
+    // Each cell's size relative to its ancestor before grading, 2^-(level
+    // - base level), against the target factor: the same as cell sizes on a
+    // box, whose cells are all alike, and right on a shell, whose cells
+    // grow with the radius. (The first active cell of this process may be
+    // an artificial, coarser one: the base level is the smallest level of
+    // the locally owned cells of all processes.)
+    unsigned int base_level = numbers::invalid_unsigned_int;
     for (const auto &cell : mesh.active_cell_iterators())
       if (cell->is_locally_owned())
-        h = std::max(h, cell->extent_in_direction(0));
-    h = Utilities::MPI::max(h, mpi_communicator);
+        base_level = std::min<unsigned int>(base_level, cell->level());
+    base_level = Utilities::MPI::min(base_level, mpi_communicator);
     for (bool flagged = true; flagged;)
       {
         flagged = false;
@@ -355,9 +359,10 @@ namespace Contact
               for (const Point<dim> &point : points)
                 r = std::min(r, cell->center().distance(point));
               const double target =
-                h * std::pow(std::min(r / geometry.refinement_radius, 1.),
-                             geometry.refinement_grading);
-              if (cell->extent_in_direction(0) > target * (1. + 1e-10))
+                std::pow(std::min(r / geometry.refinement_radius, 1.),
+                         geometry.refinement_grading);
+              if (std::pow(0.5, cell->level() - base_level) >
+                  target * (1. + 1e-10))
                 {
                   cell->set_refine_flag();
                   flagged = true;
