@@ -33,6 +33,7 @@ namespace Contact
     // '.lock' (which then holds the pid): the kernel releases the lock when
     // the process ends, however it ends. Returns the reason on failure.
     std::string flock_output_directory(const std::string          &directory,
+                                       const bool                  created,
                                        std::shared_ptr<const int> &lock)
     {
       std::error_code error;
@@ -71,10 +72,27 @@ namespace Contact
           close(fd);
           return "Cannot write '" + name + "': " + std::strerror(errno);
         }
-      lock = std::shared_ptr<const int>(new int(fd), [](const int *owned) {
-        close(*owned);
-        delete owned;
-      });
+      // A directory this lock created and nothing but the lock went into
+      // (a run refused in its setup) is removed with the lock, while it is
+      // still held.
+      lock = std::shared_ptr<const int>(
+        new int(fd), [directory, name, created](const int *owned) {
+          std::error_code error;
+          if (created)
+            {
+              unsigned int entries = 0;
+              for (const auto &entry :
+                   std::filesystem::directory_iterator(directory, error))
+                entries += (entry.path().filename() == ".lock" ? 0 : 1);
+              if (!error && entries == 0)
+                {
+                  std::filesystem::remove(name, error);
+                  std::filesystem::remove(directory, error);
+                }
+            }
+          close(*owned);
+          delete owned;
+        });
       return "";
     }
 
@@ -118,6 +136,7 @@ namespace Contact
       {
         // The key of a directory that exists: 'out/' and 'out' alike.
         std::error_code error;
+        const bool      created = !std::filesystem::exists(directory, error);
         std::filesystem::create_directories(directory, error);
         const std::string key = std::filesystem::weakly_canonical(
                                   std::filesystem::absolute(directory), error)
@@ -125,7 +144,7 @@ namespace Contact
         lock = held[key].lock();
         if (!lock)
           {
-            failure   = flock_output_directory(directory, lock);
+            failure   = flock_output_directory(directory, created, lock);
             held[key] = lock;
           }
       }

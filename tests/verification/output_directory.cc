@@ -13,7 +13,9 @@
    - a write that fails (a full disk, here a file size limit) names the
      file and the system's error;
    - a second run in a directory that a running one uses is refused,
-     naming the first run's process. */
+     naming the first run's process;
+   - a run refused in its setup (a probe point outside the body) leaves
+     no directory behind where there was none. */
 
 #include <signal.h>
 #include <sys/wait.h>
@@ -192,6 +194,14 @@ int main()
             << std::endl;
   report("--resume there",
          run("reused", {"Output/Resume=true", "Time/End time=0.75"}));
+
+  // Refused after the directory was locked, before anything was written
+  // into it: the directory it created goes with the lock.
+  fs::remove_all("refused");
+  report("probe point outside the body",
+         run("refused", {"Output/Probe points=5, 5"}));
+  std::cout << "  its new directory removed: "
+            << (fs::exists("refused") ? "no" : "yes") << std::endl;
 
   // A full disk, as a file size limit (2 blocks) makes it: the first file
   // written, parameters.prm, cannot be; the message names it and the
