@@ -444,6 +444,7 @@ namespace Contact
     void           check_step();
     double         update_moments(const LoadPower &applied);
     void           print_self_checks() const;
+    void           print_why_moments_are_not_checked() const;
     void           require_self_checks() const;
 
     // verification.cc

@@ -334,26 +334,33 @@ namespace Contact
       line("balance of moments about the z-axis",
            c.moment_balance,
            c.moment_balance);
-    else if (parameters.geometry.shell && rotation_defect > 1e-12)
-      {
-        pcout << "  (balance of moments about the z-axis: not checked, ";
-        if (!parameters.boundary.clamped_ids.empty())
-          pcout << "a clamp holds the body against turning; column "
-                   "reaction_moment of time_series.csv is its moment)";
-        else
-          pcout << "the nodes' normals on the constraints' boundaries are "
-                   "not all normal to the rotation about the axis: they "
-                   "change it by "
-                << rotation_defect << " of its size)";
-        pcout << std::endl;
-      }
     else if (parameters.geometry.shell)
-      pcout << "  (balance of moments about the z-axis: not checked, the "
-               "mapping's degree is above the element's, so the rigid "
+      print_why_moments_are_not_checked();
+  }
+
+
+  // @sect4{ContactProblem::print_why_moments_are_not_checked}
+
+  // On a shell, where a user expects the balance of moments, the reason it
+  // is not a self-check of this run (setup_moment_balance()).
+  template <int dim>
+  void ContactProblem<dim>::print_why_moments_are_not_checked() const
+  {
+    pcout << "  (balance of moments about the z-axis: not checked, ";
+    if (rotation_defect <= 1e-12)
+      pcout << "the mapping's degree is above the element's, so the rigid "
                "rotation is not in the finite element space; column "
                "reaction_moment of time_series.csv shows how far the "
-               "balance holds)"
-            << std::endl;
+               "balance holds)";
+    else if (!parameters.boundary.clamped_ids.empty())
+      pcout << "a clamp holds the body against turning; column "
+               "reaction_moment of time_series.csv is its moment)";
+    else
+      pcout << "the nodes' normals on the constraints' boundaries are not "
+               "all normal to the rotation about the axis: they change it "
+               "by "
+            << rotation_defect << " of its size)";
+    pcout << std::endl;
   }
 
 
@@ -417,8 +424,10 @@ namespace Contact
   template double ContactProblem<dim>::update_moments(const LoadPower &);   \
   template void   ContactProblem<dim>::check_step();                        \
   template void   ContactProblem<dim>::print_self_checks() const;           \
-  template void   ContactProblem<dim>::require_self_checks() const;         \
-  template void   ContactProblem<dim>::set_sabotage(const Sabotage<dim> &);
+  template void   ContactProblem<dim>::print_why_moments_are_not_checked()  \
+    const;                                                                  \
+  template void ContactProblem<dim>::require_self_checks() const;           \
+  template void ContactProblem<dim>::set_sabotage(const Sabotage<dim> &);
 
   INSTANTIATE(2)
   INSTANTIATE(3)
