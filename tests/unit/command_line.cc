@@ -9,7 +9,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
-#include <run.h>
+#include <app/run.h>
 
 #include <fstream>
 #include <iostream>

@@ -4,13 +4,13 @@
    whose path in Entry was not renamed with it makes this test fail.
    The check itself must be able to fail: a path that is not declared is
    reported as such. The list Entry::all() must hold every constant of the
-   namespace (counted in include/parameters.h), and no source file other
-   than parameters.cc may spell an entry path as a literal
+   namespace (counted in include/base/parameters.h), and no source file
+   other than parameters.cc may spell an entry path as a literal
    ('Subsection/Entry' of a declared subsection): such lines are printed. */
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <parameters.h>
+#include <base/parameters.h>
 
 #include <filesystem>
 #include <fstream>
@@ -63,7 +63,7 @@ int main()
             << undeclared << " of them not declared" << std::endl;
 
   // The constants of namespace Entry in the header, against all().
-  std::ifstream header(CONTACT_SOURCE_ROOT "/include/parameters.h");
+  std::ifstream header(CONTACT_SOURCE_ROOT "/include/base/parameters.h");
   unsigned int  constants = 0;
   bool          in_entry  = false;
   for (std::string line; std::getline(header, line);)
@@ -86,10 +86,10 @@ int main()
     "Friction|Time|Solver|Verification|Convergence study|Accuracy|Output)/"
     "[A-Z]");
   unsigned int literals = 0;
-  for (const auto &file :
-       std::filesystem::directory_iterator(CONTACT_SOURCE_ROOT "/source"))
+  for (const auto &file : std::filesystem::recursive_directory_iterator(
+         CONTACT_SOURCE_ROOT "/source"))
     {
-      if (file.path().filename() == "parameters.cc")
+      if (!file.is_regular_file() || file.path().filename() == "parameters.cc")
         continue;
       std::ifstream in(file.path());
       for (std::string line; std::getline(in, line);)

@@ -3,7 +3,7 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <parameters.h>
+#include <base/parameters.h>
 
 #include <iostream>
 

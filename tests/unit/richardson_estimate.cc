@@ -5,7 +5,7 @@
    extrapolation (the estimate is then the difference of the two finer
    runs). Every check of the estimate is made to fire here. */
 
-#include <error_estimate.h>
+#include <drivers/error_estimate.h>
 
 #include <array>
 #include <cmath>

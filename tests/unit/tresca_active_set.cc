@@ -8,8 +8,8 @@
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
-#include <delassus_operator.h>
-#include <friction.h>
+#include <gamma3/delassus_operator.h>
+#include <gamma3/friction.h>
 
 #include "make_delassus.h"
 

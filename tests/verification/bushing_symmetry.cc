@@ -34,8 +34,8 @@
 #include <boost/serialization/map.hpp>
 #include <boost/serialization/utility.hpp>
 
-#include <contact_problem.h>
-#include <run.h>
+#include <core/contact_problem.h>
+#include <app/run.h>
 
 #include <array>
 #include <cmath>

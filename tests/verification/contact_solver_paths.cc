@@ -17,8 +17,8 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <contact_problem.h>
-#include <run.h>
+#include <core/contact_problem.h>
+#include <app/run.h>
 
 #include <algorithm>
 #include <iostream>

@@ -12,9 +12,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 
-#include <contact_problem.h>
-#include <manufactured_solution.h>
-#include <run.h>
+#include <core/contact_problem.h>
+#include <core/manufactured_solution.h>
+#include <app/run.h>
 
 #include <cmath>
 #include <iomanip>

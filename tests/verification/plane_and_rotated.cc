@@ -22,7 +22,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <run.h>
+#include <app/run.h>
 
 #include <cmath>
 #include <fstream>

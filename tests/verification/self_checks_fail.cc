@@ -22,8 +22,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
-#include <contact_problem.h>
-#include <run.h>
+#include <core/contact_problem.h>
+#include <app/run.h>
 
 #include <iostream>
 #include <sstream>

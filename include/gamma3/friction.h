@@ -1,0 +1,291 @@
+/**
+ * The friction law of the paper and the nodal Tresca problem that one
+ * convexification iteration solves on Gamma_3.
+ */
+#ifndef contact_friction_h
+#define contact_friction_h
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <base/parameters.h>
+
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace Contact
+{
+  using namespace dealii;
+
+  /** The Tresca active set method and Newton's method on the full law stop
+   *  at this residual relative to the largest bound max_p g_p(0). */
+  constexpr double friction_residual_tolerance = 1e-12;
+  /** An iterate lowers the energy E on Gamma_3 if E grows by at most this
+   *  much relative to its size: round-off of the sum. */
+  constexpr double energy_round_off = 1e-13;
+  /** While the stick/slip sets still change, Newton's model caps the
+   *  weakening at this fraction of the convexity limit, where the model is
+   *  convex. */
+  constexpr double weakening_cap_fraction = 0.9;
+
+  /**
+   * The friction coefficient mu(s) of the slip rate s = |w_tau| and the
+   * slip threshold mu(s) S of (3.6). For the slip rate weakening law this
+   * is the paper's (6.1), mu(s) = (a - b) exp(-alpha s) + b, whose one-sided
+   * Lipschitz constant (H(mu)(c)) is lambda = (a - b) alpha.
+   */
+  class FrictionLaw
+  {
+  public:
+    explicit FrictionLaw(const FrictionParameters &parameters);
+
+    /** Friction coefficient mu(s), s >= 0. */
+    double coefficient(const double slip_rate) const;
+
+    /** Slip threshold S mu(s) [N/m^(dim-1)] of (3.6). */
+    double bound(const double slip_rate) const;
+
+    /** d/ds S mu(s): the tangent of the bound in the Newton method. */
+    double bound_derivative(const double slip_rate) const;
+
+    /** j(v) = S int_0^|v| mu(r) dr of (3.8), for the step's energy. */
+    double potential(const double slip_velocity) const;
+
+    /** No friction term at all (law 'none' or S = 0). */
+    bool is_frictionless() const;
+
+    /** mu does not depend on s: one Tresca problem per step suffices. */
+    bool is_rate_independent() const;
+
+    /** lambda in H(mu)(c): the rate at which mu may decrease. */
+    double one_sided_lipschitz_constant() const;
+
+  private:
+    const FrictionParameters::Law law;
+    const double                  S;
+    const double                  a;
+    const double                  b;
+    const double                  alpha;
+  };
+
+
+  /**
+   * Anderson acceleration (type II, Walker and Ni 2011) of a fixed point
+   * iteration x <- G(x): the next iterate combines the last `depth` images
+   * G(x_i) with the weights that minimise the combined residual
+   * |sum gamma_i (G(x_i) - x_i)|. Depth 0 is the plain iteration.
+   */
+  class AndersonAcceleration
+  {
+  public:
+    explicit AndersonAcceleration(const unsigned int history_depth);
+
+    /** Given x and G(x), overwrite x with the next iterate. */
+    void next_iterate(Vector<double> &x, const Vector<double> &image);
+
+    /** Forget the history; the next step is a plain one. */
+    void restart();
+
+    bool last_step_was_accelerated() const;
+
+  private:
+    const unsigned int          depth;
+    std::vector<Vector<double>> residual_differences;
+    std::vector<Vector<double>> image_differences;
+    Vector<double>              previous_residual;
+    Vector<double>              previous_image;
+    bool                        accelerated;
+  };
+
+
+  /**
+   * The Tresca problem with given nodal bounds g_p >= 0 on the tangential
+   * unknowns of Gamma_3, m = dim - 1 per node (node-major: unknown p m + i
+   * is component i of node p), in terms of the Delassus operator
+   * D = C K^{-1} C^T (doc/algorithm.md):
+   *
+   *   v = v_free - D eta,
+   *   |eta_p| <= g_p if v_p = 0,   eta_p = g_p v_p / |v_p| otherwise,
+   *
+   * i.e. the nodal form of the friction condition (5.3) with the
+   * coefficient frozen. It is solved by the primal-dual active set method,
+   * the semismooth Newton method on the complementarity function
+   * eta_p = P_{B(g_p)}(z_p), z_p = eta_p + c_p v_p (the formulation of
+   * Hueber, Stadler and Wohlmuth 2008; the step below is the plain
+   * generalised derivative of the projection, not their damped variant):
+   * stick where |z_p| <= g_p (impose v_p = 0), slip elsewhere. On a slip node
+   * the generalised derivative of the projection, (g_p / |z_p|) (I - zhat
+   * zhat^T), gives two conditions in the local basis (zhat, tangents of zhat):
+   * eta_p . zhat = g_p, and v_p . t = beta_p eta_p . t with beta_p = (|z_p| -
+   * g_p) / (g_p c_p) >= 0 along the other directions. Every Newton step is then
+   * one SPD solve, on the body (contact_paths.cc) or on D (DelassusOperator,
+   * which solves for the forces or for the velocities, whichever set is
+   * smaller). For m = 1 (2D)
+   * there are no such directions: the slip set fixes eta_p = g_p sign(z_p)
+   * and the method ends when the sets and signs repeat, with (eta, v)
+   * exact. For m = 2 the slip directions converge superlinearly; the method
+   * stops when the sets repeat and eta - P(z) is below round-off. If a set
+   * seen before (not the last one) comes back, the method cycles; c is then
+   * halved, which is what cures the cycling at slip onset
+   * (doc/algorithm.md).
+   */
+  struct TrescaResult
+  {
+    unsigned int iterations   = 0;
+    unsigned int cycles_cured = 0;
+    bool         converged    = false;
+  };
+
+  enum class NodeState : int
+  {
+    stick,
+    slip
+  };
+
+  /**
+   * The linearisation of the complementarity function at one node: its
+   * state, the unit vector zhat along z_p = eta_p + c_p v_p (in the node's
+   * tangent basis), and beta_p. A node with g_p = 0 slips with eta_p = 0
+   * whatever v_p does; its direction is that of v_p (the first axis if
+   * v_p = 0) to keep it deterministic.
+   */
+  struct NodeLinearisation
+  {
+    NodeState           state = NodeState::stick;
+    std::vector<double> direction;
+    double              beta = 0;
+    /** g_p at the linearisation point. */
+    double bound = 0;
+    /** On a slip node the force along zhat is force + slope (zhat . v_p):
+     *  force = g_p and slope = 0 for the Tresca problem (frozen bound);
+     *  the tangent of g_p(|v_p|) for the full law, slope = g_p'(s) <= 0
+     *  and force = g_p(s) - s g_p'(s) at the slip rate s of the iterate. */
+    double force = 0;
+    double slope = 0;
+  };
+
+  /** The orthonormal basis of a node's tangent plane in which the Newton
+   *  step is diagonal: columns (zhat, zhat turned by 90 degrees) on slip
+   *  nodes, the identity on stick nodes. */
+  FullMatrix<double> local_basis(const NodeLinearisation &node);
+
+  /** v = v_free - D eta, however D is represented. */
+  using TrescaVelocity =
+    std::function<void(const Vector<double> &eta, Vector<double> &v)>;
+  /** One Newton step: the new (eta, v) for the given linearisation; on
+   *  entry (eta, v) is the current iterate. */
+  using TrescaNewtonStep =
+    std::function<void(const std::vector<NodeLinearisation> &linearisation,
+                       Vector<double>                       &eta,
+                       Vector<double>                       &v)>;
+
+  /** v_free, formed when first asked for: on the constraints path it costs
+   *  a solve with K that a step converging in one Newton step never needs
+   *  (every sticking step). */
+  using FreeVelocity = std::function<const Vector<double> &()>;
+
+  /** The method with the linear algebra supplied by the caller (e.g. on the
+   *  whole body instead of on D). */
+  TrescaResult solve_tresca(const TrescaVelocity   &velocity,
+                            const TrescaNewtonStep &newton_step,
+                            const unsigned int      n_components,
+                            const Vector<double>   &g,
+                            const Vector<double>   &c,
+                            const unsigned int      max_iterations,
+                            Vector<double>         &eta,
+                            Vector<double>         &v,
+                            std::vector<NodeState> &state);
+
+  /**
+   * The nodal friction law with the coefficient not frozen: node p's bound
+   * g_p(s) = m_p S mu(s) at slip rate s, its derivative, and the energy of
+   * a step on Gamma_3 (the discrete counterpart of (3.8)),
+   *   E(v) = 1/2 (v - v_free)^T D^{-1} (v - v_free) + sum_p m_p j(|v_p|),
+   * evaluated as 1/2 eta . (v_free - v) + sum_p m_p j(|v_p|) for
+   * v = v_free - D eta.
+   */
+  struct NodalLaw
+  {
+    const FrictionLaw    &law;
+    const Vector<double> &weights;
+    /** The steepest weakening per unit weight, |g_p'| / m_p, that the
+     *  Newton model takes while it is far from the solution (infinite: the
+     *  true slope throughout). Below the convexity limit of the step's
+     *  problem it keeps the model convex. */
+    double weakening_cap = std::numeric_limits<double>::infinity();
+
+    double bound(const unsigned int p, const double s) const;
+    double slope(const unsigned int p, const double s) const;
+    /** E, and in scale the sum of its terms' sizes (for round-off). */
+    double energy(const Vector<double> &v_free,
+                  const Vector<double> &eta,
+                  const Vector<double> &v,
+                  double               &scale) const;
+  };
+
+  /** What the Newton method on the full law did. */
+  struct FrictionNewtonResult
+  {
+    unsigned int iterations = 0;
+    /** Newton steps shortened by the line search. */
+    unsigned int damped_steps = 0;
+    /** Convexification steps (a Tresca problem with the bounds of the
+     *  current slip rates), taken where the Newton step did not lower E, and
+     *  the active set iterations they took. */
+    unsigned int convexification_steps = 0;
+    unsigned int active_set_iterations = 0;
+    bool         converged             = false;
+  };
+
+  /**
+   * The friction problem of a step with the full nonmonotone law (5.3),
+   *
+   *   v = v_free - D eta,
+   *   |eta_p| <= g_p(0) if v_p = 0,  eta_p = g_p(|v_p|) v_p / |v_p| else,
+   *
+   * by a semismooth Newton method on the complementarity function
+   * F_p = eta_p - P_{B(g_p(|v_p|))}(eta_p + c_p v_p): the linearisation of
+   * solve_tresca() plus, on slip nodes, the derivative of the bound,
+   * g_p' (zhat . dv), so that slip rates and forces are found together
+   * instead of by a fixed point around Tresca problems. The Jacobian stays
+   * symmetric; it is indefinite where the step problem is not convex
+   * (g_p' < 0 is the weakening). The solutions of the law are the
+   * stationary points of the step's energy E (NodalLaw), and the
+   * globalisation keeps the iterates going down E. While the sets change,
+   * the model caps the weakening at law.weakening_cap (below the convexity
+   * limit the model is convex and its step a direction of descent; with
+   * the true slope, a node just entering slip is pulled back towards
+   * stick); once the sets repeat after a full step and max |F_p| is below
+   * a tenth of max_p g_p(0), the true slope takes over for the quadratic
+   * convergence. A step that does not lower E is halved up to three times; if
+   * that fails, the other model (capped or true slope) is tried from the same
+   * iterate (a failed true step also halves the residual below which the
+   * true slope is taken again), and if both fail a convexification step
+   * is taken instead (the Tresca problem with the
+   * bounds of the current slip rates), which lowers E because j is concave
+   * along |v| (a majorisation).
+   * So the method cannot end on a maximum or saddle of E, and where the step
+   * problem has several solutions it ends on a local minimum reached by
+   * descent from the previous step's state: (eta, v) on entry are the
+   * previous step's forces and slip velocities, and the first Newton step
+   * is taken from their linearisation (the previous step's active set),
+   * without a solve to make v consistent with eta. It stops when the sets
+   * repeat and max |F_p| <= friction_residual_tolerance max_p g_p(0).
+   */
+  FrictionNewtonResult
+  solve_friction_newton(const TrescaVelocity   &velocity,
+                        const TrescaNewtonStep &newton_step,
+                        const unsigned int      n_components,
+                        const NodalLaw         &law,
+                        const FreeVelocity     &v_free,
+                        const Vector<double>   &c,
+                        const unsigned int      max_iterations,
+                        const unsigned int      max_active_set_iterations,
+                        Vector<double>         &eta,
+                        Vector<double>         &v,
+                        std::vector<NodeState> &state);
+
+} // namespace Contact
+
+#endif

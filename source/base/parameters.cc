@@ -1,0 +1,1350 @@
+/* Declaration, parsing and checks of the .prm entries. */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <base/parameters.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace Contact
+{
+  std::string number_text(const double value)
+  {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+  }
+
+
+  namespace
+  {
+    // The one place where a user error about a single entry is raised: it
+    // names the entry (with its subsection), the value read and what is
+    // allowed.
+    void check_entry(const bool         condition,
+                     const std::string &entry,
+                     const double       value,
+                     const std::string &allowed)
+    {
+      AssertThrow(condition,
+                  ExcMessage("Invalid value " + number_text(value) +
+                             " for the entry '" + entry + "': allowed is " +
+                             allowed + "."));
+    }
+
+    std::vector<types::boundary_id> parse_boundary_ids(const std::string &text)
+    {
+      std::vector<types::boundary_id> ids;
+      for (const int id :
+           Utilities::string_to_int(Utilities::split_string_list(text)))
+        ids.push_back(static_cast<types::boundary_id>(id));
+      return ids;
+    }
+
+    // Points 'x, y[, z]' separated by ';', each of exactly dim numbers.
+    std::vector<std::vector<double>> parse_points(const std::string &text,
+                                                  const unsigned int dim,
+                                                  const std::string &entry)
+    {
+      std::vector<std::vector<double>> points;
+      for (const std::string &point : Utilities::split_string_list(text, ';'))
+        {
+          const auto          coordinates = Utilities::split_string_list(point);
+          bool                numbers     = (coordinates.size() == dim);
+          std::vector<double> values;
+          for (const std::string &coordinate : coordinates)
+            {
+              char        *end   = nullptr;
+              const double value = std::strtod(coordinate.c_str(), &end);
+              numbers = numbers && *end == '\0' && std::isfinite(value);
+              values.push_back(value);
+            }
+          AssertThrow(numbers,
+                      ExcMessage("Entry '" + entry +
+                                 "': cannot read the "
+                                 "point '" +
+                                 point +
+                                 "'; allowed are points "
+                                 "of exactly Dimension finite numbers "
+                                 "'x, y[, z]', separated by ';'."));
+          points.push_back(values);
+        }
+      return points;
+    }
+  } // namespace
+
+
+  // @sect3{Geometry}
+
+  void GeometryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry(
+        "Mesh file",
+        "",
+        Patterns::Anything(),
+        "A gmsh .msh file (format 2.2 or 4) whose physical ids are the "
+        "boundary ids of 'Boundary conditions'; a relative path is taken "
+        "relative to the .prm file that sets it. Empty: the box of Lower and "
+        "Upper corner with the Cell size.");
+      prm.declare_entry("Mesh refinements",
+                        "0",
+                        Patterns::Integer(0, 10),
+                        "Global refinements of the mesh read from the Mesh "
+                        "file, or of the shell's coarse mesh.");
+      prm.declare_entry(
+        "Domain",
+        "box",
+        Patterns::Selection("box|shell"),
+        "box: Lower and Upper corner, divided by the Cell size; shell: the "
+        "annulus (2D) or the tube along z from z = 0 to the Shell length "
+        "(3D) between the Inner and the Outer radius around the origin, "
+        "Cells around the circle, refined Mesh refinements times along "
+        "the circles (boundary ids 0 inner, 1 outer, 2 z = 0, 3 z = "
+        "length). A Mesh file replaces both.");
+      prm.declare_entry("Inner radius",
+                        "0.5",
+                        Patterns::Double(0),
+                        "Inner radius of the shell [m].");
+      prm.declare_entry("Outer radius",
+                        "1",
+                        Patterns::Double(0),
+                        "Outer radius of the shell [m].");
+      prm.declare_entry("Shell length",
+                        "0.25",
+                        Patterns::Double(0),
+                        "Length of the tube along z in 3D [m].");
+      prm.declare_entry("Cells around",
+                        "8",
+                        Patterns::Integer(3, 1000),
+                        "Cells of the shell's coarse mesh around the circle "
+                        "(one layer across the wall; in 3D as many along z "
+                        "as keep the cells about as long as wide).");
+      prm.declare_entry(
+        "Mapping degree",
+        "1",
+        Patterns::Integer(1, 4),
+        "Degree of the polynomial map of each cell: 1, straight edges (a "
+        "polygon for a circle); 2 or more, edges that follow a curved "
+        "boundary (the shell's circles) between the nodes. On a shell use "
+        "2 or more: equal to the 'Finite element degree' keeps the rigid "
+        "rotation about the axis in the discrete space (the moments balance "
+        "to round-off, a self-check); above it (Q1) it gave the bushing's "
+        "slip onset most accurately, but balances the moments only to "
+        "O(h^2); below it Q2 loses an order on Gamma_3 "
+        "(doc/verification.md).");
+      prm.declare_entry("Lower corner",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Lower corner of the box Omega [m], dim numbers.");
+      prm.declare_entry("Upper corner",
+                        "1, 0.5",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Upper corner of the box Omega [m], dim numbers.");
+      prm.declare_entry(
+        "Cell size",
+        "0.0078125",
+        Patterns::Double(0),
+        "Edge length h of the cells [m]; every edge of the box is divided "
+        "into round(length/h) equal parts (the paper's h).");
+      prm.declare_entry(
+        "Cell shape",
+        "hypercube",
+        Patterns::Selection("hypercube|simplex"),
+        "hypercube: quadrilaterals/hexahedra with Q_p elements; simplex: "
+        "every box cell split into triangles (2) or tetrahedra (5), with "
+        "P_p elements (FE_SimplexP).");
+      prm.declare_entry("Finite element degree",
+                        "1",
+                        Patterns::Integer(1, 4),
+                        "Polynomial degree of the Lagrange elements Q_p.");
+      prm.declare_entry("Mass matrix",
+                        "consistent",
+                        Patterns::Selection("consistent|lumped"),
+                        "consistent: Gauss quadrature; lumped: Gauss-Lobatto "
+                        "quadrature at the nodes, a diagonal M.");
+      prm.declare_entry(
+        "Refinement points",
+        "",
+        Patterns::Anything(),
+        "Points 'x, y[, z]' separated by ';' (a corner where the solution is "
+        "singular) towards which the mesh is graded: cells closer than R to "
+        "a point are refined until their size is at most h (r/R)^gamma, r the "
+        "distance of their center to the point. The refinement must stay away "
+        "from Gamma_3.");
+      prm.declare_entry("Refinement radius",
+                        "0",
+                        Patterns::Double(0),
+                        "R [m] of the grading; 0 switches it off.");
+      prm.declare_entry(
+        "Refinement grading",
+        "0.3333333333",
+        Patterns::Double(0.05, 1),
+        "gamma of the grading: for a singularity u ~ r^lambda, gamma = "
+        "1 - lambda restores the rate of smooth solutions.");
+      prm.declare_entry(
+        "Rotation angle",
+        "0",
+        Patterns::Double(-360, 360),
+        "Rotates the mesh about the origin by this angle [degrees] (about "
+        "the z axis in 2D, about the Rotation axis in 3D): an inclined "
+        "Gamma_3. Loads, refinement and probe points are given in the "
+        "rotated frame.");
+      prm.declare_entry("Rotation axis",
+                        "0, 0, 1",
+                        Patterns::List(Patterns::Double(), 3, 3),
+                        "Axis of the rotation in 3D, three numbers, not all "
+                        "zero.");
+    }
+    prm.leave_subsection();
+  }
+
+  void GeometryParameters::parse_parameters(ParameterHandler  &prm,
+                                            const unsigned int dim)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      mesh_file        = Utilities::trim(prm.get("Mesh file"));
+      mesh_refinements = prm.get_integer("Mesh refinements");
+      shell            = (prm.get("Domain") == "shell");
+      inner_radius     = prm.get_double("Inner radius");
+      outer_radius     = prm.get_double("Outer radius");
+      shell_length     = prm.get_double("Shell length");
+      cells_around     = prm.get_integer("Cells around");
+      mapping_degree   = prm.get_integer("Mapping degree");
+      lower_corner     = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Lower corner")));
+      upper_corner = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Upper corner")));
+      cell_size          = prm.get_double("Cell size");
+      simplex_cells      = (prm.get("Cell shape") == "simplex");
+      fe_degree          = prm.get_integer("Finite element degree");
+      lumped_mass        = (prm.get("Mass matrix") == "lumped");
+      refinement_points  = parse_points(prm.get("Refinement points"),
+                                       dim,
+                                       "Geometry/Refinement points");
+      refinement_radius  = prm.get_double("Refinement radius");
+      refinement_grading = prm.get_double("Refinement grading");
+      rotation_angle     = prm.get_double("Rotation angle");
+      rotation_axis      = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Rotation axis")));
+    }
+    prm.leave_subsection();
+
+    check_entry(dim == 2 || rotation_angle == 0 || rotation_axis[0] != 0 ||
+                  rotation_axis[1] != 0 || rotation_axis[2] != 0,
+                "Geometry/Rotation axis",
+                0.,
+                "a nonzero vector");
+
+    // The corners and the cell size describe the box only.
+    if (is_box())
+      {
+        check_entry(lower_corner.size() == dim,
+                    "Geometry/Lower corner",
+                    lower_corner.size(),
+                    "exactly Dimension numbers");
+        check_entry(upper_corner.size() == dim,
+                    "Geometry/Upper corner",
+                    upper_corner.size(),
+                    "exactly Dimension numbers");
+        for (unsigned int d = 0; d < dim; ++d)
+          check_entry(upper_corner[d] > lower_corner[d],
+                      "Geometry/Upper corner",
+                      upper_corner[d],
+                      "a value above the matching Geometry/Lower corner in "
+                      "every coordinate");
+        check_entry(cell_size > 0, "Geometry/Cell size", cell_size, "h > 0");
+        double shortest_edge = std::numeric_limits<double>::max();
+        for (unsigned int d = 0; d < dim; ++d)
+          shortest_edge =
+            std::min(shortest_edge, upper_corner[d] - lower_corner[d]);
+        check_entry(cell_size <= shortest_edge,
+                    "Geometry/Cell size",
+                    cell_size,
+                    "h at most the shortest edge of the box, " +
+                      Utilities::to_string(shortest_edge));
+      }
+    // FE_SimplexP of deal.II 9.4 has degrees 1 and 2 only.
+    check_entry(!simplex_cells || fe_degree <= 2,
+                "Geometry/Finite element degree",
+                fe_degree,
+                "1 or 2 with 'Cell shape = simplex'");
+    // Gauss-Lobatto nodes and local refinement exist for hypercubes only
+    // in deal.II 9.4.
+    AssertThrow(!(simplex_cells && lumped_mass),
+                ExcMessage("Entry 'Geometry/Mass matrix': lumped is "
+                           "available for 'Cell shape = hypercube' only; "
+                           "allowed with simplices is consistent."));
+    AssertThrow(!shell || mesh_file.empty(),
+                ExcMessage("Entry 'Geometry/Domain': shell does not go "
+                           "with a 'Geometry/Mesh file' (the file is the "
+                           "domain); allowed with a mesh file is box."));
+    check_entry(!shell || outer_radius > inner_radius,
+                "Geometry/Outer radius",
+                outer_radius,
+                "a radius above the Inner radius, " +
+                  Utilities::to_string(inner_radius));
+    check_entry(!shell || inner_radius > 0,
+                "Geometry/Inner radius",
+                inner_radius,
+                "r > 0 with 'Geometry/Domain = shell'");
+    check_entry(!shell || dim == 2 || shell_length > 0,
+                "Geometry/Shell length",
+                shell_length,
+                "a length > 0 with 'Geometry/Domain = shell' in 3D");
+    // The shell's circles are a manifold about the origin (about the z
+    // axis in 3D): a rotated mesh would leave it.
+    check_entry(!shell || rotation_angle == 0,
+                "Geometry/Rotation angle",
+                rotation_angle,
+                "0 with 'Geometry/Domain = shell'");
+    AssertThrow(!shell || !simplex_cells,
+                ExcMessage("Entry 'Geometry/Domain': shell is built of "
+                           "quadrilaterals/hexahedra; allowed with 'Cell "
+                           "shape = simplex' is box."));
+    check_entry(!simplex_cells || mapping_degree == 1,
+                "Geometry/Mapping degree",
+                mapping_degree,
+                "1 with 'Cell shape = simplex'");
+    check_entry(!simplex_cells || refinement_radius == 0.,
+                "Geometry/Refinement radius",
+                refinement_radius,
+                "0 with 'Cell shape = simplex' (local refinement of "
+                "simplices is not available)");
+  }
+
+
+  // @sect3{Boundary conditions}
+
+  void BoundaryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    {
+      prm.declare_entry(
+        "Clamped boundary ids",
+        "0",
+        Patterns::List(Patterns::Integer(0, 254)),
+        "Boundary ids of Gamma_1, where u = 0. The box numbers its faces "
+        "0: x = x0, 1: x = x1, 2: y = y0, 3: y = y1 (4, 5: z in 3D).");
+      prm.declare_entry(
+        "Contact boundary ids",
+        "2",
+        Patterns::List(Patterns::Integer(0, 254)),
+        "Boundary ids of Gamma_3: bilateral contact (u.n = 0) with friction.");
+      prm.declare_entry(
+        "Symmetry boundary ids",
+        "",
+        Patterns::List(Patterns::Integer(0, 254)),
+        "Boundary ids of symmetry planes (rollers): u.n = 0 and no tangential "
+        "traction. The paper's block extruded in z with both z faces here is "
+        "the 2D plane strain problem.");
+      prm.declare_entry(
+        "Tractions",
+        "3: 0; -600*t",
+        Patterns::Anything(),
+        "Tractions f_2 on Gamma_2 [N/m^(dim-1)]: 'id: f_x; f_y[; f_z]', several "
+        "separated by '|'. Expressions of x, y, z, t (muparser). Boundary "
+        "parts not named anywhere are traction free.");
+    }
+    prm.leave_subsection();
+  }
+
+  void BoundaryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    {
+      clamped_ids  = parse_boundary_ids(prm.get("Clamped boundary ids"));
+      contact_ids  = parse_boundary_ids(prm.get("Contact boundary ids"));
+      symmetry_ids = parse_boundary_ids(prm.get("Symmetry boundary ids"));
+      tractions.clear();
+      for (const std::string &piece :
+           Utilities::split_string_list(prm.get("Tractions"), '|'))
+        {
+          const auto colon = piece.find(':');
+          AssertThrow(colon != std::string::npos && colon > 0,
+                      ExcMessage("Entry 'Boundary conditions/Tractions': "
+                                 "cannot read '" +
+                                 piece +
+                                 "'; expected 'boundary id: f_x; f_y[; f_z]'"
+                                 " with pieces separated by '|'."));
+          const std::string id_text = Utilities::trim(piece.substr(0, colon));
+          AssertThrow(id_text.find_first_not_of("0123456789") ==
+                          std::string::npos &&
+                        Utilities::string_to_int(id_text) < 255,
+                      ExcMessage("Entry 'Boundary conditions/Tractions': '" +
+                                 id_text +
+                                 "' is not a boundary id (an integer from 0 "
+                                 "to 254)."));
+          AssertThrow(tractions.count(Utilities::string_to_int(id_text)) == 0,
+                      ExcMessage("Entry 'Boundary conditions/Tractions': "
+                                 "boundary id " +
+                                 id_text +
+                                 " is given twice; allowed is one traction "
+                                 "per boundary id."));
+          tractions[Utilities::string_to_int(id_text)] =
+            Utilities::trim(piece.substr(colon + 1));
+        }
+    }
+    prm.leave_subsection();
+  }
+
+
+  // @sect3{Material}
+
+  void MaterialParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry("Density",
+                        "1000",
+                        Patterns::Double(0),
+                        "Mass density rho [kg/m^3]; 0 gives a quasi-static "
+                        "problem (no inertia).");
+      prm.declare_entry("Young's modulus",
+                        "2000",
+                        Patterns::Double(),
+                        "Young's modulus E [N/m^2] of the elasticity tensor "
+                        "B, E > 0.");
+      prm.declare_entry("Poisson ratio",
+                        "0.3",
+                        Patterns::Double(),
+                        "Poisson ratio kappa of B, 0 <= kappa < 0.5.");
+      prm.declare_entry("Viscosity mu1",
+                        "50",
+                        Patterns::Double(0),
+                        "mu_1 [N s/m^2] in A tau = mu_1 tr(tau) I + mu_2 tau.");
+      prm.declare_entry("Viscosity mu2",
+                        "100",
+                        Patterns::Double(0),
+                        "mu_2 [N s/m^2] in A tau = mu_1 tr(tau) I + mu_2 tau.");
+      prm.declare_entry(
+        "Plane model",
+        "plane strain",
+        Patterns::Selection("plane strain|plane stress"),
+        "2D only: the paper's formula for B (plane strain) or plane stress, "
+        "lambda* = 2 lambda G / (lambda + 2 G).");
+    }
+    prm.leave_subsection();
+  }
+
+  void MaterialParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    {
+      density        = prm.get_double("Density");
+      youngs_modulus = prm.get_double("Young's modulus");
+      poisson_ratio  = prm.get_double("Poisson ratio");
+      viscosity_mu1  = prm.get_double("Viscosity mu1");
+      viscosity_mu2  = prm.get_double("Viscosity mu2");
+      plane_stress   = (prm.get("Plane model") == "plane stress");
+    }
+    prm.leave_subsection();
+
+    check_entry(youngs_modulus > 0,
+                "Material/Young's modulus",
+                youngs_modulus,
+                "E > 0");
+    check_entry(poisson_ratio >= 0 && poisson_ratio < 0.5,
+                "Material/Poisson ratio",
+                poisson_ratio,
+                "0 <= kappa < 0.5");
+  }
+
+
+  double MaterialParameters::two_G() const
+  {
+    return youngs_modulus / (1. + poisson_ratio);
+  }
+
+  double MaterialParameters::lambda(const unsigned int dim) const
+  {
+    const double kappa = poisson_ratio;
+    const double lambda_3d =
+      youngs_modulus * kappa / ((1. + kappa) * (1. - 2. * kappa));
+    if (dim == 2 && plane_stress)
+      return 2. * lambda_3d * (two_G() / 2.) / (lambda_3d + two_G());
+    return lambda_3d;
+  }
+
+
+  // @sect3{Loads and initial values}
+
+  void LoadParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loads and initial values");
+    {
+      prm.declare_entry("Body force",
+                        "0; -1e-5",
+                        Patterns::Anything(),
+                        "Body force f_0 [N/m^dim], 'f_x; f_y[; f_z]' of x, y, "
+                        "z, t.");
+      prm.declare_entry("Initial displacement",
+                        "0; 0",
+                        Patterns::Anything(),
+                        "u_0 [m], 'u_x; u_y[; u_z]' of x, y, z.");
+      prm.declare_entry("Initial velocity",
+                        "0; 0",
+                        Patterns::Anything(),
+                        "u_1 [m/s], 'w_x; w_y[; w_z]' of x, y, z.");
+    }
+    prm.leave_subsection();
+  }
+
+  void LoadParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loads and initial values");
+    {
+      body_force           = prm.get("Body force");
+      initial_displacement = prm.get("Initial displacement");
+      initial_velocity     = prm.get("Initial velocity");
+    }
+    prm.leave_subsection();
+  }
+
+
+  // @sect3{Friction}
+
+  void FrictionParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Friction");
+    {
+      prm.declare_entry(
+        "Friction law",
+        "slip rate weakening",
+        Patterns::Selection("none|constant|slip rate weakening"),
+        "none: frictionless Gamma_3; constant: mu = a; slip rate weakening: "
+        "mu(s) = (a - b) exp(-alpha s) + b, the paper's (6.1).");
+      prm.declare_entry("Friction bound S",
+                        "100",
+                        Patterns::Double(0),
+                        "S >= 0 [N/m^(dim-1)]: the slip threshold is mu S "
+                        "(3.6).");
+      prm.declare_entry("a", "1", Patterns::Double(0), "mu(0) = a >= 0.");
+      prm.declare_entry("b",
+                        "0.1",
+                        Patterns::Double(0),
+                        "mu(inf) = b, b <= a.");
+      prm.declare_entry("alpha",
+                        "200",
+                        Patterns::Double(0),
+                        "Decay rate alpha >= 0 [s/m] of (6.1).");
+    }
+    prm.leave_subsection();
+  }
+
+  void FrictionParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Friction");
+    {
+      const std::string name = prm.get("Friction law");
+      law                    = (name == "none"     ? Law::none :
+                                name == "constant" ? Law::constant :
+                                                     Law::slip_rate_weakening);
+      bound_S                = prm.get_double("Friction bound S");
+      a                      = prm.get_double("a");
+      b                      = prm.get_double("b");
+      alpha                  = prm.get_double("alpha");
+    }
+    prm.leave_subsection();
+
+    if (law == Law::slip_rate_weakening)
+      {
+        check_entry(b <= a, "Friction/b", b, "0 <= b <= a");
+        check_entry(alpha > 0 || a == b,
+                    "Friction/alpha",
+                    alpha,
+                    "alpha > 0, or alpha = 0 together with a = b");
+      }
+  }
+
+
+  // @sect3{Time}
+
+  void TimeParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time");
+    {
+      prm.declare_entry("End time", "1.1", Patterns::Double(), "T > 0 [s].");
+      prm.declare_entry(
+        "Time step",
+        "0.0078125",
+        Patterns::Double(),
+        "Time step k [s], 0 < k <= T. The run takes N = ceil(T/k) steps of the "
+        "uniform size T/N, so that the last step ends at T.");
+      prm.declare_entry(
+        "Max steps",
+        "1000000",
+        Patterns::Integer(1, std::numeric_limits<int>::max()),
+        "The largest N = ceil(T/k) a run accepts: a guard against a mistyped "
+        "Time step that would run for days. Raise it for longer runs.");
+    }
+    prm.leave_subsection();
+  }
+
+  void TimeParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time");
+    {
+      end_time  = prm.get_double("End time");
+      time_step = prm.get_double("Time step");
+      max_steps = prm.get_integer("Max steps");
+    }
+    prm.leave_subsection();
+
+    check_entry(std::isfinite(end_time) && end_time > 0,
+                "Time/End time",
+                end_time,
+                "T > 0");
+    check_entry(std::isfinite(time_step) && time_step > 0 &&
+                  time_step <= end_time,
+                "Time/Time step",
+                time_step,
+                "0 < k <= Time/End time");
+    // In floating point: ceil(T/k) may exceed every unsigned integer.
+    const double       steps = std::ceil(end_time / time_step - 1e-9);
+    std::ostringstream allowed;
+    allowed << std::setprecision(6)
+            << "k >= T / (Time/Max steps) = " << end_time / max_steps
+            << " (here N = ceil(T/k) = " << steps
+            << " steps against Time/Max steps = " << max_steps
+            << "; raise Max steps if the run is meant to be that long)";
+    check_entry(steps <= max_steps, "Time/Time step", time_step, allowed.str());
+  }
+
+  // N = ceil(T/k) steps of the uniform size T/N, so that the last step ends
+  // at T (the paper's T = 1.1 is not a multiple of its k = 1/128).
+  unsigned int TimeParameters::n_steps() const
+  {
+    return static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-9));
+  }
+
+
+  // @sect3{Solver}
+
+  void SolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    {
+      prm.declare_entry(
+        "Convexification tolerance",
+        "1e-12",
+        Patterns::Double(0),
+        "The convexification stops when the slip rates on Gamma_3 change by "
+        "less than this, relative to the largest tangential velocity, and the "
+        "slip set does not change.");
+      prm.declare_entry(
+        "Friction method",
+        "convexification",
+        Patterns::Selection("Newton|convexification"),
+        "How the nonmonotone friction problem of a step is solved. Newton: "
+        "a semismooth Newton method on the full law, with the derivative of "
+        "the friction coefficient in its Jacobian, a line search on the "
+        "step's energy, and a convexification step (a Tresca problem) where "
+        "the Newton step does not lower it (the step problem is not convex "
+        "there); it starts from the previous step's forces and stick/slip "
+        "sets, and falls back to the "
+        "convexification if it does not converge within 'Max Newton "
+        "iterations'. convexification: the paper's fixed point, one Tresca "
+        "problem per iteration (with Anderson acceleration), solved by the "
+        "primal-dual active set method. Both find the same solution where "
+        "the step problem has one; where it has several (S (a - b) alpha "
+        "above the convexity limit printed at start-up) they may end on "
+        "different ones (doc/algorithm.md), which is why the "
+        "convexification stays the default for now.");
+      prm.declare_entry("Max Newton iterations",
+                        "50",
+                        Patterns::Integer(1),
+                        "Iteration limit of the Newton method per step; "
+                        "then the convexification takes over.");
+      prm.declare_entry("Max convexification iterations",
+                        "200",
+                        Patterns::Integer(2),
+                        "Iteration limit of the convexification per step (at "
+                        "least 2: it stops when the slip set repeats).");
+      prm.declare_entry("Max active set iterations",
+                        "500",
+                        Patterns::Integer(1),
+                        "Iteration limit of the primal-dual active set "
+                        "method per Tresca problem. Usually a few suffice; "
+                        "a nearly incompressible material (Poisson ratio "
+                        "0.4999) needed 218 in one step of the paper's "
+                        "scene at h = k = 1/16 (bench/extremes.py).");
+      prm.declare_entry(
+        "Active set parameter",
+        "0.05",
+        Patterns::Double(0),
+        "c_p / K_pp in z_p = eta_p + c_p w_tau,p; 0.01 to 0.1 avoids the "
+        "cycling at slip onset seen with c_p = K_pp.");
+      prm.declare_entry(
+        "Anderson depth",
+        "5",
+        Patterns::Integer(0, 20),
+        "Number of previous iterates that Anderson acceleration of the "
+        "convexification combines; 0 gives the paper's plain iteration. An "
+        "accelerated iterate that does not lower the step's energy is "
+        "rejected.");
+      prm.declare_entry(
+        "Linear solver",
+        "auto",
+        Patterns::Selection(
+          "auto|CHOLMOD|Amesos_Klu|Amesos_Mumps|Amesos_Lapack|CG-AMG"),
+        "How systems with K = (rho/k) M + A + k B are solved. CHOLMOD "
+        "(SuiteSparse's supernodal Cholesky, one process) or a Trilinos "
+        "Amesos solver (Amesos_Mumps: MUMPS, distributed over the processes) "
+        "factorise K once per run; CG-AMG: conjugate gradients with Trilinos "
+        "ML's algebraic multigrid (built once per run), for meshes whose "
+        "factor does not fit, relative residual " +
+          number_text(SolverParameters::cg_relative_residual) +
+          ". auto: CHOLMOD on one process, Amesos_Mumps on more.");
+      prm.declare_entry(
+        "Step cuts",
+        "0",
+        Patterns::Integer(0, 20),
+        "When the convexification or the active set method of a step does "
+        "not converge, take the step again as two steps of k/2 (refactorising "
+        "K), each of which may be cut again, at most this many times in a "
+        "row; then k is restored. 0: a step that does not converge ends the "
+        "run with its diagnostic. The console reports every cut and "
+        "time_series.csv counts them (column step_cuts).");
+      prm.declare_entry(
+        "Contact solver",
+        "auto",
+        Patterns::Selection("auto|Delassus|constraints"),
+        "How the friction problem of a step is solved. Delassus: on the "
+        "tangential unknowns of Gamma_3 alone, with the dense Delassus "
+        "operator D = C K^{-1} C^T built once per run: from "
+        "Y = L^{-1} P C^T (sparse; K = P^T L L^T P by CHOLMOD), a step then "
+        "costs one forward and one backward substitution and dense work on "
+        "Gamma_3; with the other linear solvers from Z = K^{-1} C^T (dense, "
+        "one solve per tangential unknown of Gamma_3), a step then costs one "
+        "solve and a product with Z. constraints: the straightforward path; "
+        "every Newton step of the active set method solves on the whole "
+        "body with the sticking nodes held fixed as constraints, and "
+        "refactorises; no D. auto: Delassus while Gamma_3 has at most " +
+          std::to_string(SolverParameters::max_delassus_unknowns) +
+          " tangential unknowns (the dense Newton steps cost O(n^3) in their "
+          "number n) and, without CHOLMOD, the linear solver is direct and Z "
+          "fits in " +
+          number_text(SolverParameters::max_delassus_bytes / 1e9) +
+          " GB per process; constraints otherwise.");
+    }
+    prm.leave_subsection();
+  }
+
+  void SolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    {
+      convexification_tolerance = prm.get_double("Convexification tolerance");
+      max_convexification_iterations =
+        prm.get_integer("Max convexification iterations");
+      max_active_set_iterations = prm.get_integer("Max active set iterations");
+      active_set_parameter      = prm.get_double("Active set parameter");
+      anderson_depth            = prm.get_integer("Anderson depth");
+      linear_solver             = prm.get("Linear solver");
+      if (linear_solver == "auto")
+        linear_solver = (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ?
+                           "CHOLMOD" :
+                           "Amesos_Mumps");
+      iterative_linear_solver   = (linear_solver == "CG-AMG");
+      const std::string contact = prm.get("Contact solver");
+      contact_solver        = (contact == "Delassus" ? ContactSolver::delassus :
+                               contact == "constraints" ? ContactSolver::constraints :
+                                                          ContactSolver::automatic);
+      friction_method       = (prm.get("Friction method") == "Newton" ?
+                                 FrictionMethod::newton :
+                                 FrictionMethod::convexification);
+      max_newton_iterations = prm.get_integer("Max Newton iterations");
+      step_cuts             = prm.get_integer("Step cuts");
+    }
+    prm.leave_subsection();
+
+    check_entry(convexification_tolerance > 0,
+                "Solver/Convexification tolerance",
+                convexification_tolerance,
+                "a tolerance > 0");
+    check_entry(active_set_parameter > 0,
+                "Solver/Active set parameter",
+                active_set_parameter,
+                "a value > 0");
+    AssertThrow(linear_solver != "CHOLMOD" ||
+                  Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
+                ExcMessage("'Solver/Linear solver = CHOLMOD' runs on one MPI "
+                           "process; on " +
+                           std::to_string(
+                             Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)) +
+                           " processes choose auto or an Amesos solver "
+                           "(Amesos_Mumps distributes the factor)."));
+  }
+
+
+  // @sect3{Verification}
+
+  void VerificationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Verification");
+    {
+      prm.declare_entry(
+        "Manufactured solution",
+        "none",
+        Patterns::Selection("none|slip front"),
+        "slip front: solve for the exact solution of ManufacturedSolution "
+        "(a stick zone x < 1/2 and a slip zone x > 1/2 on Gamma_3 = {y = 0}, "
+        "Gamma_1 = {x = 0}); body force, tractions of all sides but Gamma_1 "
+        "and Gamma_3, a tangential load on Gamma_3 and the initial values are "
+        "then computed from it (the entries for them are ignored), and the "
+        "errors are reported.");
+      prm.declare_entry("Amplitude",
+                        "0.1",
+                        Patterns::Double(0),
+                        "A in u = A (t + t^2/2) U(x) [m/s]; the slip rate on "
+                        "Gamma_3 reaches A (1 + t)/8.");
+    }
+    prm.leave_subsection();
+  }
+
+  void VerificationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Verification");
+    {
+      manufactured_solution = (prm.get("Manufactured solution") != "none");
+      amplitude             = prm.get_double("Amplitude");
+    }
+    prm.leave_subsection();
+  }
+
+
+  // @sect3{Convergence study}
+
+  void ConvergenceStudyParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Convergence study");
+    {
+      prm.declare_entry(
+        "Levels",
+        "0",
+        Patterns::Integer(0, 12),
+        "0: one run. n > 0: n + 1 runs, starting from Geometry/Cell size and "
+        "Time/Time step and halving what 'Refine' says from one run to the "
+        "next (a mesh read from a Mesh file gets one more global refinement "
+        "per level instead, and h is its largest cell diameter); a table of "
+        "the errors (against a manufactured solution, or else against the "
+        "finest level) and their rates is printed at the end.");
+      prm.declare_entry("Refine",
+                        "space and time",
+                        Patterns::Selection("space and time|space|time"),
+                        "What is halved from one level to the next.");
+      prm.declare_entry(
+        "Reference degree",
+        "0",
+        Patterns::Integer(0, 4),
+        "Without a manufactured solution the finest level is the reference; "
+        "this is its element degree (0: the degree of the levels). A richer "
+        "reference lets studies with different degrees share one reference "
+        "(work-precision).");
+    }
+    prm.leave_subsection();
+  }
+
+  void ConvergenceStudyParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Convergence study");
+    {
+      levels                   = prm.get_integer("Levels");
+      reference_degree         = prm.get_integer("Reference degree");
+      const std::string choice = prm.get("Refine");
+      refine                   = (choice == "space" ? Refine::space :
+                                  choice == "time"  ? Refine::time :
+                                                      Refine::space_and_time);
+    }
+    prm.leave_subsection();
+  }
+
+
+  // @sect3{Accuracy}
+
+  void AccuracyParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Accuracy");
+    {
+      prm.declare_entry(
+        "Estimate error",
+        "false",
+        Patterns::Bool(),
+        "Also run the scene with h and k doubled and with h and k "
+        "quadrupled (into <Output directory>/coarse-1 and coarse-2; in 2D "
+        "they cost about 1/8 and 1/64 of the run) and report the estimated "
+        "error of this run at T: in the V-norm, in the probe displacements, "
+        "the friction dissipation, the slipping share of Gamma_3 and where "
+        "its slip zone starts, each by Richardson extrapolation with the "
+        "order observed between the three runs, with a warning where the "
+        "runs are not in the asymptotic range. The table goes to the "
+        "console and to <Output directory>/error_estimate.txt.");
+      prm.declare_entry(
+        "Separate space and time",
+        "false",
+        Patterns::Bool(),
+        "With 'Estimate error': also run with 2h and k and with h and 2k "
+        "(coarse-space, coarse-time; in 2D about 1/4 and 1/2 of the run) "
+        "and split every estimate into the part that halving h removes "
+        "and the part that halving k does.");
+      prm.declare_entry(
+        "Target error",
+        "0",
+        Patterns::Double(0),
+        "0: off. Otherwise the error in 'Target quantity' (by default the "
+        "largest V-error over time) that the program picks the element "
+        "degree (1 or 2), h and k for: pilot runs "
+        "on the scene's h and k and on 2h, 4h, 2k, 4k (<Output "
+        "directory>/pilot-*) measure how the error falls with h and with k "
+        "and what a run costs; the cheapest run predicted within half the "
+        "target then runs, with its error estimate (as 'Estimate error'). "
+        "The choice and the predicted and estimated errors are printed and "
+        "written to <Output directory>/target.txt.");
+      prm.declare_entry("Target error type",
+                        "relative",
+                        Patterns::Selection("relative|absolute"),
+                        "relative: 'Target error' times the size of the "
+                        "quantity on the first pilot (for the V-norm "
+                        "||eps(u_h)||, at T or its largest over time); "
+                        "absolute: in the quantity's units.");
+      prm.declare_entry(
+        "Target quantity",
+        worst_V_error,
+        Patterns::Anything(),
+        "The quantity whose error 'Target error' bounds: '" + worst_V_error +
+          "' (the largest V-error ||eps(u - u_h)|| over the times t = 4Kj), "
+          "or at T: 'V-norm of u', 'friction dissipation', 'probe <i> u_x' "
+          "(u_y, u_z) of the i-th 'Output/Probe points' entry, 'slipping "
+          "share of Gamma_3' or 'slip zone starts at x'.");
+      prm.declare_entry("Cost model",
+                        "measured",
+                        Patterns::Selection("measured|unknowns times steps"),
+                        "How the target predicts what a run costs: from "
+                        "the pilots' measured wall times (a + b unknowns "
+                        "steps, per degree), or unknowns times steps "
+                        "(the same choice on every machine).");
+    }
+    prm.leave_subsection();
+  }
+
+  void AccuracyParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Accuracy");
+    {
+      estimate_error          = prm.get_bool("Estimate error");
+      separate_space_and_time = prm.get_bool("Separate space and time");
+      target_error            = prm.get_double("Target error");
+      target_is_relative      = prm.get("Target error type") == "relative";
+      target_quantity         = prm.get("Target quantity");
+      measured_cost           = prm.get("Cost model") == "measured";
+    }
+    prm.leave_subsection();
+  }
+
+
+  // @sect3{Output}
+
+  void OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Output directory",
+                        "results-barboteu2015",
+                        Patterns::Anything(),
+                        "Directory for VTU/PVD, time_series.csv and "
+                        "parameters.prm, relative to where the program runs. "
+                        "A run that is not resumed replaces the results of "
+                        "an earlier run there (its VTU/PVD, time series, "
+                        "Gamma_3 history, parameters, checkpoints, error "
+                        "estimate with its coarse-* runs and a study's table "
+                        "with its level-N); one run at a time "
+                        "may use it (the lock file .lock names the run).");
+      prm.declare_entry("VTU interval",
+                        "8",
+                        Patterns::Integer(0),
+                        "Write a VTU file every this many steps, at the "
+                        "initial and final time and at the step nearest to "
+                        "each of the Report times; 0 writes none.");
+      prm.declare_entry("Time series",
+                        "true",
+                        Patterns::Bool(),
+                        "Write time_series.csv, one row per time step.");
+      prm.declare_entry("Gamma3 history",
+                        "true",
+                        Patterns::Bool(),
+                        "Write gamma3_history.csv: for every time step one "
+                        "row per node of Gamma_3 (its position, stick or "
+                        "slip, slip rate, friction traction and bound), the "
+                        "data of a space-time diagram of the slip front "
+                        "(doc/plot_run.py).");
+      prm.declare_entry("Report times",
+                        "0.3, 1.1",
+                        Patterns::List(Patterns::Double(0)),
+                        "Times [s] at which the stick/slip state of Gamma_3 "
+                        "is printed (at the nearest step).");
+      prm.declare_entry("Probe points",
+                        "",
+                        Patterns::Anything(),
+                        "Points 'x, y[, z]' separated by ';' whose "
+                        "displacement is written to time_series.csv "
+                        "(columns probe<i>_u_x, ...). On a shell a point "
+                        "between its radii that the cells miss by the "
+                        "geometry error of their curved boundary is taken "
+                        "at the nearest point of the cell around it.");
+      prm.declare_entry("Progress interval",
+                        "1",
+                        Patterns::Integer(0),
+                        "Print a progress line every this many steps; 0: "
+                        "none.");
+      prm.declare_entry("Print timings",
+                        "true",
+                        Patterns::Bool(),
+                        "Print the wall time summary at the end (switch off "
+                        "for tests).");
+      prm.declare_entry("Checkpoint interval",
+                        "0",
+                        Patterns::Integer(0),
+                        "Write a checkpoint (output directory/checkpoint) "
+                        "every this many steps, and at the end; 0: by steps "
+                        "never.");
+      prm.declare_entry("Checkpoint minutes",
+                        "0",
+                        Patterns::Double(0),
+                        "Write a checkpoint when this many minutes of wall "
+                        "time have passed since the last one, and at the "
+                        "end; 0: by time never.");
+      prm.declare_entry(
+        "Resume",
+        "false",
+        Patterns::Bool(),
+        "Continue the run from the checkpoint in the output directory "
+        "(the command line option --resume sets this). The scene must be the "
+        "same; a later 'Time/End time' with the same time step extends a "
+        "finished run. time_series.csv and solution.pvd are cut back to the "
+        "checkpoint's step.");
+    }
+    prm.leave_subsection();
+  }
+
+  void OutputParameters::parse_parameters(ParameterHandler  &prm,
+                                          const unsigned int dim)
+  {
+    prm.enter_subsection("Output");
+    {
+      directory            = Utilities::trim(prm.get("Output directory"));
+      vtu_interval         = prm.get_integer("VTU interval");
+      write_time_series    = prm.get_bool("Time series");
+      write_gamma3_history = prm.get_bool("Gamma3 history");
+      report_times         = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Report times")));
+      probe_points =
+        parse_points(prm.get("Probe points"), dim, "Output/Probe points");
+      progress_interval   = prm.get_integer("Progress interval");
+      print_timings       = prm.get_bool("Print timings");
+      checkpoint_interval = prm.get_integer("Checkpoint interval");
+      checkpoint_minutes  = prm.get_double("Checkpoint minutes");
+      resume              = prm.get_bool("Resume");
+    }
+    prm.leave_subsection();
+
+    AssertThrow(!directory.empty(),
+                ExcMessage("The entry 'Output/Output directory' is empty: "
+                           "allowed is a directory name."));
+    // The used parameters are written to <directory>/parameters.prm, where
+    // '#' would start a comment and a newline end the entry.
+    AssertThrow(directory.find_first_of("#\n\\") == std::string::npos,
+                ExcMessage("The entry 'Output/Output directory' = '" +
+                           directory +
+                           "' contains '#', '\\' or a line break, which "
+                           "parameters.prm cannot hold; allowed is a "
+                           "directory name without them."));
+    for (const double t : report_times)
+      check_entry(t > 0,
+                  "Output/Report times",
+                  t,
+                  "times t > 0 (t = 0 is the initial state; times after "
+                  "'Time/End time' are reported at the last step)");
+  }
+
+
+  // @sect3{All parameters}
+
+  void Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the problem, 2 or 3.");
+    GeometryParameters::declare_parameters(prm);
+    BoundaryParameters::declare_parameters(prm);
+    MaterialParameters::declare_parameters(prm);
+    LoadParameters::declare_parameters(prm);
+    FrictionParameters::declare_parameters(prm);
+    TimeParameters::declare_parameters(prm);
+    SolverParameters::declare_parameters(prm);
+    VerificationParameters::declare_parameters(prm);
+    ConvergenceStudyParameters::declare_parameters(prm);
+    AccuracyParameters::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+  }
+
+  // An error estimate runs the scene twice more, with h and k doubled and
+  // quadrupled, and a target's pilots do so in h and in k separately: the
+  // coarse meshes must exist, and the runs are separate (not a study, not
+  // a resumed run).
+  void Parameters::check_error_estimate() const
+  {
+    const bool target = accuracy.target_error > 0;
+    AssertThrow(accuracy.estimate_error || target ||
+                  !accuracy.separate_space_and_time,
+                ExcMessage("Entry '" + Entry::separate_space_and_time +
+                           "' = true splits an error estimate: allowed with "
+                           "it is '" +
+                           Entry::estimate_error + "' = true or '" +
+                           Entry::target_error + "' > 0."));
+    if (target)
+      {
+        check_target_quantity();
+        check_entry(time.n_steps() % 4 == 0,
+                    Entry::time_step,
+                    time.end_time / time.n_steps(),
+                    "a step that divides '" + Entry::end_time +
+                      "' into a multiple of 4 steps with '" +
+                      Entry::target_error +
+                      "' > 0 (the pilots run with 2k and 4k on the same "
+                      "time grid)");
+      }
+    if (!accuracy.estimate_error && !target)
+      return;
+    const std::string mode = target ? "'" + Entry::target_error + "' > 0" :
+                                      "'" + Entry::estimate_error + "' = true";
+    AssertThrow(convergence_study.levels == 0 && !output.resume,
+                ExcMessage("Entry " + mode +
+                           " runs one scene with its error estimate; "
+                           "allowed with it are '" +
+                           Entry::levels + "' = 0 and no --resume ('" +
+                           Entry::resume + "' = false)."));
+    if (!geometry.is_box())
+      {
+        check_entry(geometry.mesh_refinements >= 2,
+                    Entry::mesh_refinements,
+                    geometry.mesh_refinements,
+                    "at least 2 with " + mode +
+                      " (the coarse runs use one and two refinements "
+                      "fewer)");
+        return;
+      }
+    // The box has round(edge / h) cells along each edge: the coarse runs
+    // have cells of exactly 2h and 4h only where that number is a multiple
+    // of 4 and stays the same count halved.
+    for (unsigned int d = 0; d < dimension; ++d)
+      {
+        const double edge = geometry.upper_corner[d] - geometry.lower_corner[d];
+        const auto   cells = [&](const double size) {
+          return static_cast<long>(std::max(1., std::round(edge / size)));
+        };
+        const long n = cells(geometry.cell_size);
+        check_entry(
+          n % 4 == 0 && cells(2 * geometry.cell_size) == n / 2 &&
+            cells(4 * geometry.cell_size) == n / 4,
+          Entry::cell_size,
+          geometry.cell_size,
+          "a size that divides every edge of the box into a "
+          "multiple of 4 cells with " +
+            mode +
+            " (the coarse runs have cells of 2h and 4h); "
+            "for this edge e.g. " +
+            number_text(
+              edge /
+              (4 *
+               std::max(1l, std::lround(edge / (4 * geometry.cell_size))))) +
+            "; here the edge " + std::string(1, "xyz"[d]) + " of length " +
+            number_text(edge) + " gets " + std::to_string(n) + " cells");
+      }
+  }
+
+  // The names of the quantities at T that final_quantities() gives.
+  void Parameters::check_target_quantity() const
+  {
+    std::vector<std::string> names = {worst_V_error,
+                                      "V-norm of u",
+                                      "friction dissipation",
+                                      "slipping share of Gamma_3",
+                                      "slip zone starts at x"};
+    for (unsigned int i = 0; i < output.probe_points.size(); ++i)
+      for (unsigned int d = 0; d < dimension; ++d)
+        names.push_back("probe " + std::to_string(i + 1) + " u_" +
+                        std::string(1, "xyz"[d]));
+    std::string list;
+    for (const std::string &name : names)
+      list += (list.empty() ? "'" : ", '") + name + "'";
+    AssertThrow(
+      std::find(names.begin(), names.end(), accuracy.target_quantity) !=
+        names.end(),
+      ExcMessage("Entry '" + Entry::target_quantity + "' = '" +
+                 accuracy.target_quantity +
+                 "' is not a quantity of this scene; allowed: " + list + "."));
+  }
+
+  void Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    dimension = prm.get_integer("Dimension");
+    geometry.parse_parameters(prm, dimension);
+    boundary.parse_parameters(prm);
+    material.parse_parameters(prm);
+    loads.parse_parameters(prm);
+    friction.parse_parameters(prm);
+    time.parse_parameters(prm);
+    solver.parse_parameters(prm);
+    verification.parse_parameters(prm);
+    convergence_study.parse_parameters(prm);
+    accuracy.parse_parameters(prm);
+    output.parse_parameters(prm, dimension);
+
+    // On a P2 triangle the integral of a vertex basis function is zero:
+    // the nodal friction weights m_p of Gamma_3 would vanish at the vertices.
+    AssertThrow(!(dimension == 3 && geometry.simplex_cells &&
+                  geometry.fe_degree > 1 &&
+                  friction.law != FrictionParameters::Law::none),
+                ExcMessage("Entry 'Geometry/Finite element degree': P" +
+                           std::to_string(geometry.fe_degree) +
+                           " on tetrahedra gives zero nodal friction weights "
+                           "at the vertices of Gamma_3 (positive lumped "
+                           "weights were tried and give only first order in "
+                           "the V-norm); allowed with friction in 3D are "
+                           "degree 1 on simplices or any degree on "
+                           "hexahedra."));
+
+    AssertThrow(material.density > 0 || !boundary.clamped_ids.empty(),
+                ExcMessage("Entry 'Boundary conditions/Clamped boundary ids' "
+                           "is empty while 'Material/Density' = 0: the "
+                           "quasi-static problem has no inertia and nothing "
+                           "that holds the body against rigid motions. "
+                           "Allowed: at least one clamped boundary id, or a "
+                           "density > 0."));
+    // A VTU file per step of a long run fills a disk without a word.
+    const unsigned int max_vtu_files = 10000;
+    check_entry(output.vtu_interval == 0 ||
+                  time.n_steps() / output.vtu_interval <= max_vtu_files,
+                "Output/VTU interval",
+                output.vtu_interval,
+                "0 (none) or at least N / " + std::to_string(max_vtu_files) +
+                  " = " + std::to_string(time.n_steps() / max_vtu_files + 1) +
+                  " for the N = " + std::to_string(time.n_steps()) +
+                  " steps of this run (at most " +
+                  std::to_string(max_vtu_files) + " VTU files)");
+    AssertThrow(!(output.resume && convergence_study.levels > 0),
+                ExcMessage("Entry 'Output/Resume' (--resume): a convergence "
+                           "study ('Convergence study/Levels' > 0) cannot be "
+                           "resumed; allowed is Resume = false there."));
+    check_error_estimate();
+
+    std::ostringstream text;
+    prm.print_parameters(text,
+                         ParameterHandler::ShortPRM |
+                           ParameterHandler::KeepDeclarationOrder);
+    used_parameters = text.str();
+  }
+
+
+  // @sect3{Expressions}
+
+  bool expression_uses_variable(const std::string &expression,
+                                const std::string &variable)
+  {
+    const auto is_name_character = [](const char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    };
+    for (std::size_t i = 0; i < expression.size();)
+      {
+        if (!is_name_character(expression[i]))
+          {
+            ++i;
+            continue;
+          }
+        std::size_t end = i;
+        while (end < expression.size() && is_name_character(expression[end]))
+          ++end;
+        if (expression.compare(i, end - i, variable) == 0 &&
+            end - i == variable.size())
+          return true;
+        i = end;
+      }
+    return false;
+  }
+
+
+  // deal.II's FunctionParser reports a muparser error as an exception whose
+  // text says nothing about where the expression came from; evaluating the
+  // function once here turns every such error into one that names the
+  // entry. Components are counted first, since a missing ';' would
+  // otherwise surface as a dimension mismatch deep inside deal.II.
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  parse_vector_function(const std::string &entry,
+                        const std::string &expression,
+                        const bool         time_dependent)
+  {
+    const std::string variables =
+      std::string(dim == 2 ? "x,y" : "x,y,z") + (time_dependent ? ",t" : "");
+    const std::string allowed = "'" + std::to_string(dim) +
+                                " expressions separated by ';' in the "
+                                "variables " +
+                                variables + "'";
+    const unsigned int n_components =
+      Utilities::split_string_list(expression, ';').size();
+    AssertThrow(n_components == dim,
+                ExcMessage("The entry '" + entry + "' = '" + expression +
+                           "' has " + std::to_string(n_components) +
+                           " components; allowed is " + allowed + "."));
+
+    // deal.II also writes muparser's diagnosis to std::cerr; it is
+    // swallowed here, since the exception below says the same with the
+    // entry's name.
+    auto               function = std::make_unique<FunctionParser<dim>>(dim);
+    std::ostringstream muparser_diagnosis;
+    std::streambuf *cerr_buffer = std::cerr.rdbuf(muparser_diagnosis.rdbuf());
+    try
+      {
+        function->initialize(variables, expression, {}, time_dependent);
+        Vector<double> value(dim);
+        function->vector_value(Point<dim>(), value);
+        std::cerr.rdbuf(cerr_buffer);
+      }
+    catch (ExceptionBase &exc)
+      {
+        std::cerr.rdbuf(cerr_buffer);
+        std::ostringstream reason;
+        exc.print_info(reason);
+        AssertThrow(false,
+                    ExcMessage(
+                      "The entry '" + entry + "' = '" + expression +
+                      "' cannot be evaluated; allowed is " + allowed +
+                      ". muparser says: " + Utilities::trim(reason.str())));
+      }
+    return function;
+  }
+
+  template std::unique_ptr<FunctionParser<2>>
+  parse_vector_function<2>(const std::string &,
+                           const std::string &,
+                           const bool);
+  template std::unique_ptr<FunctionParser<3>>
+  parse_vector_function<3>(const std::string &,
+                           const std::string &,
+                           const bool);
+} // namespace Contact

@@ -1,0 +1,448 @@
+/* Checkpoint and restart: everything a time step reads from the past, in
+   one binary file per process (Boost serialization), written to a temporary
+   name and renamed, so a run killed at any moment leaves either the
+   previous checkpoint or the new one, never half of one.
+
+   The file is a line naming the format, a line with the size and the
+   CRC-32 of the rest, and the rest: the shape of the discrete problem, the
+   entries of the .prm that define it, and the state. A damaged or
+   truncated file, or one of another problem, is refused by name.
+
+   The mesh, the matrices and the factorisation are not stored: they follow
+   from the .prm deterministically and are rebuilt on --resume, which then
+   continues with bitwise the same numbers as the uninterrupted run
+   (tests/verification/kill_and_resume). */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/crc.hpp>
+#include <boost/serialization/map.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <core/contact_problem.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace Contact
+{
+  namespace
+  {
+    const std::string checkpoint_format = "contact checkpoint 6";
+
+    std::uint32_t crc32(const std::string &bytes)
+    {
+      boost::crc_32_type crc;
+      crc.process_bytes(bytes.data(), bytes.size());
+      return crc.checksum();
+    }
+
+    // What a resumed run may change without changing the discrete problem
+    // (README, 'When a run fails'): the end and the solver, and the output
+    // except the probes, the time series and the Gamma_3 history, whose
+    // rows and columns must continue.
+    // k itself is part of the checkpoint's shape.
+    bool may_change_on_resume(const std::string &entry)
+    {
+      if (entry == Entry::probe_points || entry == Entry::time_series ||
+          entry == Entry::gamma3_history)
+        return false;
+      return entry.rfind("Output/", 0) == 0 || entry.rfind("Solver/", 0) == 0 ||
+             entry == Entry::end_time || entry == Entry::time_step ||
+             entry == Entry::max_steps;
+    }
+
+    // 'Section/Entry' -> value for the entries of the .prm (its ShortPRM
+    // print) that define the discrete problem.
+    std::map<std::string, std::string>
+    problem_entries(const std::string &used_parameters)
+    {
+      std::map<std::string, std::string> entries;
+      std::vector<std::string>           sections;
+      std::istringstream                 in(used_parameters);
+      for (std::string line; std::getline(in, line);)
+        {
+          line = Utilities::trim(line);
+          if (line.rfind("subsection ", 0) == 0)
+            sections.push_back(Utilities::trim(line.substr(11)));
+          else if (line == "end" && !sections.empty())
+            sections.pop_back();
+          else if (line.rfind("set ", 0) == 0 &&
+                   line.find('=') != std::string::npos)
+            {
+              std::string entry;
+              for (const std::string &section : sections)
+                entry += section + "/";
+              const std::size_t equal = line.find('=');
+              entry += Utilities::trim(line.substr(4, equal - 4));
+              std::string value = Utilities::trim(line.substr(equal + 1));
+              // The same mesh file however the .prm's path was typed.
+              std::error_code unresolved;
+              if (entry == Entry::mesh_file && !value.empty())
+                {
+                  const auto path =
+                    std::filesystem::weakly_canonical(value, unresolved);
+                  if (!unresolved)
+                    value = path.string();
+                }
+              if (!may_change_on_resume(entry))
+                entries[entry] = value;
+            }
+        }
+      return entries;
+    }
+
+    // The entries whose values differ, 'entry: checkpoint a, now b'.
+    std::string
+    differing_entries(const std::map<std::string, std::string> &stored,
+                      const std::map<std::string, std::string> &now)
+    {
+      std::string text;
+      const auto  value = [](const auto &entries, const std::string &entry) {
+        const auto found = entries.find(entry);
+        return found == entries.end() ? std::string("(not set)") :
+                                         "'" + found->second + "'";
+      };
+      std::map<std::string, std::string> all(stored);
+      all.insert(now.begin(), now.end());
+      for (const auto &[entry, unused] : all)
+        if (value(stored, entry) != value(now, entry))
+          text += "\n  " + entry + ": " + value(stored, entry) +
+                  " in the checkpoint, " + value(now, entry) + " now";
+      return text;
+    }
+
+    template <class Archive>
+    void serialize_vector(Archive &archive, VectorType &vector)
+    {
+      std::vector<double> values(vector.begin(), vector.end());
+      archive            &values;
+      AssertThrow(values.size() == vector.locally_owned_size(),
+                  ExcInternalError());
+      std::copy(values.begin(), values.end(), vector.begin());
+    }
+  } // namespace
+
+
+  // @sect4{ContactProblem::serialize_checkpoint_state}
+
+  // Everything a step reads from the past, in one function that reads or
+  // writes depending on the archive, so the two directions cannot differ.
+  template <int dim>
+  template <class Archive>
+  void ContactProblem<dim>::serialize_checkpoint_state(Archive &archive)
+  {
+    archive &step_number &time;
+    for (VectorType *vector : {&displacement,
+                               &velocity,
+                               &mass_times_velocity,
+                               &elasticity_times_displacement})
+      serialize_vector(archive, *vector);
+    // Member by member, as before the state was a struct of its own (the
+    // format stays that of the name above).
+    FrictionState friction_state = friction_solver->state();
+    friction_state.serialize(archive, 0);
+    friction_solver->set_state(friction_state);
+    archive &energy &energy_by_quadrature &largest_checks;
+    archive &totals.convexification_iterations &totals.active_set_iterations;
+    archive &totals.rejected_accelerations &totals.cycles_cured;
+    archive &totals.step_cuts &totals.newton_iterations;
+    archive &totals.newton_fallbacks &totals.solves_with_K;
+    archive                          &totals.cg_iterations;
+    for (ErrorNorms *errors : {&current_errors, &max_errors})
+      archive & errors->displacement_V & errors->velocity_L2 &
+        errors->displacement_L2;
+    archive &pvd_records &pending_report_times &slip_onset;
+  }
+
+
+  // @sect4{ContactProblem::checkpoint_shape}
+
+  // What identifies the discrete problem a checkpoint belongs to (k to all
+  // digits), as stored in it and shown when it does not match.
+  template <int dim>
+  std::string ContactProblem<dim>::checkpoint_shape() const
+  {
+    std::ostringstream text;
+    text << dim << "D, " << dof_handler.n_dofs() << " unknowns, "
+         << friction_solver->boundary().nodes.size() << " nodes on Gamma_3, "
+         << Utilities::MPI::n_mpi_processes(mpi_communicator)
+         << " process(es), k = " << std::setprecision(17) << time_step << ", "
+         << probes.size() << " probe(s)"
+         << (exact_solution ? ", manufactured solution" : "");
+    return text.str();
+  }
+
+
+  // @sect4{ContactProblem::checkpoint_name}
+
+  template <int dim>
+  std::string ContactProblem<dim>::checkpoint_name() const
+  {
+    std::string name = parameters.output.directory + "/checkpoint";
+    if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+      name += "." + Utilities::int_to_string(
+                      Utilities::MPI::this_mpi_process(mpi_communicator));
+    return name;
+  }
+
+
+  // @sect4{ContactProblem::require_checkpoint}
+
+  // Checked before anything is computed or written.
+  template <int dim>
+  void ContactProblem<dim>::require_checkpoint() const
+  {
+    const std::string &directory = parameters.output.directory;
+    const unsigned int n_processes =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    std::string other;
+    if (n_processes > 1 && std::filesystem::exists(directory + "/checkpoint"))
+      other = " There is one written by 1 process ('" + directory +
+              "/checkpoint'): resume it with one process.";
+    else if (n_processes == 1 &&
+             std::filesystem::exists(directory + "/checkpoint.0"))
+      other = " There is one written by several processes ('" + directory +
+              "/checkpoint.0', ...): resume it with as many processes.";
+    AssertThrow(std::filesystem::exists(checkpoint_name()),
+                ExcMessage("'" + Entry::resume +
+                           "' (--resume): there is no "
+                           "checkpoint '" +
+                           checkpoint_name() + "' for a run on " +
+                           std::to_string(n_processes) + " process(es)." +
+                           other +
+                           " Checkpoints are written with "
+                           "'" +
+                           Entry::checkpoint_interval +
+                           "' or "
+                           "'" +
+                           Entry::checkpoint_minutes +
+                           "' into the output "
+                           "directory."));
+  }
+
+
+  // @sect4{ContactProblem::checkpoint_due}
+
+  // Every 'Checkpoint interval' steps, when 'Checkpoint minutes' have
+  // passed, and at the end (so that a finished run can be extended). The
+  // processes agree on the wall time criterion through a reduction.
+  template <int dim>
+  bool ContactProblem<dim>::checkpoint_due() const
+  {
+    const auto &output = parameters.output;
+    if (output.checkpoint_interval == 0 && output.checkpoint_minutes == 0)
+      return false;
+    const bool late =
+      output.checkpoint_minutes > 0 &&
+      checkpoint_timer.wall_time() >= 60. * output.checkpoint_minutes;
+    return step_number == n_time_steps ||
+           (output.checkpoint_interval > 0 &&
+            step_number % output.checkpoint_interval == 0) ||
+           Utilities::MPI::max(late ? 1 : 0, mpi_communicator) == 1;
+  }
+
+
+  // @sect4{ContactProblem::save_checkpoint}
+
+  template <int dim>
+  void ContactProblem<dim>::save_checkpoint()
+  {
+    // The checkpoint lists the VTU records written so far.
+    finish_vtu();
+    TimerOutput::Scope t(computing_timer, "Checkpoint");
+    const std::string  name = checkpoint_name();
+    std::ostringstream payload(std::ios::binary);
+    {
+      boost::archive::binary_oarchive    archive(payload);
+      std::string                        shape = checkpoint_shape();
+      std::map<std::string, std::string> entries =
+        problem_entries(parameters.used_parameters);
+      archive &shape &entries;
+      serialize_checkpoint_state(archive);
+    }
+    const std::string bytes = payload.str();
+    {
+      std::ofstream file(name + ".tmp", std::ios::binary);
+      file << checkpoint_format << '\n'
+           << bytes.size() << ' ' << crc32(bytes) << '\n';
+      file.write(bytes.data(), bytes.size());
+      file.flush();
+      AssertThrow(file,
+                  ExcMessage("Cannot write the checkpoint '" + name +
+                             ".tmp': " + std::strerror(errno) + "."));
+    }
+    // Every process's new checkpoint is complete before any replaces its
+    // old one, so a job killed in between leaves one set of checkpoints of
+    // one step (of the old or the new one per process; load_checkpoint
+    // refuses a set of different steps).
+    const int ierr = MPI_Barrier(mpi_communicator);
+    AssertThrowMPI(ierr);
+    std::filesystem::rename(name + ".tmp", name);
+    checkpoint_timer.restart();
+  }
+
+
+  // @sect4{ContactProblem::load_checkpoint}
+
+  template <int dim>
+  void ContactProblem<dim>::load_checkpoint()
+  {
+    const std::string                  bytes = read_checkpoint_payload();
+    std::istringstream                 payload(bytes, std::ios::binary);
+    boost::archive::binary_iarchive    archive(payload);
+    std::string                        stored_shape;
+    std::map<std::string, std::string> stored_entries;
+    archive &stored_shape             &stored_entries;
+    const std::string                  name  = checkpoint_name();
+    const std::string                  shape = checkpoint_shape();
+    AssertThrow(stored_shape == shape,
+                ExcMessage("The checkpoint '" + name +
+                           "' belongs to another "
+                           "discrete problem (" +
+                           stored_shape + ") than this .prm gives (" + shape +
+                           "): resume with the scene, mesh, time step and "
+                           "number of processes of the checkpointed run."));
+    const std::string differences =
+      differing_entries(stored_entries,
+                        problem_entries(parameters.used_parameters));
+    AssertThrow(differences.empty(),
+                ExcMessage("The checkpoint '" + name +
+                           "' belongs to another problem: these entries "
+                           "differ from the checkpointed run's, and only "
+                           "'" +
+                           Entry::end_time +
+                           "', 'Solver/...' and most of "
+                           "'Output/...' may change on --resume:" +
+                           differences));
+
+    serialize_checkpoint_state(archive);
+    AssertThrow(Utilities::MPI::min(step_number, mpi_communicator) ==
+                  Utilities::MPI::max(step_number, mpi_communicator),
+                ExcMessage("The checkpoints of the processes in '" +
+                           parameters.output.directory +
+                           "' are of different steps (the job was killed "
+                           "while they were written): resume from a "
+                           "complete set, or start the run again without "
+                           "--resume."));
+    AssertThrow(step_number <= n_time_steps,
+                ExcMessage("The checkpoint is at step " +
+                           std::to_string(step_number) +
+                           ", beyond the end of this run (" +
+                           std::to_string(n_time_steps) + " steps): '" +
+                           Entry::end_time + "' is too small."));
+    pcout << "Resumed from the checkpoint at step " << step_number
+          << " (t = " << time << ")." << std::endl;
+    cut_output_back_to_checkpoint();
+    checkpoint_timer.restart();
+  }
+
+
+  // @sect4{ContactProblem::read_checkpoint_payload}
+
+  // The checkpoint's bytes after its two header lines, checked against the
+  // size and CRC-32 stored there.
+  template <int dim>
+  std::string ContactProblem<dim>::read_checkpoint_payload() const
+  {
+    const std::string name = checkpoint_name();
+    std::ifstream     file(name, std::ios::binary);
+    AssertThrow(file, ExcMessage("Cannot read the checkpoint '" + name + "'."));
+    std::string format;
+    std::getline(file, format);
+    AssertThrow(format == checkpoint_format,
+                ExcMessage("'" + name +
+                           "' is not a checkpoint this program "
+                           "reads: it does not begin with the line '" +
+                           checkpoint_format +
+                           "' (written by an older version, or damaged)."));
+    std::size_t   size     = 0;
+    std::uint32_t checksum = 0;
+    file >> size >> checksum;
+    file.get();
+    std::error_code error;
+    const auto      file_size = std::filesystem::file_size(name, error);
+    AssertThrow(file && !error &&
+                  file_size == static_cast<std::uintmax_t>(file.tellg()) + size,
+                ExcMessage("The checkpoint '" + name +
+                           "' is damaged: its size does not match its header "
+                           "(truncated?). Resume from another copy, or start "
+                           "the run again without --resume."));
+    std::string bytes(size, '\0');
+    file.read(bytes.data(), size);
+    AssertThrow(file && crc32(bytes) == checksum,
+                ExcMessage("The checkpoint '" + name +
+                           "' is damaged: its checksum does not match its "
+                           "contents. Resume from another copy, or start the "
+                           "run again without --resume."));
+    return bytes;
+  }
+
+
+  // @sect4{ContactProblem::cut_output_back_to_checkpoint}
+
+  // The killed run may have written rows and VTU records after its last
+  // checkpoint; the resumed run recomputes those steps, so the time series
+  // and the Gamma_3 history keep the rows up to the checkpoint's step and the
+  // PVD the records stored with it. Both are rewritten atomically.
+  template <int dim>
+  void ContactProblem<dim>::cut_output_back_to_checkpoint() const
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    const std::string &directory = parameters.output.directory;
+    for (const auto &[name, written] :
+         {std::make_pair(directory + "/time_series.csv",
+                         parameters.output.write_time_series),
+          std::make_pair(directory + "/gamma3_history.csv",
+                         parameters.output.write_gamma3_history)})
+      if (written && std::filesystem::exists(name))
+        {
+          std::ifstream in(name);
+          std::ofstream out(name + ".tmp");
+          std::string   line;
+          if (std::getline(in, line))
+            out << line << '\n';
+          while (std::getline(in, line) && in.good() && !line.empty())
+            {
+              const unsigned int step =
+                std::stoul(line.substr(0, line.find(',')));
+              if (step > step_number)
+                break;
+              out << line << '\n';
+            }
+          out.flush();
+          AssertThrow(out,
+                      ExcMessage("Cannot write '" + name +
+                                 ".tmp': " + std::strerror(errno) + "."));
+          std::filesystem::rename(name + ".tmp", name);
+        }
+    write_pvd();
+  }
+
+
+#define INSTANTIATE(dim)                                                     \
+  template std::string ContactProblem<dim>::checkpoint_name() const;         \
+  template std::string ContactProblem<dim>::checkpoint_shape() const;        \
+  template bool        ContactProblem<dim>::checkpoint_due() const;          \
+  template void        ContactProblem<dim>::require_checkpoint() const;      \
+  template void        ContactProblem<dim>::save_checkpoint();               \
+  template void        ContactProblem<dim>::load_checkpoint();               \
+  template std::string ContactProblem<dim>::read_checkpoint_payload() const; \
+  template void ContactProblem<dim>::cut_output_back_to_checkpoint() const;
+
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace Contact

@@ -1,0 +1,680 @@
+/* ---------------------------------------------------------------------
+ * A run to a target error ('Accuracy/Target error').
+ *
+ * The error of the scheme at T behaves as e(h, k) = E_h h^p + E_k k^q
+ * (Corollary 5.3, (5.26): p = q = 1 for smooth solutions and linear
+ * elements, p = 2 with quadratic ones; lower orders near singularities).
+ * Pilot runs measure the two terms separately on the scene as given (h =
+ * H, k = K): the runs with H, 2H and 4H at K give the space part and its
+ * order by Richardson extrapolation (error_estimate.cc), the runs with K,
+ * 2K and 4K at H the time part and its order, each for every element
+ * degree the scene allows (the time part once: it does not depend on the
+ * degree to leading order). The pilots' wall times fit a cost model
+ * a + b * unknowns * steps per degree. The program then chooses the degree,
+ * h = H / 2^m and k = T / N that minimise the predicted cost of the run
+ * with its error estimate, subject to a predicted error of half the
+ * target (the model is extrapolated from coarse runs), and runs it with
+ * its own estimate, which says whether the target was met.
+ * --------------------------------------------------------------------- */
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/table_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <core/contact_problem.h>
+#include <drivers/error_estimate.h>
+#include <drivers/reference_interpolation.h>
+#include <app/run.h>
+#include <drivers/target_error.h>
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+namespace Contact
+{
+  namespace
+  {
+    // The chosen run is predicted to have this fraction of the target: the
+    // model extrapolates from coarse runs (on the manufactured solution it
+    // predicted 0.7 times the largest error over time of a run with 14
+    // times the pilots' unknowns and 7.5 times their steps, whose worst
+    // time came earlier than the pilots could see).
+    constexpr double target_safety = 0.5;
+    // The finest run considered: h = H / 2^max_halvings.
+    constexpr unsigned int max_halvings = 6;
+    // A time step above 4K would extrapolate the time model beyond the
+    // pilots.
+    constexpr unsigned int max_time_factor = 4;
+
+    // @sect3{Pilots}
+
+    // A pilot, with its displacement at each of its steps on the mesh of
+    // the pilot with h = H and k = K of its degree.
+    struct Pilot
+    {
+      std::string  name;
+      unsigned int degree;
+      RunAtTimes   run;
+    };
+
+    double quantity_of(const RunSummary &summary, const std::string &name)
+    {
+      if (name == "V-norm of u")
+        return summary.displacement_V_norm;
+      for (const auto &[quantity, value] : summary.final_quantities)
+        if (quantity == name)
+          return value;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
+    // The error of one direction (h or k) at the pilots' H or K, with the
+    // order used to extrapolate it, from the three pilots f (H), m (2H)
+    // and c (4H) (or K, 2K, 4K): the estimate of error_estimate.cc for the
+    // target quantity, with the order kept within what the scheme can give
+    // (`max_order`) and at least min_plausible_order (a note says when it
+    // was not).
+    struct DirectionFit
+    {
+      double      error = 0;
+      double      order = 0;
+      std::string note;
+    };
+
+    template <int dim>
+    DirectionFit fit_direction(const ContactProblem<dim> &base,
+                               const Pilot               &f,
+                               const Pilot               &m,
+                               const Pilot               &c,
+                               const std::string         &quantity,
+                               const double               max_order)
+    {
+      const auto difference = [&](const VectorType &a, const VectorType &b) {
+        VectorType d(a);
+        d -= b;
+        return base.strain_norm(d);
+      };
+      // The largest error over time: the error at T, times the largest
+      // ratio of the difference at a time that both runs share to that at T
+      // (the orders at earlier times come from fewer steps).
+      if (quantity == worst_V_error)
+        {
+          DirectionFit fit =
+            fit_direction(base, f, m, c, "V-norm of u", max_order);
+          const double at_T =
+            difference(f.run.displacement, m.run.displacement);
+          const auto ratio = static_cast<std::size_t>(
+            std::lround(m.run.summary.time_step / f.run.summary.time_step));
+          double largest = at_T;
+          for (std::size_t i = 0; i < m.run.history.size() &&
+                                  (i + 1) * ratio <= f.run.history.size();
+               ++i)
+            largest = std::max(largest,
+                               difference(f.run.history[(i + 1) * ratio - 1],
+                                          m.run.history[i]));
+          if (at_T > 0)
+            fit.error *= largest / at_T;
+          return fit;
+        }
+      const auto value = [&](const Pilot &pilot) {
+        return quantity_of(pilot.run.summary, quantity);
+      };
+      const bool               field = quantity == "V-norm of u";
+      const RichardsonEstimate V =
+        field_error_estimate(difference(f.run.displacement, m.run.displacement),
+                             difference(m.run.displacement, c.run.displacement),
+                             difference(f.run.displacement,
+                                        c.run.displacement));
+      const double d_fine =
+        field ? difference(f.run.displacement, m.run.displacement) :
+                value(f) - value(m);
+      const RichardsonEstimate estimate =
+        field ? V : scalar_error_estimate(d_fine, value(m) - value(c), V.order);
+      DirectionFit fit{estimate.error, estimate.order, estimate.warning};
+      if (!(estimate.order >= min_plausible_order) ||
+          estimate.order > max_order)
+        {
+          fit.order =
+            std::isfinite(estimate.order) ?
+              std::clamp(estimate.order, min_plausible_order, max_order) :
+              min_plausible_order;
+          // Without an order (differences that change sign, or a quantity
+          // equal on the two finer runs) the estimate's own error stays.
+          if (std::isfinite(estimate.order))
+            fit.error = std::abs(d_fine) / (std::pow(2., fit.order) - 1);
+          fit.note =
+            "measured order " + number_text(estimate.order) + " taken as " +
+            number_text(fit.order) +
+            (estimate.order > max_order ? " (the scheme gives at most that)" :
+                                          " (the least plausible one)");
+        }
+      return fit;
+    }
+
+    // What a degree's pilots say: the space part of the V-norm and of the
+    // target quantity, and the fit a + b x of their wall times against x =
+    // unknowns * steps.
+    struct DegreeModel
+    {
+      unsigned int            degree;
+      DirectionFit            space_V;
+      DirectionFit            space;
+      types::global_dof_index n_dofs = 0;
+      double                  a = 0, b = 1;
+    };
+
+    // Everything the pilots measured.
+    struct PilotResults
+    {
+      std::vector<Pilot>       pilots;
+      std::vector<DegreeModel> models;
+      DirectionFit             time_V;
+      DirectionFit             time;
+      // |quantity| on the first pilot, the scale of a relative target.
+      double size = 0;
+      // The cosine of the angle between the space and the time error
+      // (run_pilots_of_degree).
+      double cosine    = 1;
+      double wall_time = 0;
+    };
+
+    void fit_cost(DegreeModel              &model,
+                  const std::vector<Pilot> &pilots,
+                  const bool                measured)
+    {
+      if (!measured)
+        return;
+      // The first run of the process also loads what the libraries bind
+      // lazily: not a cost of its size.
+      double n = 0, sx = 0, st = 0, sxx = 0, sxt = 0;
+      for (const Pilot &pilot : pilots)
+        if (pilot.degree == model.degree && &pilot != &pilots.front())
+          {
+            const RunSummary &run = pilot.run.summary;
+            const double      x   = double(run.n_dofs) * run.n_steps;
+            const double      t   = run.wall_time;
+            n += 1, sx += x, st += t, sxx += x * x, sxt += x * t;
+          }
+      const double denominator = n * sxx - sx * sx;
+      model.b = denominator > 0 ? (n * sxt - sx * st) / denominator : 0;
+      model.a = (st - model.b * sx) / n;
+      // A fit that is not a fixed plus a proportional cost: proportional
+      // only, by least squares.
+      if (!(model.b > 0) || model.a < 0)
+        {
+          model.a = 0;
+          model.b = sxt / sxx;
+        }
+    }
+
+
+    // @sect3{The candidates}
+
+    struct Candidate
+    {
+      unsigned int            degree;
+      unsigned int            halvings;
+      unsigned int            n_steps;
+      types::global_dof_index n_dofs;
+      double                  predicted_error;
+      double                  predicted_cost;
+    };
+
+    // For h = H / 2^m the largest k = T / N (N a multiple of 4, for the
+    // estimate's runs with N / 2 and N / 4 steps) whose predicted error
+    // stays within the allowed one; the cost is that of the run and of its
+    // estimate's two coarse runs.
+    std::optional<Candidate> candidate(const DegreeModel  &model,
+                                       const DirectionFit &time,
+                                       const double        cosine,
+                                       const unsigned int  m,
+                                       const unsigned int  dim,
+                                       const double        end_time,
+                                       const double        K,
+                                       const double        allowed,
+                                       const unsigned int  max_steps)
+    {
+      const double space_error =
+        model.space.error * std::pow(2., -model.space.order * m);
+      if (!(space_error < allowed) || !std::isfinite(time.error))
+        return std::nullopt;
+      // The time error E_k that makes |e_h + e_k| = allowed:
+      // E_k^2 + 2 cosine E_h E_k + E_h^2 - allowed^2 = 0.
+      const double time_error_allowed =
+        -cosine * space_error +
+        std::sqrt(cosine * cosine * space_error * space_error +
+                  allowed * allowed - space_error * space_error);
+      double k = K * max_time_factor;
+      if (time.error > 0)
+        k = std::min(k,
+                     K * std::pow(time_error_allowed / time.error,
+                                  1. / time.order));
+      const double steps = 4 * std::ceil(end_time / k / 4 - 1e-9);
+      if (!(steps <= max_steps))
+        return std::nullopt;
+      const unsigned int n_steps =
+        std::max(static_cast<unsigned int>(steps), 4u);
+      const double n_dofs = double(model.n_dofs) * std::pow(2., dim * m);
+      const double work = n_dofs * (n_steps + std::pow(0.5, dim) * n_steps / 2 +
+                                    std::pow(0.25, dim) * n_steps / 4);
+      const double time_error =
+        time.error * std::pow(end_time / n_steps / K, time.order);
+      return Candidate{model.degree,
+                       m,
+                       n_steps,
+                       static_cast<types::global_dof_index>(n_dofs),
+                       combined_error(space_error, time_error, cosine),
+                       3 * model.a + model.b * work};
+    }
+
+
+    // @sect3{The report}
+
+    std::string pilot_table(const std::vector<Pilot> &pilots,
+                            const std::string        &quantity,
+                            const bool                timings)
+    {
+      const std::string shown =
+        quantity == worst_V_error ? "V-norm of u" : quantity;
+      TableHandler table;
+      for (const Pilot &pilot : pilots)
+        {
+          const RunSummary &run = pilot.run.summary;
+          table.add_value("pilot", pilot.name);
+          table.add_value("degree", pilot.degree);
+          table.add_value("h", run.cell_size);
+          table.add_value("k", run.time_step);
+          table.add_value("unknowns", run.n_dofs);
+          table.add_value("steps", run.n_steps);
+          table.add_value("V-norm of u at T", run.displacement_V_norm);
+          if (shown != "V-norm of u")
+            table.add_value(shown + " at T", quantity_of(run, shown));
+          if (timings)
+            table.add_value("wall time [s]", run.wall_time);
+        }
+      for (const std::string &column : std::vector<std::string>{
+             "h", "k", "V-norm of u at T", shown + " at T"})
+        {
+          table.set_scientific(column, true);
+          table.set_precision(column, 4);
+        }
+      if (timings)
+        table.set_precision("wall time [s]", 4);
+      std::ostringstream out;
+      table.write_text(out, TableHandler::TextOutputFormat::org_mode_table);
+      return out.str();
+    }
+
+    std::string
+    fit_text(const std::string &what, const DirectionFit &fit, const double at)
+    {
+      std::ostringstream out;
+      out << std::setprecision(3) << what << " " << fit.error << " at " << at
+          << ", order " << fit.order;
+      if (!fit.note.empty())
+        out << " (" << fit.note << ")";
+      return out.str();
+    }
+
+
+    // @sect3{Running the pilots}
+
+    // The pilots of one degree: H, 2H, 4H at K, and for the first degree
+    // also 2K and 4K at H (the time part, shared by the degrees).
+    template <int dim>
+    void
+    run_pilots_of_degree(ParameterHandler  &prm,
+                         const Parameters  &parameters,
+                         const unsigned int degree,
+                         const bool         with_time,
+                         PilotResults      &results,
+                         const std::function<void(const std::string &)> &print)
+    {
+      const std::string  &quantity = parameters.accuracy.target_quantity;
+      const unsigned int  N0       = parameters.time.n_steps();
+      std::vector<Pilot> &pilots   = results.pilots;
+      const std::size_t   first    = pilots.size();
+      std::unique_ptr<ContactProblem<dim>>         base;
+      std::unique_ptr<ReferenceInterpolation<dim>> interpolate;
+      // Every pilot keeps its state at each of its steps on the mesh of the
+      // first (N0 is a multiple of 4, parameters.cc).
+      const auto run = [&](const unsigned int space_factor,
+                           const unsigned int time_factor) {
+        const std::string name =
+          "pilot-q" + std::to_string(degree) + "-" +
+          (space_factor > 1 ? std::to_string(space_factor) : "") + "h-" +
+          (time_factor > 1 ? std::to_string(time_factor) : "") + "k";
+        print("Target error: pilot " + name);
+        auto problem = std::make_unique<ContactProblem<dim>>(
+          parameters_of_version(prm,
+                                parameters,
+                                {degree,
+                                 -static_cast<int>(space_factor / 2),
+                                 N0 / time_factor,
+                                 parameters.output.directory + "/" + name,
+                                 true}));
+        pilots.push_back(
+          {name, degree, run_onto(*problem, interpolate.get(), 1)});
+        // The cost model, and so the choice, must be the same on every
+        // process.
+        double &wall_time = pilots.back().run.summary.wall_time;
+        wall_time         = Utilities::MPI::max(wall_time, MPI_COMM_WORLD);
+        if (!base)
+          {
+            base        = std::move(problem);
+            interpolate = std::make_unique<ReferenceInterpolation<dim>>(*base);
+          }
+      };
+      run(1, 1);
+      run(2, 1);
+      run(4, 1);
+      const auto fit = [&](const std::size_t  medium,
+                           const std::size_t  coarse,
+                           const std::string &name,
+                           const double       max_order) {
+        return fit_direction(*base,
+                             pilots[first],
+                             pilots[first + medium],
+                             pilots[first + coarse],
+                             name,
+                             max_order);
+      };
+      // The V-norm converges with order `degree` in h at best, a value at a
+      // point or an integral with one more; the scheme is of first order in
+      // time ((5.26)).
+      const std::string V     = "V-norm of u";
+      const bool        field = quantity == V || quantity == worst_V_error;
+      results.models.push_back({degree,
+                                fit(1, 2, V, degree),
+                                fit(1, 2, quantity, degree + (field ? 0 : 1)),
+                                pilots[first].run.summary.n_dofs});
+      if (!with_time)
+        return;
+      run(1, 2);
+      run(1, 4);
+      results.time_V        = fit(3, 4, V, 1.);
+      results.time          = fit(3, 4, quantity, 1.);
+      const RunAtTimes &own = pilots[first].run;
+      results.size          = std::abs(quantity_of(own.summary, quantity));
+      if (quantity == worst_V_error)
+        {
+          results.size = own.summary.displacement_V_norm;
+          for (const VectorType &u : own.history)
+            results.size = std::max(results.size, base->strain_norm(u));
+        }
+      // How the space and the time error of the V-norm combine: the angle
+      // between what doubling h and what doubling k changes. A quantity's
+      // two errors add (they may cancel on the pilots and not later).
+      const auto norm = [&](const std::size_t a, const std::size_t b) {
+        VectorType d(pilots[first + a].run.displacement);
+        d -= pilots[first + b].run.displacement;
+        return base->strain_norm(d);
+      };
+      const double s = norm(0, 1), t = norm(0, 3), across = norm(3, 1);
+      if (field && s > 0 && t > 0)
+        results.cosine =
+          std::clamp((s * s + t * t - across * across) / (2 * s * t), 0., 1.);
+    }
+
+    template <int dim>
+    PilotResults
+    run_pilots(ParameterHandler                               &prm,
+               const Parameters                               &parameters,
+               const std::function<void(const std::string &)> &print)
+    {
+      Timer timer;
+      // Quadratic elements on tetrahedra have no nodal friction weights
+      // (parameters.cc): there only degree 1.
+      std::vector<unsigned int> degrees = {2, 1};
+      if (dim == 3 && parameters.geometry.simplex_cells &&
+          parameters.friction.law != FrictionParameters::Law::none)
+        degrees = {1};
+      PilotResults results;
+      for (const unsigned int degree : degrees)
+        run_pilots_of_degree<dim>(
+          prm, parameters, degree, degree == degrees.front(), results, print);
+      for (DegreeModel &model : results.models)
+        fit_cost(model, results.pilots, parameters.accuracy.measured_cost);
+      results.wall_time = timer.wall_time();
+      return results;
+    }
+
+
+    // @sect3{The choice}
+
+    // Per degree the cheapest candidate, with a line on what its pilots
+    // say; the cheapest of them.
+    std::optional<Candidate> choose(const PilotResults &results,
+                                    const Parameters   &parameters,
+                                    const unsigned int  dim,
+                                    const double        target,
+                                    std::ostream       &out)
+    {
+      const bool   measured = parameters.accuracy.measured_cost;
+      const bool   timings  = parameters.output.print_timings;
+      const double K = parameters.time.end_time / parameters.time.n_steps();
+      const double allowed = target_safety * target;
+      std::optional<Candidate> chosen;
+      for (const DegreeModel &model : results.models)
+        {
+          std::optional<Candidate> best;
+          for (unsigned int m = 0; m <= max_halvings; ++m)
+            if (const auto c = candidate(model,
+                                         results.time,
+                                         results.cosine,
+                                         m,
+                                         dim,
+                                         parameters.time.end_time,
+                                         K,
+                                         allowed,
+                                         parameters.time.max_steps))
+              if (!best || c->predicted_cost < best->predicted_cost)
+                best = c;
+          out << "Degree " << model.degree << ": "
+              << fit_text("space error E_h",
+                          model.space,
+                          results.pilots.front().run.summary.cell_size);
+          if (measured && timings)
+            out << "; cost " << model.a << " s + " << model.b
+                << " s * unknowns * steps";
+          if (best)
+            {
+              out << "; cheapest run predicted within " << allowed << ": h = H/"
+                  << (1u << best->halvings) << ", k = T/" << best->n_steps
+                  << ", about " << best->n_dofs << " unknowns, predicted error "
+                  << best->predicted_error;
+              if (!measured)
+                out << ", " << best->predicted_cost << " unknowns * steps";
+              else if (timings)
+                out << ", predicted " << best->predicted_cost << " s";
+            }
+          else
+            out << "; no run up to h = H/" << (1u << max_halvings)
+                << " is predicted within " << allowed;
+          out << std::endl;
+          if (best &&
+              (!chosen || best->predicted_cost < chosen->predicted_cost))
+            chosen = best;
+        }
+      return chosen;
+    }
+
+
+    // @sect3{The report}
+
+    std::string pilots_report(const PilotResults &results,
+                              const Parameters   &parameters,
+                              const double        target)
+    {
+      const auto        &accuracy = parameters.accuracy;
+      const std::string &quantity = accuracy.target_quantity;
+      const double K = parameters.time.end_time / parameters.time.n_steps();
+      std::ostringstream out;
+      out << std::setprecision(3) << "Target error: " << quantity << " within "
+          << target;
+      if (accuracy.target_is_relative)
+        out << " (" << accuracy.target_error << " times its size "
+            << results.size << ")";
+      out << "; pilots on H = " << results.pilots.front().run.summary.cell_size
+          << ", K = " << K << ":" << std::endl
+          << pilot_table(results.pilots,
+                         quantity,
+                         parameters.output.print_timings)
+          << "Time error: " << fit_text("E_k", results.time, K);
+      if (results.cosine < 1)
+        out << "; space and time errors combine as |e_h + e_k|^2 = E_h^2 + "
+            << "E_k^2 + 2 c E_h E_k with c = " << results.cosine;
+      out << std::endl;
+      return out.str();
+    }
+
+    std::string chosen_report(const Parameters   &parameters,
+                              const Candidate    &chosen,
+                              const EstimatedRun &result,
+                              const double        target)
+    {
+      const std::string &quantity  = parameters.accuracy.target_quantity;
+      double             estimated = std::numeric_limits<double>::quiet_NaN();
+      for (const EstimateRow &row : result.rows)
+        if (row.name == quantity)
+          estimated = row.estimate.error;
+      const RunSummary  &run = result.summary;
+      std::ostringstream out;
+      out << std::setprecision(3) << "Target error " << target << " for "
+          << quantity << ": chosen degree " << chosen.degree
+          << ", h = " << run.cell_size << ", k = " << run.time_step << " ("
+          << run.n_dofs << " unknowns, " << run.n_steps
+          << " steps); predicted error " << chosen.predicted_error
+          << ", estimated error " << estimated << " (error_estimate.txt)"
+          << std::endl;
+      if (!(estimated <= target))
+        out << "Warning: the estimated error of the chosen run is above the "
+            << "target: the pilots were not in the asymptotic range (see the "
+            << "warnings of the estimate); run with a smaller '"
+            << Entry::cell_size << "' and '" << Entry::time_step << "'."
+            << std::endl;
+      if (parameters.verification.manufactured_solution)
+        out << std::setprecision(4) << "Exact max V-error of the chosen run: "
+            << run.max_errors.displacement_V
+            << " (at T: " << run.final_errors.displacement_V << ")"
+            << std::endl;
+      return out.str();
+    }
+  } // namespace
+
+
+  // @sect3{run_to_target}
+
+  template <int dim>
+  void run_to_target(ParameterHandler &prm, const Parameters &parameters)
+  {
+    Timer              timer;
+    const std::string &directory = parameters.output.directory;
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    std::ostringstream text;
+    const auto         print = [&](const std::string &lines) {
+      text << lines;
+      if (root)
+        std::cout << lines << std::flush;
+    };
+    // The lock of the whole target run; the chosen run shares it.
+    const auto lock = lock_output_directory(directory, MPI_COMM_WORLD);
+    // Nothing of an earlier run stays next to the pilots: if no run
+    // reaches the target, the directory holds the pilots only.
+    remove_results(directory, false, MPI_COMM_WORLD);
+
+    const PilotResults pilots =
+      run_pilots<dim>(prm, parameters, [&](const std::string &line) {
+        print(line + "\n");
+      });
+    const auto &accuracy = parameters.accuracy;
+    AssertThrow(std::isfinite(pilots.size) && std::isfinite(pilots.time.error),
+                ExcMessage("Entry '" + Entry::target_quantity + "' = '" +
+                           accuracy.target_quantity +
+                           "' is not defined on the pilots (e.g. no slip "
+                           "zone, or no node on Gamma_3): choose a quantity "
+                           "that this scene has."));
+    AssertThrow(pilots.size > 0 || !accuracy.target_is_relative,
+                ExcMessage("Entry '" + Entry::target_error_type +
+                           "' = relative: the size of '" +
+                           accuracy.target_quantity +
+                           "' is 0 on the pilots; give an absolute target."));
+    const double target = accuracy.target_is_relative ?
+                            accuracy.target_error * pilots.size :
+                            accuracy.target_error;
+    print("\n" + pilots_report(pilots, parameters, target));
+    std::ostringstream choice;
+    choice << std::setprecision(3);
+    const std::optional<Candidate> chosen =
+      choose(pilots, parameters, dim, target, choice);
+    print(choice.str());
+    AssertThrow(chosen,
+                ExcMessage("Entry '" + Entry::target_error +
+                           "' = " + number_text(accuracy.target_error) +
+                           ": the pilots predict an error above the target "
+                           "for every degree up to h = H/" +
+                           std::to_string(1u << max_halvings) + " and '" +
+                           Entry::max_steps +
+                           "' = " + std::to_string(parameters.time.max_steps) +
+                           " steps (see the lines above). Ask for a larger "
+                           "target, or start from a smaller '" +
+                           Entry::cell_size + "' and '" + Entry::time_step +
+                           "' if the pilots are not yet in the asymptotic "
+                           "range."));
+
+    print("Target error: the chosen run, degree " +
+          std::to_string(chosen->degree) + ", h = H/" +
+          std::to_string(1u << chosen->halvings) + ", k = T/" +
+          std::to_string(chosen->n_steps) + ", with its error estimate\n");
+    // Its estimate extrapolates with the orders that the pilots measured.
+    KnownOrders orders;
+    for (const DegreeModel &model : pilots.models)
+      if (model.degree == chosen->degree)
+        {
+          orders[accuracy.target_quantity] = {
+            model.space.order,
+            pilots.time.order,
+            accuracy.target_quantity == worst_V_error ? pilots.cosine : 1.};
+          orders["V-norm of u"] = {model.space_V.order,
+                                   pilots.time_V.order,
+                                   pilots.cosine};
+        }
+    const Timer        chosen_timer;
+    const EstimatedRun result = run_with_error_estimate<dim>(
+      prm,
+      parameters_of_version(prm,
+                            parameters,
+                            {chosen->degree,
+                             static_cast<int>(chosen->halvings),
+                             chosen->n_steps,
+                             directory,
+                             false}),
+      orders);
+    print("\n" + chosen_report(parameters, *chosen, result, target));
+    if (parameters.output.print_timings)
+      {
+        std::ostringstream times;
+        times << std::setprecision(3) << "Wall time: pilots "
+              << pilots.wall_time << " s, the chosen run with its estimate "
+              << chosen_timer.wall_time() << " s, total " << timer.wall_time()
+              << " s" << std::endl;
+        print(times.str());
+      }
+    if (root)
+      {
+        std::ofstream file(directory + "/target.txt");
+        file << text.str();
+        AssertThrow(file.good(),
+                    ExcMessage("Cannot write '" + directory + "/target.txt'."));
+      }
+  }
+
+
+  template void run_to_target<2>(ParameterHandler &, const Parameters &);
+  template void run_to_target<3>(ParameterHandler &, const Parameters &);
+} // namespace Contact

@@ -1,0 +1,680 @@
+/* Gamma_3 seen from the body (the maps C and C^T) and the three paths of
+   'Solver/Contact solver' between the body and the friction problem on
+   Gamma_3 (friction_solver.h). */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
+#include <gamma3/delassus_operator.h>
+#include <gamma3/friction_solver.h>
+
+#include <Epetra_CrsMatrix.h>
+
+#include <deque>
+#include <string>
+#include <utility>
+
+namespace Contact
+{
+  // @sect3{ContactBoundary: the maps C and C^T}
+
+  template <int dim>
+  unsigned int ContactBoundary<dim>::n_unknowns() const
+  {
+    return nodes.size() * (dim - 1);
+  }
+
+
+  template <int dim>
+  double ContactBoundary<dim>::tangential_velocity(const ContactNode<dim> &node,
+                                                   const unsigned int direction,
+                                                   const VectorType  &w) const
+  {
+    double v = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      v += node.tangents[direction][d] * w[node.dofs[d]];
+    return v;
+  }
+
+
+  // C w: all tangential components on Gamma_3, node-major, on every
+  // process (each fills in the nodes it owns).
+  template <int dim>
+  Vector<double>
+  ContactBoundary<dim>::tangential_velocities(const VectorType &w) const
+  {
+    Vector<double> v(n_unknowns());
+    for (unsigned int p = 0; p < nodes.size(); ++p)
+      if (nodes[p].locally_owned)
+        for (unsigned int i = 0; i < dim - 1; ++i)
+          v[p * (dim - 1) + i] = tangential_velocity(nodes[p], i, w);
+    return sum_over_processes(v);
+  }
+
+
+  // The sum of every process's part of a vector on Gamma_3; all processes
+  // get the sum.
+  template <int dim>
+  Vector<double>
+  ContactBoundary<dim>::sum_over_processes(const Vector<double> &part) const
+  {
+    if (Utilities::MPI::n_mpi_processes(mpi_communicator) == 1)
+      return part;
+    Vector<double> sum(part.size());
+    Utilities::MPI::sum(make_array_view(part),
+                        mpi_communicator,
+                        make_array_view(sum));
+    return sum;
+  }
+
+
+  // C^T eta: the nodal friction forces eta_p = sum_i eta_{p,i} t_i as a
+  // load on the body, condensed with the constraints like every load.
+  template <int dim>
+  VectorType
+  ContactBoundary<dim>::friction_load(const Vector<double> &eta) const
+  {
+    VectorType load(locally_owned_dofs, mpi_communicator);
+    for (unsigned int p = 0; p < nodes.size(); ++p)
+      add_nodal_force(nodes[p], nodes[p].tangential_vector(eta, p), load);
+    load.compress(VectorOperation::add);
+    return load;
+  }
+
+
+  // A force at a node of Gamma_3 added to a load vector (condensed), by the
+  // process that owns the node; compress(add) follows.
+  template <int dim>
+  void ContactBoundary<dim>::add_nodal_force(const ContactNode<dim> &node,
+                                             const Tensor<1, dim>   &force,
+                                             VectorType             &load) const
+  {
+    if (!node.locally_owned || force.norm_square() == 0.)
+      return;
+    std::vector<types::global_dof_index> node_dofs(node.dofs.begin(),
+                                                   node.dofs.end());
+    Vector<double>                       node_force(dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      node_force[d] = force[d];
+    constraints.distribute_local_to_global(node_force, node_dofs, load);
+  }
+
+
+  namespace
+  {
+    // @sect3{The Delassus paths}
+
+    // What both Delassus paths do on Gamma_3 alone: v = v_free - D eta and
+    // the Newton steps of DelassusOperator, for the step's v_free.
+    template <int dim>
+    class DelassusPath : public ContactPath<dim>
+    {
+    public:
+      void velocity_of_force(const Vector<double> &eta,
+                             Vector<double>       &v) override
+      {
+        delassus.vmult(v, eta);
+        v.sadd(-1., 1., v_free);
+      }
+
+      void newton_step(const std::vector<NodeLinearisation> &linearisation,
+                       Vector<double>                       &eta,
+                       Vector<double>                       &v) override
+      {
+        delassus.newton_step(linearisation, v_free, eta, v);
+      }
+
+      void apply_delassus(const Vector<double> &x, Vector<double> &y) override
+      {
+        delassus.vmult(y, x);
+      }
+
+      // Formed by begin_step(): every Newton step on D needs it.
+      const Vector<double> &free_slip_velocity() override
+      {
+        return v_free;
+      }
+
+    protected:
+      DelassusOperator delassus;
+      Vector<double>   v_free;
+    };
+
+
+    // @sect3{The Delassus operator from the triangular factor of K}
+
+    // The friction forces act on the body through C^T eta, and the velocity
+    // of a step is
+    //   w_n = K^{-1} (step_rhs - C^T eta),
+    //   step_rhs = F_n + (1/k) M w_{n-1} - B u_{n-1},
+    // so on Gamma_3 v = C w_n = v_free - D eta with the Delassus operator
+    // D = C K^{-1} C^T, symmetric positive definite: the nonsmooth part of
+    // every step lives on the few unknowns of Gamma_3 (doc/algorithm.md).
+    //
+    // With CHOLMOD's K = P^T L L^T P and Y = L^{-1} P C^T,
+    //   D = Y^T Y,  v_free = Y^T y,  w_n = P^T L^{-T} (y - Y eta),
+    // where y = L^{-1} P step_rhs: a step is one forward substitution, the
+    // friction problem, and one backward substitution, i.e. one solve. Y is
+    // sparse (column p is nonzero only on the elimination tree path from
+    // node p's dofs to the root, a few separators), unlike K^{-1} C^T,
+    // which is dense; it is stored transposed, as a sparse matrix with one
+    // row per tangential unknown of Gamma_3.
+    template <int dim>
+    class DelassusFromFactor : public DelassusPath<dim>
+    {
+    public:
+      DelassusFromFactor(const ContactBoundary<dim> &boundary,
+                         Factorization              &factorization_of_K)
+        : gamma3(boundary)
+        , factorization(factorization_of_K)
+      {
+        const unsigned int n_columns = gamma3.n_unknowns();
+        const unsigned int block     = 64;
+        std::vector<std::vector<std::pair<unsigned int, double>>> columns_of_Y(
+          n_columns);
+        Vector<double> unit(n_columns);
+        for (unsigned int first = 0; first < n_columns; first += block)
+          {
+            const unsigned int      size = std::min(block, n_columns - first);
+            std::vector<VectorType> loads(size);
+            std::vector<Vector<double>> columns;
+            for (unsigned int c = 0; c < size; ++c)
+              {
+                unit[first + c] = 1.;
+                loads[c]        = gamma3.friction_load(unit);
+                unit[first + c] = 0.;
+              }
+            factorization.forward_substitution(columns, loads);
+            for (unsigned int c = 0; c < size; ++c)
+              for (unsigned int row = 0; row < columns[c].size(); ++row)
+                if (columns[c][row] != 0.)
+                  columns_of_Y[first + c].emplace_back(row, columns[c][row]);
+          }
+
+        const unsigned int n_rows = gamma3.locally_owned_dofs.n_elements();
+        {
+          DynamicSparsityPattern pattern(n_columns, n_rows);
+          for (unsigned int s = 0; s < n_columns; ++s)
+            for (const auto &entry : columns_of_Y[s])
+              pattern.add(s, entry.first);
+          factor_pattern.copy_from(pattern);
+        }
+        Y_transposed.reinit(factor_pattern);
+        for (unsigned int s = 0; s < n_columns; ++s)
+          for (const auto &[row, value] : columns_of_Y[s])
+            Y_transposed.set(s, row, value);
+
+        // D = Y^T Y, each entry once, so D is exactly symmetric.
+        FullMatrix<double> D(n_columns, n_columns);
+        Vector<double>     column(n_rows);
+        for (unsigned int s = 0; s < n_columns; ++s)
+          {
+            for (const auto &[row, value] : columns_of_Y[s])
+              column[row] = value;
+            for (unsigned int r = 0; r <= s; ++r)
+              {
+                double entry = 0;
+                for (const auto &[row, value] : columns_of_Y[r])
+                  entry += value * column[row];
+                D(r, s) = D(s, r) = entry;
+              }
+            for (const auto &[row, value] : columns_of_Y[s])
+              column[row] = 0.;
+          }
+        this->delassus = DelassusOperator(D, dim - 1);
+      }
+
+      void begin_step(const VectorType &step_rhs, const VectorType &) override
+      {
+        Timer substitution;
+        this->solves = 1;
+        factorization.forward_substitution(y, {step_rhs});
+        this->substitution_seconds = substitution.wall_time();
+        this->v_free.reinit(gamma3.n_unknowns());
+        Y_transposed.vmult(this->v_free, y[0]);
+      }
+
+
+      void velocity(const Vector<double> &eta, VectorType &w) override
+      {
+        Vector<double> minus_eta(eta);
+        minus_eta *= -1.;
+        Y_transposed.Tvmult_add(y[0], minus_eta);
+        Timer substitution;
+        factorization.backward_substitution(w, y[0]);
+        this->substitution_seconds += substitution.wall_time();
+        gamma3.constraints.distribute(w);
+      }
+
+
+      std::string description() const override
+      {
+        return "Delassus operator on the " +
+               std::to_string(gamma3.n_unknowns()) +
+               " tangential unknowns of Gamma_3, from the triangular factor "
+               "of K";
+      }
+
+    private:
+      const ContactBoundary<dim> &gamma3;
+      Factorization              &factorization;
+      SparsityPattern             factor_pattern;
+      SparseMatrix<double>        Y_transposed;
+      // The step's forward substitution y (v_free = Y^T y).
+      std::vector<Vector<double>> y;
+    };
+
+
+    // @sect3{The Delassus operator from the columns of K^{-1} C^T}
+
+    // Without a triangular factor (Amesos solvers, several processes), D
+    // comes from the columns of Z = K^{-1} C^T, one solve each, kept as one
+    // dense block over the locally owned unknowns: a step is then one solve
+    // for w_free, the friction problem on Gamma_3 with v_free = C w_free,
+    // and w_n = w_free - Z eta, one gemv (doc/algorithm.md).
+    template <int dim>
+    class DelassusFromSolves : public DelassusPath<dim>
+    {
+    public:
+      DelassusFromSolves(const ContactBoundary<dim> &boundary,
+                         Factorization              &factorization_of_K)
+        : gamma3(boundary)
+        , factorization(factorization_of_K)
+      {
+        const unsigned int n_columns = gamma3.n_unknowns();
+        Z.reinit(gamma3.locally_owned_dofs.n_elements(), n_columns);
+        FullMatrix<double> D(n_columns, n_columns);
+        Vector<double>     unit(n_columns);
+        VectorType column(gamma3.locally_owned_dofs, gamma3.mpi_communicator);
+        for (unsigned int s = 0; s < n_columns; ++s)
+          {
+            unit[s] = 1.;
+            factorization.solve(column, gamma3.friction_load(unit));
+            unit[s] = 0.;
+            gamma3.constraints.distribute(column);
+            const Vector<double> v = gamma3.tangential_velocities(column);
+            for (unsigned int r = 0; r < n_columns; ++r)
+              D(r, s) = v[r];
+            unsigned int row = 0;
+            for (const double value : column)
+              Z(row++, s) = value;
+          }
+        make_symmetric(D);
+        this->delassus = DelassusOperator(D, dim - 1);
+      }
+
+      void begin_step(const VectorType &step_rhs,
+                      const VectorType &last_velocity) override
+      {
+        Timer substitution;
+        this->solves  = 1;
+        free_velocity = last_velocity;
+        factorization.solve(free_velocity, step_rhs);
+        this->substitution_seconds = substitution.wall_time();
+        gamma3.constraints.distribute(free_velocity);
+        this->v_free = gamma3.tangential_velocities(free_velocity);
+      }
+
+
+      // w -= Z eta on this process's unknowns (Z's columns are distributed
+      // already).
+      void velocity(const Vector<double> &eta, VectorType &w) override
+      {
+        w = free_velocity;
+        Vector<double> change(gamma3.locally_owned_dofs.n_elements());
+        Z.vmult(change, eta);
+        auto value = w.begin();
+        for (const double c : change)
+          *value++ -= c;
+      }
+
+
+      std::string description() const override
+      {
+        return "Delassus operator on the " +
+               std::to_string(gamma3.n_unknowns()) +
+               " tangential unknowns of Gamma_3, from Z = K^{-1} C^T";
+      }
+
+    private:
+      // D is symmetric up to the round-off of the solves; the active set
+      // method relies on it (Cholesky on the stick set), so it is made
+      // exactly symmetric after checking that nothing more than round-off
+      // is removed.
+      static void make_symmetric(FullMatrix<double> &D)
+      {
+        double asymmetry = 0, largest = 0;
+        for (unsigned int r = 0; r < D.m(); ++r)
+          {
+            largest = std::max(largest, D(r, r));
+            for (unsigned int s = 0; s < r; ++s)
+              {
+                const double mean = (D(r, s) + D(s, r)) / 2;
+                asymmetry = std::max(asymmetry, std::abs(D(r, s) - mean));
+                D(r, s) = D(s, r) = mean;
+              }
+          }
+        AssertThrow(asymmetry <= 1e-8 * largest,
+                    ExcMessage(
+                      "The Delassus operator C K^{-1} C^T is not "
+                      "symmetric beyond round-off (largest deviation " +
+                      std::to_string(asymmetry / largest) +
+                      " of its largest entry): the solves with K are "
+                      "not accurate enough for the Delassus path; "
+                      "choose '" +
+                      Entry::contact_solver + " = constraints'."));
+      }
+
+      const ContactBoundary<dim> &gamma3;
+      Factorization              &factorization;
+      LAPACKFullMatrix<double>    Z;
+      VectorType                  free_velocity;
+    };
+
+
+    // @sect3{The active set as constraints on the whole body}
+
+    // The sticking dofs held at zero, symmetrically: their rows and columns
+    // of the matrix are zeroed except the diagonal, their right-hand side
+    // entries too. Each process edits the rows it owns (the columns of a
+    // sticking dof lie in other processes' rows as well).
+    void zero_rows_and_columns(const std::vector<bool> &fixed,
+                               MatrixType              &matrix,
+                               VectorType              &rhs)
+    {
+      // Epetra's views of the local rows: deal.II's entry iterator copies
+      // a row per access and is far too slow for a pass over all rows.
+      auto &epetra = const_cast<Epetra_CrsMatrix &>(matrix.trilinos_matrix());
+      for (int local_row = 0; local_row < epetra.NumMyRows(); ++local_row)
+        {
+          const auto row =
+            static_cast<types::global_dof_index>(epetra.GRID64(local_row));
+          int     length;
+          double *values;
+          int    *columns;
+          epetra.ExtractMyRowView(local_row, length, values, columns);
+          for (int k = 0; k < length; ++k)
+            {
+              const auto column = static_cast<types::global_dof_index>(
+                epetra.ColMap().GID64(columns[k]));
+              if (column != row && (fixed[row] || fixed[column]))
+                values[k] = 0.;
+            }
+          if (fixed[row])
+            rhs[row] = 0.;
+        }
+      rhs.compress(VectorOperation::insert);
+    }
+
+
+    // The straightforward path of 'Solver/Contact solver = constraints':
+    // every Newton step of the methods on Gamma_3 is a solve on the whole
+    // body, with the sticking nodes held fixed as constraints and the
+    // matrix refactorised (or, with CG-AMG, its preconditioner adapted). It
+    // needs neither Z nor the Delassus operator, so its memory is that of K
+    // and one factor; it is the reference the Delassus paths are tested
+    // against (tests/verification/contact_solver_paths) and the path for
+    // meshes where Z does not fit.
+    template <int dim>
+    class ActiveSetAsConstraints : public ContactPath<dim>
+    {
+    public:
+      ActiveSetAsConstraints(const ContactBoundary<dim> &boundary,
+                             const MatrixType           &matrix_K,
+                             Factorization              &factorization_of_K)
+        : gamma3(boundary)
+        , system_matrix(matrix_K)
+        , factorization(factorization_of_K)
+      {}
+
+      void begin_step(const VectorType &step_rhs,
+                      const VectorType &last_velocity) override
+      {
+        recent_newton_solves.clear();
+        rhs                        = step_rhs;
+        start                      = last_velocity;
+        this->solves               = 0;
+        this->substitution_seconds = 0;
+        v_free.reinit(0);
+      }
+
+      // Formed only when asked for: a step whose first Newton step already
+      // solves the friction problem (every sticking step) does without it.
+      const Vector<double> &free_slip_velocity() override
+      {
+        if (v_free.size() == 0)
+          {
+            VectorType w;
+            velocity(Vector<double>(gamma3.n_unknowns()), w);
+            v_free = gamma3.tangential_velocities(w);
+          }
+        return v_free;
+      }
+
+      void velocity_of_force(const Vector<double> &eta,
+                             Vector<double>       &v) override
+      {
+        VectorType w;
+        velocity(eta, w);
+        v = gamma3.tangential_velocities(w);
+      }
+
+      void newton_step(const std::vector<NodeLinearisation> &linearisation,
+                       Vector<double>                       &eta,
+                       Vector<double>                       &v) override;
+
+      // (5.2) with the friction term C^T eta moved to the right-hand side,
+      //   K w = step_rhs - C^T eta,
+      // or the velocity a recent Newton step found for these forces.
+      void velocity(const Vector<double> &eta, VectorType &w) override
+      {
+        for (const auto &[newton_force, newton_velocity] : recent_newton_solves)
+          if (newton_force == eta)
+            {
+              w = newton_velocity;
+              return;
+            }
+        VectorType load(rhs);
+        load.add(-1., gamma3.friction_load(eta));
+        w = start;
+        solve(factorization, w, load);
+      }
+
+      void apply_delassus(const Vector<double> &x, Vector<double> &y) override
+      {
+        VectorType w(gamma3.locally_owned_dofs, gamma3.mpi_communicator);
+        factorization.solve(w, gamma3.friction_load(x));
+        gamma3.constraints.distribute(w);
+        y = gamma3.tangential_velocities(w);
+      }
+
+      std::string description() const override
+      {
+        return "active set as constraints, one solve with K per Newton step";
+      }
+
+    private:
+      // w = K'^{-1} load for K or a variant K', counted, and timed if it is
+      // the step's first solve.
+      void solve(Factorization &solver, VectorType &w, const VectorType &load)
+      {
+        Timer timer;
+        solver.solve(w, load);
+        if (this->solves++ == 0)
+          this->substitution_seconds = timer.wall_time();
+        gamma3.constraints.distribute(w);
+      }
+
+      const ContactBoundary<dim> &gamma3;
+      const MatrixType           &system_matrix;
+      Factorization              &factorization;
+      VectorType                  rhs;
+      Vector<double>              v_free;
+      // Where CG starts: w_{n-1}, then the newest Newton step's velocity.
+      VectorType start;
+      // The forces and velocities of the step's last Newton steps: the
+      // methods on Gamma_3 ask again for the velocity of forces a Newton
+      // step gave (the final forces, the start of a convexification step),
+      // which then needs no solve; CG starts from the newest velocity.
+      std::deque<std::pair<Vector<double>, VectorType>> recent_newton_solves;
+    };
+
+
+    // One Newton step of the method of friction.h on the whole body, for
+    // the linearisation of every node:
+    // - a sticking node has v_p = 0; with w.n = 0 from the bilateral
+    //   constraint that is w_p = 0, imposed by zeroing the rows and columns
+    //   of the node's free dofs (keeping the diagonal, so K stays SPD);
+    // - a slipping node carries the force (force_p + slope_p zhat.v) zhat
+    //   (force_p = g_p, slope_p = 0 for the Tresca problem; the tangent of
+    //   g_p(|v_p|) for the full law): a load force_p zhat and a spring
+    //   slope_p zhat zhat^T added to K at the node; in 3D also the condition
+    //   v.t = beta eta.t along the other tangent t = zhat turned by 90
+    //   degrees, i.e. eta.t = (v.t) / beta: a spring (1 / beta) t t^T.
+    // This is the system (D + beta)_FF eta_F = ... of the Delassus path
+    // before the body's unknowns are eliminated, so both give the same
+    // iterates. The friction force of a sticking node is then its reaction,
+    // the residual of the unconstrained equations at the node projected on
+    // its tangents (the residual is C^T eta there and nothing else, since
+    // only the node's own column of C^T has support at it).
+    template <int dim>
+    void ActiveSetAsConstraints<dim>::newton_step(
+      const std::vector<NodeLinearisation> &linearisation,
+      Vector<double>                       &eta,
+      Vector<double>                       &v)
+    {
+      const unsigned int n = gamma3.nodes.size(), m = dim - 1;
+      MatrixType         matrix;
+      matrix.copy_from(system_matrix);
+      Vector<double>                       slip_force(n * m);
+      std::vector<bool>                    stick_dof(system_matrix.m());
+      std::vector<types::global_dof_index> node_dofs(dim);
+      for (unsigned int p = 0; p < n; ++p)
+        {
+          const ContactNode<dim> &node = gamma3.nodes[p];
+          if (linearisation[p].state == NodeState::stick)
+            {
+              // Its constrained (normal) dof has a trivial row and column
+              // in the condensed K already, so all its dofs can be marked.
+              for (const types::global_dof_index dof : node.dofs)
+                stick_dof[dof] = true;
+              continue;
+            }
+          const NodeLinearisation &slip  = linearisation[p];
+          const FullMatrix<double> basis = local_basis(slip);
+          for (unsigned int i = 0; i < m; ++i)
+            slip_force[p * m + i] = slip.force * basis(i, 0);
+          if (slip.bound == 0. || !node.locally_owned)
+            continue;
+          // The springs: slope zhat zhat^T (the full law; negative for a
+          // weakening law) and (1 / beta) t t^T along the other tangent.
+          std::array<Tensor<1, dim>, dim - 1> directions;
+          for (unsigned int j = 0; j < m; ++j)
+            for (unsigned int i = 0; i < m; ++i)
+              directions[j] += basis(i, j) * node.tangents[i];
+          FullMatrix<double> spring(dim, dim);
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              {
+                spring(a, b) = slip.slope * directions[0][a] * directions[0][b];
+                if (m == 2)
+                  spring(a, b) +=
+                    directions[1][a] * directions[1][b] / slip.beta;
+              }
+          std::copy(node.dofs.begin(), node.dofs.end(), node_dofs.begin());
+          gamma3.constraints.distribute_local_to_global(spring,
+                                                        node_dofs,
+                                                        matrix);
+        }
+      matrix.compress(VectorOperation::add);
+
+      VectorType load(rhs);
+      load.add(-1., gamma3.friction_load(slip_force));
+      zero_rows_and_columns(stick_dof, matrix, load);
+
+      VectorType w(start);
+      solve(*factorization.for_variant(matrix), w, load);
+      v = gamma3.tangential_velocities(w);
+
+      VectorType residual(rhs);
+      VectorType product(gamma3.locally_owned_dofs, gamma3.mpi_communicator);
+      system_matrix.vmult(product, w);
+      residual -= product;
+      gamma3.constraints.set_zero(residual);
+      eta = gamma3.tangential_velocities(residual);
+
+      // On slip nodes eta is set from the linearisation, exactly as on the
+      // Delassus path, rather than read back from the residual.
+      for (unsigned int p = 0; p < n; ++p)
+        if (linearisation[p].state == NodeState::slip)
+          {
+            const NodeLinearisation &slip  = linearisation[p];
+            const FullMatrix<double> basis = local_basis(slip);
+            // v in the local basis (zhat, t).
+            std::array<double, dim - 1> local_v{};
+            for (unsigned int j = 0; j < m; ++j)
+              for (unsigned int i = 0; i < m; ++i)
+                local_v[j] += basis(i, j) * v[p * m + i];
+            for (unsigned int i = 0; i < m; ++i)
+              {
+                eta[p * m + i] = slip_force[p * m + i];
+                if (slip.bound == 0.)
+                  continue;
+                eta[p * m + i] += basis(i, 0) * slip.slope * local_v[0];
+                if (m == 2)
+                  eta[p * m + i] += basis(i, 1) * local_v[1] / slip.beta;
+              }
+          }
+        else
+          for (unsigned int i = 0; i < m; ++i)
+            v[p * m + i] = 0.;
+
+      // Three: a convexification step inside the Newton method starts from
+      // the iterate before a failed step and a failed step of the other
+      // model.
+      start = w;
+      recent_newton_solves.emplace_back(eta, std::move(w));
+      if (recent_newton_solves.size() > 3)
+        recent_newton_solves.pop_front();
+    }
+  } // namespace
+
+
+  template <int dim>
+  std::unique_ptr<ContactPath<dim>>
+  make_contact_path(const ContactBoundary<dim> &gamma3,
+                    const MatrixType           &system_matrix,
+                    Factorization              &factorization,
+                    const bool                  delassus,
+                    TimerOutput                &computing_timer)
+  {
+    if (!delassus)
+      return std::make_unique<ActiveSetAsConstraints<dim>>(gamma3,
+                                                           system_matrix,
+                                                           factorization);
+    TimerOutput::Scope t(computing_timer, "Delassus operator");
+    if (factorization.has_triangular_factor())
+      return std::make_unique<DelassusFromFactor<dim>>(gamma3, factorization);
+    return std::make_unique<DelassusFromSolves<dim>>(gamma3, factorization);
+  }
+
+
+#define INSTANTIATE(dim)                                        \
+  template struct ContactBoundary<dim>;                         \
+  template std::unique_ptr<ContactPath<dim>> make_contact_path( \
+    const ContactBoundary<dim> &,                               \
+    const MatrixType &,                                         \
+    Factorization &,                                            \
+    const bool,                                                 \
+    TimerOutput &);
+
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace Contact

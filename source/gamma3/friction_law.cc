@@ -1,0 +1,571 @@
+/* The friction law (6.1) and the nodal Tresca solver on Gamma_3. */
+
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <gamma3/friction.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace Contact
+{
+  // @sect3{The friction law}
+
+  FrictionLaw::FrictionLaw(const FrictionParameters &parameters)
+    : law(parameters.law)
+    , S(parameters.bound_S)
+    , a(parameters.a)
+    , b(parameters.b)
+    , alpha(parameters.alpha)
+  {}
+
+  double FrictionLaw::coefficient(const double slip_rate) const
+  {
+    switch (law)
+      {
+        case FrictionParameters::Law::none:
+          return 0.;
+        case FrictionParameters::Law::constant:
+          return a;
+        case FrictionParameters::Law::slip_rate_weakening:
+          // (6.1)
+          return (a - b) * std::exp(-alpha * slip_rate) + b;
+      }
+    return 0.;
+  }
+
+  double FrictionLaw::bound(const double slip_rate) const
+  {
+    return S * coefficient(slip_rate);
+  }
+
+  double FrictionLaw::bound_derivative(const double slip_rate) const
+  {
+    if (is_frictionless() || is_rate_independent())
+      return 0.;
+    return -S * (a - b) * alpha * std::exp(-alpha * slip_rate);
+  }
+
+  double FrictionLaw::potential(const double slip_velocity) const
+  {
+    const double s = std::abs(slip_velocity);
+    if (is_frictionless())
+      return 0.;
+    if (is_rate_independent())
+      return S * coefficient(0.) * s;
+    return S * (b * s + (a - b) * (1. - std::exp(-alpha * s)) / alpha);
+  }
+
+  bool FrictionLaw::is_frictionless() const
+  {
+    return law == FrictionParameters::Law::none || S == 0. ||
+           (a == 0. && b == 0.);
+  }
+
+  bool FrictionLaw::is_rate_independent() const
+  {
+    return law != FrictionParameters::Law::slip_rate_weakening || a == b ||
+           alpha == 0.;
+  }
+
+  double FrictionLaw::one_sided_lipschitz_constant() const
+  {
+    return is_rate_independent() ? 0. : (a - b) * alpha;
+  }
+
+
+  // @sect3{Anderson acceleration}
+
+  AndersonAcceleration::AndersonAcceleration(const unsigned int history_depth)
+    : depth(history_depth)
+    , accelerated(false)
+  {}
+
+  void AndersonAcceleration::restart()
+  {
+    residual_differences.clear();
+    image_differences.clear();
+    previous_residual.reinit(0);
+    previous_image.reinit(0);
+    accelerated = false;
+  }
+
+  bool AndersonAcceleration::last_step_was_accelerated() const
+  {
+    return accelerated;
+  }
+
+  void AndersonAcceleration::next_iterate(Vector<double>       &x,
+                                          const Vector<double> &image)
+  {
+    Vector<double> residual(image);
+    residual -= x;
+    if (depth > 0 && previous_residual.size() == x.size())
+      {
+        residual_differences.push_back(residual);
+        residual_differences.back() -= previous_residual;
+        image_differences.push_back(image);
+        image_differences.back() -= previous_image;
+        if (residual_differences.size() > depth)
+          {
+            residual_differences.erase(residual_differences.begin());
+            image_differences.erase(image_differences.begin());
+          }
+      }
+    previous_residual = residual;
+    previous_image    = image;
+
+    const unsigned int m = residual_differences.size();
+    x                    = image;
+    accelerated          = (m > 0);
+    if (m == 0)
+      return;
+
+    // Least squares min |residual - dF gamma| by the normal equations,
+    // regularised relative to their size (m is small).
+    LAPACKFullMatrix<double> normal(m, m);
+    Vector<double>           gamma(m);
+    double                   trace = 0;
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        gamma[i] = residual_differences[i] * residual;
+        for (unsigned int j = 0; j < m; ++j)
+          normal(i, j) = residual_differences[i] * residual_differences[j];
+        trace += normal(i, i);
+      }
+    if (trace == 0.)
+      {
+        accelerated = false;
+        return;
+      }
+    // Tikhonov regularisation of the least-squares problem: consecutive
+    // residual differences can be nearly dependent.
+    constexpr double regularisation = 1e-10;
+    for (unsigned int i = 0; i < m; ++i)
+      normal(i, i) += regularisation * trace;
+    normal.set_property(LAPACKSupport::symmetric);
+    normal.compute_cholesky_factorization();
+    normal.solve(gamma);
+    for (unsigned int i = 0; i < m; ++i)
+      x.add(-gamma[i], image_differences[i]);
+  }
+
+
+  // @sect3{The Tresca problem by the primal-dual active set method}
+
+  namespace
+  {
+    // The linearisation of the complementarity function at one node: its
+    // state, the unit vector zhat along z_p = eta_p + c_p v_p, and beta_p.
+    // A node with g_p = 0 slips with eta_p = 0 whatever v_p does; its
+    // direction is that of v_p (the first axis if v_p = 0) to keep it
+    // deterministic.
+    std::vector<NodeLinearisation> linearise(const unsigned int    m,
+                                             const Vector<double> &eta,
+                                             const Vector<double> &v,
+                                             const Vector<double> &g,
+                                             const Vector<double> &c)
+    {
+      std::vector<NodeLinearisation> result(g.size());
+      for (unsigned int p = 0; p < g.size(); ++p)
+        {
+          NodeLinearisation &node = result[p];
+          node.direction.assign(m, 0.);
+          double z_norm = 0, v_norm = 0;
+          for (unsigned int i = 0; i < m; ++i)
+            {
+              node.direction[i] = eta[p * m + i] + c[p] * v[p * m + i];
+              z_norm += node.direction[i] * node.direction[i];
+              v_norm += v[p * m + i] * v[p * m + i];
+            }
+          z_norm     = std::sqrt(z_norm);
+          node.bound = g[p];
+          node.force = g[p];
+          if (g[p] == 0.)
+            {
+              node.state = NodeState::slip;
+              for (unsigned int i = 0; i < m; ++i)
+                node.direction[i] =
+                  (v_norm > 0 ? v[p * m + i] / std::sqrt(v_norm) : i == 0);
+            }
+          else if (z_norm > g[p])
+            {
+              node.state = NodeState::slip;
+              for (double &d : node.direction)
+                d /= z_norm;
+              node.beta = (z_norm - g[p]) / (g[p] * c[p]);
+            }
+        }
+      return result;
+    }
+
+    // The sets that the cycle detection compares: stick, or slip with (in
+    // 2D) its sign.
+    std::vector<int>
+    set_signature(const std::vector<NodeLinearisation> &linearisation)
+    {
+      std::vector<int> signature;
+      for (const NodeLinearisation &node : linearisation)
+        signature.push_back(node.state == NodeState::stick ? 0 :
+                            node.direction.size() > 1      ? 1 :
+                            node.direction[0] > 0          ? 1 :
+                                                             -1);
+      return signature;
+    }
+
+    // max_p |eta_p - P_{B(g_p)}(eta_p + c_p v_p)|: zero at a solution.
+    double complementarity_residual(const unsigned int    m,
+                                    const Vector<double> &eta,
+                                    const Vector<double> &v,
+                                    const Vector<double> &g,
+                                    const Vector<double> &c)
+    {
+      double residual = 0;
+      for (unsigned int p = 0; p < g.size(); ++p)
+        {
+          std::vector<double> z(m);
+          double              z_norm = 0;
+          for (unsigned int i = 0; i < m; ++i)
+            {
+              z[i] = eta[p * m + i] + c[p] * v[p * m + i];
+              z_norm += z[i] * z[i];
+            }
+          z_norm             = std::sqrt(z_norm);
+          const double scale = (z_norm > g[p] ? g[p] / z_norm : 1.);
+          for (unsigned int i = 0; i < m; ++i)
+            residual =
+              std::max(residual, std::abs(eta[p * m + i] - scale * z[i]));
+        }
+      return residual;
+    }
+  } // namespace
+
+
+  // The orthonormal basis of one node's tangential plane in which the
+  // Newton step is diagonal: stick nodes keep the canonical basis; slip
+  // nodes take (zhat, zhat rotated by 90 degrees) for m = 2.
+  FullMatrix<double> local_basis(const NodeLinearisation &node)
+  {
+    const unsigned int m = node.direction.size();
+    FullMatrix<double> basis(m, m);
+    for (unsigned int i = 0; i < m; ++i)
+      basis(i, i) = 1;
+    if (node.state == NodeState::slip)
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          basis(i, 0) = node.direction[i];
+          if (m == 2)
+            basis(i, 1) = (i == 0 ? -node.direction[1] : node.direction[0]);
+        }
+    return basis;
+  }
+
+  TrescaResult solve_tresca(const TrescaVelocity   &velocity,
+                            const TrescaNewtonStep &newton_step,
+                            const unsigned int      m,
+                            const Vector<double>   &g,
+                            const Vector<double>   &c_initial,
+                            const unsigned int      max_iterations,
+                            Vector<double>         &eta,
+                            Vector<double>         &v,
+                            std::vector<NodeState> &state)
+  {
+    AssertDimension(eta.size(), g.size() * m);
+    TrescaResult                  result;
+    Vector<double>                c = c_initial;
+    std::vector<std::vector<int>> history;
+    const double                  tolerance =
+      friction_residual_tolerance *
+      std::max(g.linfty_norm(), std::numeric_limits<double>::min());
+
+    velocity(eta, v);
+    auto linearisation = linearise(m, eta, v, g, c);
+
+    // Progress test for m = 2, where the slip directions may keep turning
+    // without a set repeating: if the residual has not halved within
+    // `patience` steps, c is halved as for a cycle.
+    const unsigned int patience      = 8;
+    double             best_residual = std::numeric_limits<double>::max();
+    unsigned int       steps_without_progress = 0;
+    const auto         halve_c                = [&]() {
+      c *= 0.5;
+      ++result.cycles_cured;
+      history.clear();
+      best_residual          = std::numeric_limits<double>::max();
+      steps_without_progress = 0;
+      linearisation          = linearise(m, eta, v, g, c);
+    };
+
+    while (result.iterations < max_iterations)
+      {
+        ++result.iterations;
+        newton_step(linearisation, eta, v);
+        history.push_back(set_signature(linearisation));
+
+        linearisation                    = linearise(m, eta, v, g, c);
+        const std::vector<int> signature = set_signature(linearisation);
+        const double residual = complementarity_residual(m, eta, v, g, c);
+        if (signature == history.back() && residual <= tolerance)
+          {
+            result.converged = true;
+            break;
+          }
+        if (residual <= 0.5 * best_residual)
+          {
+            best_residual          = residual;
+            steps_without_progress = 0;
+          }
+        else
+          ++steps_without_progress;
+        if ((signature != history.back() &&
+             std::find(history.begin(), history.end(), signature) !=
+               history.end()) ||
+            steps_without_progress >= patience)
+          halve_c();
+      }
+    state.resize(g.size());
+    for (unsigned int p = 0; p < g.size(); ++p)
+      state[p] = linearisation[p].state;
+    return result;
+  }
+
+
+  // @sect3{The full law by a globalised semismooth Newton method}
+
+  namespace
+  {
+    double node_norm(const Vector<double> &x,
+                     const unsigned int    p,
+                     const unsigned int    m)
+    {
+      double sum = 0;
+      for (unsigned int i = 0; i < m; ++i)
+        sum += x[p * m + i] * x[p * m + i];
+      return std::sqrt(sum);
+    }
+
+    // The linearisation at (eta, v) with the bound of the current slip rate,
+    // g_p(|v_p|), and on slip nodes its tangent along zhat, capped at
+    // law.weakening_cap if `capped`.
+    std::vector<NodeLinearisation> linearise_law(const unsigned int    m,
+                                                 const Vector<double> &eta,
+                                                 const Vector<double> &v,
+                                                 const NodalLaw       &law,
+                                                 const Vector<double> &c,
+                                                 const bool            capped)
+    {
+      const unsigned int n = c.size();
+      Vector<double>     g(n);
+      for (unsigned int p = 0; p < n; ++p)
+        g[p] = law.bound(p, node_norm(v, p, m));
+      std::vector<NodeLinearisation> result = linearise(m, eta, v, g, c);
+      // The force along zhat is g_p(s) + g_p'(s) zhat . (v_new - v), with
+      // the slip rate s = |v_p| of the iterate: at a fixed point it is
+      // g_p(s) even where v_p is not along zhat.
+      for (unsigned int p = 0; p < n; ++p)
+        if (result[p].state == NodeState::slip && g[p] > 0)
+          {
+            double along = 0;
+            for (unsigned int i = 0; i < m; ++i)
+              along += result[p].direction[i] * v[p * m + i];
+            result[p].slope = law.slope(p, node_norm(v, p, m));
+            if (capped)
+              result[p].slope =
+                std::max(result[p].slope, -law.weakening_cap * law.weights[p]);
+            result[p].force = g[p] - result[p].slope * along;
+          }
+      return result;
+    }
+  } // namespace
+
+
+  double NodalLaw::bound(const unsigned int p, const double s) const
+  {
+    return weights[p] * law.bound(s);
+  }
+
+  double NodalLaw::slope(const unsigned int p, const double s) const
+  {
+    return weights[p] * law.bound_derivative(s);
+  }
+
+  double NodalLaw::energy(const Vector<double> &v_free,
+                          const Vector<double> &eta,
+                          const Vector<double> &v,
+                          double               &scale) const
+  {
+    const unsigned int m         = v.size() / weights.size();
+    double             quadratic = 0, friction = 0;
+    for (unsigned int r = 0; r < v.size(); ++r)
+      quadratic += 0.5 * eta[r] * (v_free[r] - v[r]);
+    for (unsigned int p = 0; p < weights.size(); ++p)
+      friction += weights[p] * law.potential(node_norm(v, p, m));
+    scale = std::abs(quadratic) + std::abs(friction);
+    return quadratic + friction;
+  }
+
+
+  namespace
+  {
+    // Backtracking on E from (eta, v) towards the Newton iterate
+    // (new_eta, new_v), which (eta, v) move to together, v = v_free - D eta
+    // being affine in eta, so that a shorter step costs no solve: halved at
+    // most three times (a third halving saves convexification steps, a
+    // fourth was never taken in the 3D scenes). Returns the step length, 0
+    // if E did not decrease.
+    double backtrack(const NodalLaw       &law,
+                     const Vector<double> &v_free,
+                     const Vector<double> &eta,
+                     const Vector<double> &v,
+                     const double          energy,
+                     Vector<double>       &new_eta,
+                     Vector<double>       &new_v,
+                     double               &new_energy)
+    {
+      double     scale = 0;
+      const auto full_eta(new_eta), full_v(new_v);
+      const auto lowered = [&]() {
+        new_energy = law.energy(v_free, new_eta, new_v, scale);
+        return new_energy <= energy + energy_round_off * scale;
+      };
+      if (lowered())
+        return 1.;
+      for (double length = 0.5; length > 0.1; length /= 2)
+        {
+          new_eta = eta;
+          new_eta.add(length, full_eta, -length, eta);
+          new_v = v;
+          new_v.add(length, full_v, -length, v);
+          if (lowered())
+            return length;
+        }
+      return 0.;
+    }
+  } // namespace
+
+
+  FrictionNewtonResult
+  solve_friction_newton(const TrescaVelocity   &velocity,
+                        const TrescaNewtonStep &newton_step,
+                        const unsigned int      m,
+                        const NodalLaw         &law,
+                        const FreeVelocity     &v_free,
+                        const Vector<double>   &c,
+                        const unsigned int      max_iterations,
+                        const unsigned int      max_active_set_iterations,
+                        Vector<double>         &eta,
+                        Vector<double>         &v,
+                        std::vector<NodeState> &state)
+  {
+    const unsigned int n = c.size();
+    AssertDimension(eta.size(), n * m);
+    FrictionNewtonResult result;
+    double               largest_bound = std::numeric_limits<double>::min();
+    for (unsigned int p = 0; p < n; ++p)
+      largest_bound = std::max(largest_bound, law.bound(p, 0.));
+    const double tolerance = friction_residual_tolerance * largest_bound;
+    const bool   has_cap   = std::isfinite(law.weakening_cap);
+    bool         capped    = has_cap;
+
+    // The first step is taken from the previous step's state, which belongs
+    // to another v_free: its energy is not compared. The energy of the
+    // first iterate is only formed if a second step needs it, so that a
+    // step converging at once never asks for v_free.
+    auto           linearisation = linearise_law(m, eta, v, law, c, capped);
+    double         energy        = std::numeric_limits<double>::quiet_NaN();
+    Vector<double> new_eta(eta), new_v(v);
+    // The model switches to the true slope once the sets repeat after a
+    // full step and the residual is below uncap_below. Where neither model
+    // descends from an iterate, the other one is tried before the
+    // convexification step; a failed true step halves uncap_below, so that
+    // the two models do not take turns at the same residual.
+    double residual      = std::numeric_limits<double>::infinity();
+    double uncap_below   = 0.1 * largest_bound;
+    bool   capped_failed = false, uncapped_failed = false;
+    while (result.iterations < max_iterations)
+      {
+        ++result.iterations;
+        new_eta = eta;
+        new_v   = v;
+        newton_step(linearisation, new_eta, new_v);
+        double scale = 0, new_energy = energy, length = 1.;
+        if (result.iterations > 1)
+          {
+            if (std::isnan(energy))
+              energy = law.energy(v_free(), eta, v, scale);
+            length = backtrack(
+              law, v_free(), eta, v, energy, new_eta, new_v, new_energy);
+          }
+        if (length == 0.)
+          {
+            (capped ? capped_failed : uncapped_failed) = true;
+            if (has_cap &&
+                (capped ? !uncapped_failed && residual < uncap_below :
+                          !capped_failed))
+              {
+                if (!capped)
+                  uncap_below = 0.5 * residual;
+                capped        = !capped;
+                linearisation = linearise_law(m, eta, v, law, c, capped);
+                continue;
+              }
+          }
+        capped_failed = uncapped_failed = false;
+        if (length == 0.)
+          {
+            // No descent along the Newton direction: one convexification
+            // step instead, the Tresca problem with the bounds of the
+            // current slip rates, which lowers E.
+            ++result.convexification_steps;
+            Vector<double> bound(n);
+            for (unsigned int p = 0; p < n; ++p)
+              bound[p] = law.bound(p, node_norm(v, p, m));
+            new_eta = eta;
+            std::vector<NodeState> tresca_state;
+            const TrescaResult     tresca = solve_tresca(velocity,
+                                                     newton_step,
+                                                     m,
+                                                     bound,
+                                                     c,
+                                                     max_active_set_iterations,
+                                                     new_eta,
+                                                     new_v,
+                                                     tresca_state);
+            result.active_set_iterations += tresca.iterations;
+            if (!tresca.converged)
+              break;
+            new_energy = law.energy(v_free(), new_eta, new_v, scale);
+          }
+        else if (length < 1.)
+          ++result.damped_steps;
+
+        const std::vector<int> previous_sets = set_signature(linearisation);
+        eta.swap(new_eta);
+        v.swap(new_v);
+        energy        = new_energy;
+        linearisation = linearise_law(m, eta, v, law, c, capped);
+        // The residual with the bounds of the current slip rates.
+        Vector<double> bound(n);
+        for (unsigned int p = 0; p < n; ++p)
+          bound[p] = linearisation[p].bound;
+        residual               = complementarity_residual(m, eta, v, bound, c);
+        const bool sets_repeat = set_signature(linearisation) == previous_sets;
+        if (sets_repeat && residual <= tolerance)
+          {
+            result.converged = true;
+            break;
+          }
+        if (capped && sets_repeat && length == 1. && residual < uncap_below)
+          {
+            capped        = false;
+            linearisation = linearise_law(m, eta, v, law, c, capped);
+          }
+      }
+    state.resize(n);
+    for (unsigned int p = 0; p < n; ++p)
+      state[p] = linearisation[p].state;
+    return result;
+  }
+
+} // namespace Contact

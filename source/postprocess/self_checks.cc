@@ -1,0 +1,435 @@
+/* The checks every run makes of its own results (doc/verification.md):
+   the energy identity of the scheme twice, from the matrices and by
+   quadrature of the fields, the friction law at the converged slip rates,
+   the sign of the friction power, and the balance of moments about the
+   z-axis where a rigid rotation is admissible. A run that fails one of
+   them ends with an error instead of presenting its results as good. */
+
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <core/contact_problem.h>
+
+#include <array>
+#include <iomanip>
+#include <sstream>
+
+namespace Contact
+{
+  // @sect4{ContactProblem::field_integrals}
+
+  // The integrals of the fields that the energy identity (5.7) is made of,
+  // with the quadrature rules of the assembly (the mass rule for rho |w|^2,
+  // which is the nodal one for a lumped mass: the discrete kinetic energy is
+  // defined by it), but from the values and strains of u_h and w_h on the
+  // cells, not from the matrices. A step of the factor-once scheme costs
+  // little more than two substitutions, so this loop is written for speed:
+  // each cell's dof values are read once, and the fields are summed from
+  // the scalar shape functions (each shape function of the vector element
+  // is a scalar one in one component) instead of through FEValues' vector
+  // functions, which allocate at every call.
+  template <int dim>
+  FieldIntegrals
+  ContactProblem<dim>::field_integrals(const FastVector &u,
+                                       const FastVector &w,
+                                       const FastVector &old_w) const
+  {
+    const auto  &material = parameters.material;
+    const double rho = material.density, lambda = material.lambda(dim),
+                 two_G = material.two_G(), mu1 = material.viscosity_mu1,
+                 mu2 = material.viscosity_mu2;
+    // (B eps) : eps = lambda tr(eps)^2 + 2G eps : eps, the same with mu_1,
+    // mu_2 for A.
+    const auto form = [](const double                   trace_factor,
+                         const double                   deviator_factor,
+                         const SymmetricTensor<2, dim> &eps) {
+      return trace_factor * trace(eps) * trace(eps) +
+             deviator_factor * (eps * eps);
+    };
+
+    const bool         lumped = parameters.geometry.lumped_mass;
+    FEValues<dim>      strain_values(*mapping,
+                                fe,
+                                quadrature,
+                                update_gradients | update_JxW_values |
+                                  (lumped ? update_default : update_values));
+    FEValues<dim>      lumped_values(*mapping,
+                                fe,
+                                mass_quadrature,
+                                update_values | update_JxW_values);
+    FEValues<dim>     &mass_values = (lumped ? lumped_values : strain_values);
+    const unsigned int n_dofs      = fe.n_dofs_per_cell();
+    Vector<double>     u_cell(n_dofs), w_cell(n_dofs), old_w_cell(n_dofs);
+    std::vector<unsigned int> component(n_dofs);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      component[i] = fe.system_to_component_index(i).first;
+
+    std::array<double, 5> sums{};
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_values(u, u_cell);
+          cell->get_dof_values(w, w_cell);
+          cell->get_dof_values(old_w, old_w_cell);
+          strain_values.reinit(cell);
+          if (lumped)
+            lumped_values.reinit(cell);
+          for (const unsigned int q : mass_values.quadrature_point_indices())
+            {
+              Tensor<1, dim> w_q, old_w_q;
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  const double phi = mass_values.shape_value(i, q);
+                  w_q[component[i]] += w_cell[i] * phi;
+                  old_w_q[component[i]] += old_w_cell[i] * phi;
+                }
+              sums[0] += 0.5 * rho * (w_q * w_q) * mass_values.JxW(q);
+              sums[1] +=
+                0.5 * rho * (w_q - old_w_q).norm_square() * mass_values.JxW(q);
+            }
+          for (const unsigned int q : strain_values.quadrature_point_indices())
+            {
+              Tensor<2, dim> grad_u, grad_w;
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  const Tensor<1, dim> &grad = strain_values.shape_grad(i, q);
+                  grad_u[component[i]] += u_cell[i] * grad;
+                  grad_w[component[i]] += w_cell[i] * grad;
+                }
+              const SymmetricTensor<2, dim> eps_u = symmetrize(grad_u),
+                                            eps_w = symmetrize(grad_w);
+              const double JxW                    = strain_values.JxW(q);
+              sums[2] += 0.5 * form(lambda, two_G, eps_u) * JxW;
+              sums[3] += form(mu1, mu2, eps_w) * JxW;
+              sums[4] += form(lambda, two_G, eps_w) * JxW;
+            }
+        }
+    Utilities::MPI::sum(ArrayView<const double>(sums.data(), sums.size()),
+                        mpi_communicator,
+                        ArrayView<double>(sums.data(), sums.size()));
+    return {sums[0], sums[1], sums[2], sums[3], sums[4]};
+  }
+
+
+  // @sect4{ContactProblem::fast_ghosted}
+
+  // A ghosted copy of a field in deal.II's own vector, whose entries the
+  // cell loops read much faster than those of an Epetra vector (a lookup in
+  // the vector's map for each).
+  template <int dim>
+  FastVector ContactProblem<dim>::fast_ghosted(const VectorType &v) const
+  {
+    FastVector result(locally_owned_dofs,
+                      locally_relevant_dofs,
+                      mpi_communicator);
+    if (locally_owned_dofs.is_contiguous())
+      std::copy(v.begin(), v.end(), result.begin());
+    else
+      for (const types::global_dof_index i : locally_owned_dofs)
+        result[i] = v[i];
+    result.update_ghost_values();
+    return result;
+  }
+
+
+  // @sect4{ContactProblem::setup_moment_balance}
+
+  // The rigid rotation r = e_z x x, interpolated, its tangential components
+  // on Gamma_3, and whether the balance of moments is a self-check: where r
+  // lies in V_h, (5.2) tested with r has no reaction term, and where the
+  // mapping's degree is at most the element's, r is its own interpolant, so
+  // eps(r) = 0 takes the internal forces out and the angular momentum with
+  // the exact x is r^T M w. Whether r lies in V_h is asked of the
+  // constraints themselves (they leave r as it is, to 1e-12 of its size): a
+  // clamp, or a normal constraint not normal to r, excludes it; on a
+  // circular Gamma_3 about the axis, so do nodes' normals that are not
+  // radial, by how much the summary says (rotation_defect).
+  template <int dim>
+  void ContactProblem<dim>::setup_moment_balance()
+  {
+    std::vector<std::function<double(const Point<dim> &)>> components(
+      dim, [](const Point<dim> &) { return 0.; });
+    components[0] = [](const Point<dim> &x) { return -x[1]; };
+    components[1] = [](const Point<dim> &x) { return x[0]; };
+    VectorType r(locally_owned_dofs, mpi_communicator);
+    VectorTools::interpolate(*mapping,
+                             dof_handler,
+                             FunctionFromFunctionObjects<dim>(components),
+                             r);
+    VectorType constrained(r);
+    constraints.distribute(constrained);
+    constrained -= r;
+    const auto &geometry = parameters.geometry;
+    rotation_defect      = constrained.linfty_norm() / r.linfty_norm();
+    moment_balance_is_checked =
+      rotation_defect <= 1e-12 &&
+      (geometry.simplex_cells || geometry.mapping_degree <= fe.degree);
+    rotation           = fast_ghosted(r);
+    rotation_on_gamma3 = friction_solver->boundary().tangential_velocities(r);
+  }
+
+
+  // @sect4{ContactProblem::start_self_checks}
+
+  // The initial energy by quadrature, after set_initial_values(), and the
+  // moments of the row of step 0: the angular momentum and the loads'
+  // moment at t = 0 (no friction force acts before the first step, and the
+  // reaction, a rate, is not defined there: 0).
+  template <int dim>
+  void ContactProblem<dim>::start_self_checks()
+  {
+    moments                  = MomentBalance();
+    moments.angular_momentum = angular_momentum_density * velocity;
+    moments.applied          = load_power(0., {&rotation})[0].power;
+    const FastVector u = fast_ghosted(displacement), w = fast_ghosted(velocity);
+    const FieldIntegrals integrals = field_integrals(u, w, w);
+    energy_by_quadrature           = EnergyBalance();
+    energy_by_quadrature.kinetic   = integrals.kinetic;
+    energy_by_quadrature.elastic   = integrals.elastic;
+    energy_by_quadrature.initial   = integrals.kinetic + integrals.elastic;
+    step_checks                    = SelfCheckValues();
+    largest_checks                 = SelfCheckValues();
+  }
+
+
+  // @sect4{ContactProblem::check_step}
+
+  // After each step (each half of a cut step): the terms of (5.7) by
+  // quadrature, (5.2) tested with w_n as in update_energy_balance(),
+  //   1/2|w_n|_M^2 + 1/2|u_n|_B^2 + sum k |w_j|_A^2 + sum k eta_j . C w_j
+  //   + sum (1/2 |w_j - w_{j-1}|_M^2 + k^2/2 |w_j|_B^2)
+  //   = 1/2|w_0|_M^2 + 1/2|u_0|_B^2 + sum k F_j . w_j,
+  // the friction law at the step's slip rates, and the sign of the step's
+  // friction power k eta_n . C w_n on the slipping nodes (where a node
+  // sticks, C w_n is round-off, which can be amplified far beyond the
+  // energies' round-off when K is ill-conditioned: the law check measures
+  // it).
+  template <int dim>
+  void ContactProblem<dim>::check_step()
+  {
+    TimerOutput::Scope t(computing_timer, "Self-checks");
+    const double       k = time_step;
+    const FastVector u = fast_ghosted(displacement), w = fast_ghosted(velocity),
+                     old_w         = fast_ghosted(old_velocity);
+    const FieldIntegrals integrals = field_integrals(u, w, old_w);
+    EnergyBalance       &balance   = energy_by_quadrature;
+    balance.kinetic                = integrals.kinetic;
+    balance.elastic                = integrals.elastic;
+    balance.viscous_dissipation += k * integrals.viscous_power;
+    balance.numerical_dissipation +=
+      integrals.velocity_jump + 0.5 * k * k * integrals.elastic_power;
+    const std::vector<LoadPower> load_powers =
+      load_power(time, {&w, &rotation});
+    balance.external_work += k * load_powers[0].power;
+    balance.friction_dissipation = energy.friction_dissipation;
+    const double moment_scale    = update_moments(load_powers[1]);
+
+    const auto relative = [](const double value, const double scale) {
+      return std::abs(value) /
+             std::max(scale, std::numeric_limits<double>::min());
+    };
+    step_checks.algebraic_energy = relative(energy.residual(), energy.scale());
+    step_checks.quadrature_energy =
+      relative(balance.residual(), balance.scale());
+    step_checks.friction_law = friction_solver->law_residual(velocity);
+    step_checks.friction_law_allowance =
+      2. * friction_solver->law_residual_allowance();
+    step_checks.friction_law_excess =
+      step_checks.friction_law <= step_checks.friction_law_allowance ?
+        0. :
+        step_checks.friction_law;
+    step_checks.negative_friction_power =
+      relative(std::min(k * friction_solver->slip_power(velocity), 0.),
+               energy.scale());
+    step_checks.moment_scale = moment_scale;
+    step_checks.moment_balance =
+      moment_balance_is_checked ?
+        relative(moments.reaction,
+                 std::max(step_checks.moment_scale,
+                          largest_checks.moment_scale)) :
+        0.;
+    largest_checks.take_largest(step_checks);
+  }
+
+
+  // @sect4{ContactProblem::update_moments}
+
+  // The moments of the step (MomentBalance): L_n and L_{n-1} by the angular
+  // momentum density (from w_{n-1}, so that a resumed run needs nothing
+  // more of the past), the loads' moment F_n . r, and the friction's
+  // -eta_n . C r. Returned is the scale of the reaction's round-off: the
+  // sum of the magnitudes of all products that the four sums add up. The
+  // moments themselves are no scale: a ring under pressure alone, or
+  // spinning freely, has no moment at all.
+  template <int dim>
+  double ContactProblem<dim>::update_moments(const LoadPower &applied)
+  {
+    // a . b (by the vectors' own dot product, whose summation is more
+    // accurate than a plain loop's), and the sum of |a_i b_i|.
+    const auto dot =
+      [this](const auto &a, const auto &b, const bool distributed) {
+        double magnitude = 0;
+        auto   b_entry   = b.begin();
+        for (auto a_entry = a.begin(); a_entry != a.end(); ++a_entry, ++b_entry)
+          magnitude += std::abs(*a_entry * *b_entry);
+        if (distributed)
+          magnitude = Utilities::MPI::sum(magnitude, mpi_communicator);
+        return std::array<double, 2>{{a * b, magnitude}};
+      };
+    const auto old_momentum = dot(angular_momentum_density, old_velocity, true);
+    const auto momentum     = dot(angular_momentum_density, velocity, true);
+    // Every process has all of eta and C r.
+    const auto friction =
+      dot(friction_solver->state().friction_force, rotation_on_gamma3, false);
+    moments.angular_momentum = momentum[0];
+    moments.applied          = applied.power;
+    moments.friction         = -friction[0];
+    moments.reaction         = (momentum[0] - old_momentum[0]) / time_step -
+                       moments.applied - moments.friction;
+    return (momentum[1] + old_momentum[1]) / time_step + applied.magnitude +
+           friction[1];
+  }
+
+
+  // @sect4{ContactProblem::print_self_checks}
+
+  template <int dim>
+  void ContactProblem<dim>::print_self_checks() const
+  {
+    const auto line =
+      [&](const std::string &name, const double value, const double violation) {
+        pcout << "  " << name << ": " << std::setprecision(2) << value
+              << (violation < self_check_tolerance ? "" : "  FAILED")
+              << std::endl;
+      };
+    pcout << "Self-checks, largest over the steps (relative; each must stay "
+          << "below " << self_check_tolerance << "):" << std::endl;
+    const SelfCheckValues &c = largest_checks;
+    line("energy identity from the matrices (the solve)",
+         c.algebraic_energy,
+         c.algebraic_energy);
+    line("energy identity by quadrature (matrices, loads)",
+         c.quadrature_energy,
+         c.quadrature_energy);
+    line("friction law at the converged slip rates",
+         c.friction_law,
+         c.friction_law_excess);
+    if (c.friction_law >= self_check_tolerance &&
+        c.friction_law_excess < self_check_tolerance)
+      pcout << "    (within what '" + Entry::convexification_tolerance +
+                 "' allows, "
+            << "up to " << c.friction_law_allowance << ")" << std::endl;
+    line("negative friction power on slipping nodes",
+         c.negative_friction_power,
+         c.negative_friction_power);
+    if (moment_balance_is_checked)
+      line("balance of moments about the z-axis",
+           c.moment_balance,
+           c.moment_balance);
+    else if (parameters.geometry.shell)
+      print_why_moments_are_not_checked();
+  }
+
+
+  // @sect4{ContactProblem::print_why_moments_are_not_checked}
+
+  // On a shell, where a user expects the balance of moments, the reason it
+  // is not a self-check of this run (setup_moment_balance()).
+  template <int dim>
+  void ContactProblem<dim>::print_why_moments_are_not_checked() const
+  {
+    pcout << "  (balance of moments about the z-axis: not checked, ";
+    if (rotation_defect <= 1e-12)
+      pcout << "the mapping's degree is above the element's, so the rigid "
+               "rotation is not in the finite element space; column "
+               "reaction_moment of time_series.csv shows how far the "
+               "balance holds)";
+    else if (!parameters.boundary.clamped_ids.empty())
+      pcout << "a clamp holds the body against turning; column "
+               "reaction_moment of time_series.csv is its moment)";
+    else
+      pcout << "the nodes' normals on the constraints' boundaries are not "
+               "all normal to the rotation about the axis: they change it "
+               "by "
+            << rotation_defect << " of its size)";
+    pcout << std::endl;
+  }
+
+
+  // @sect4{ContactProblem::require_self_checks}
+
+  // The end of a run whose self-check failed: an error that names the
+  // check and the column of time_series.csv that shows from which step on.
+  template <int dim>
+  void ContactProblem<dim>::require_self_checks() const
+  {
+    std::ostringstream failures;
+    failures << std::setprecision(2);
+    const auto add = [&](const double       value,
+                         const std::string &what,
+                         const std::string &column) {
+      if (!(value < self_check_tolerance))
+        failures << "\n  " << what << " holds only to " << value << " (column "
+                 << column << " of time_series.csv)";
+    };
+    add(largest_checks.algebraic_energy,
+        "the energy identity from the matrices, i.e. the steps' linear "
+        "solves,",
+        "algebraic_energy_residual");
+    add(largest_checks.quadrature_energy,
+        "the energy identity by quadrature of the fields and loads",
+        "quadrature_energy_residual");
+    add(largest_checks.friction_law_excess,
+        "the friction law at the converged slip rates",
+        "friction_law_residual");
+    add(largest_checks.negative_friction_power,
+        "the friction power on the slipping nodes, which must not be "
+        "negative,",
+        "friction_dissipation");
+    add(largest_checks.moment_balance,
+        "the balance of moments about the z-axis (the reactions of the "
+        "constraints must have no moment)",
+        "reaction_moment");
+    std::ostringstream message;
+    message << "Self-check failed (tolerance " << self_check_tolerance
+            << "):" << failures.str() << "\nThe results in '"
+            << parameters.output.directory
+            << "' are not a solution of the scheme.";
+    AssertThrow(failures.str().empty(), ExcMessage(message.str()));
+  }
+
+
+  template <int dim>
+  void ContactProblem<dim>::set_sabotage(const Sabotage<dim> &injected)
+  {
+    sabotage = injected;
+  }
+
+
+#define INSTANTIATE(dim)                                                    \
+  template FieldIntegrals ContactProblem<dim>::field_integrals(             \
+    const FastVector &, const FastVector &, const FastVector &) const;      \
+  template FastVector ContactProblem<dim>::fast_ghosted(const VectorType &) \
+    const;                                                                  \
+  template void   ContactProblem<dim>::setup_moment_balance();              \
+  template void   ContactProblem<dim>::start_self_checks();                 \
+  template double ContactProblem<dim>::update_moments(const LoadPower &);   \
+  template void   ContactProblem<dim>::check_step();                        \
+  template void   ContactProblem<dim>::print_self_checks() const;           \
+  template void   ContactProblem<dim>::print_why_moments_are_not_checked()  \
+    const;                                                                  \
+  template void ContactProblem<dim>::require_self_checks() const;           \
+  template void ContactProblem<dim>::set_sabotage(const Sabotage<dim> &);
+
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace Contact
