@@ -1,8 +1,8 @@
 /**
  * The command line of the program: `contact [--set Section/Entry=value]...
- * scene.prm`. The dimension is read from the .prm first ('Dimension'),
- * then the whole file is parsed and checked and ContactProblem<2> or <3>
- * runs.
+ * scene.prm`. The scene is read and checked (prm_reader.h), and the driver
+ * it asks for runs in its dimension: a convergence study, a run to a
+ * target error, a run with its error estimate, or a single run.
  */
 #ifndef contact_run_h
 #define contact_run_h
@@ -16,13 +16,6 @@ namespace Contact
 {
   /** Runs the program; user errors are thrown as dealii::ExceptionBase. */
   void run_from_command_line(const int argc, const char *const *argv);
-
-  /** Sets 'Section/Entry' = value in prm, as --set does (with the same
-   *  message for an entry that is not declared or a value that does not
-   *  fit). */
-  void apply_override(ParameterHandler  &prm,
-                      const std::string &path,
-                      const std::string &value);
 
   /** The parameters of `parameter_file` with overrides 'Section/Entry=value'
    *  applied, read and checked as by the command line. */

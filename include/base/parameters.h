@@ -14,6 +14,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <base/friction_laws.h>
+
 #include <map>
 #include <memory>
 #include <string>
@@ -246,17 +248,10 @@ namespace Contact
 
   struct FrictionParameters
   {
-    enum class Law
-    {
-      none,
-      constant,
-      slip_rate_weakening
-    };
-    Law    law;
-    double bound_S;
-    double a;
-    double b;
-    double alpha;
+    /** The law of 'Friction law' with its own entries read and checked
+     *  (FrictionLaws::create()); copies of the parameters share it. */
+    std::shared_ptr<const FrictionLaws::Interface> law;
+    double                                         bound_S;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);

@@ -8,8 +8,6 @@
 #ifndef contact_error_estimate_h
 #define contact_error_estimate_h
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <core/contact_problem.h>
 #include <base/parameters.h>
 
@@ -74,26 +72,6 @@ namespace Contact
   RichardsonEstimate field_error_estimate(const double d_fine,
                                           const double d_coarse,
                                           const double d_across);
-
-  /** A version of the scene `base`: element degree, h halved `finer`
-   *  times (doubled for negative values; a mesh file refined `finer` times
-   *  more), `n_steps` steps to T, written to `directory`. A quiet version
-   *  (a coarse run, a pilot) writes no VTU, Gamma_3 history or checkpoint
-   *  and runs without estimate or target; the others have the output of
-   *  `base` and its error estimate. */
-  struct SceneVersion
-  {
-    unsigned int degree;
-    int          finer;
-    unsigned int n_steps;
-    std::string  directory;
-    bool         quiet;
-  };
-
-  /** The parameters of `version`, set in prm (as --set would) and parsed. */
-  Parameters parameters_of_version(ParameterHandler   &prm,
-                                   const Parameters   &base,
-                                   const SceneVersion &version);
 
   /** One row of an estimate's table: a quantity's value (for the V-norm
    *  ||eps(u_h(T))||), its differences to the runs with 2h and 4h (for the
@@ -186,8 +164,7 @@ namespace Contact
    *  known orders in h and k is extrapolated with both (error_estimate.cc).
    */
   template <int dim>
-  EstimatedRun run_with_error_estimate(ParameterHandler  &prm,
-                                       const Parameters  &parameters,
+  EstimatedRun run_with_error_estimate(const Parameters  &parameters,
                                        const KnownOrders &orders = {});
 } // namespace Contact
 

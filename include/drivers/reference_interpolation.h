@@ -61,6 +61,21 @@ namespace Contact
     unsigned int                                          first_node = 0;
     std::vector<Point<dim>>                               all_nodes;
   };
+
+
+  /** ||eps(a - b)||, the V-norm of the difference of two fields in the
+   *  finite element space of `problem` (its own fields, or fields of other
+   *  runs interpolated onto it): the distance by which the drivers compare
+   *  runs. */
+  template <int dim>
+  double strain_distance(const ContactProblem<dim> &problem,
+                         const VectorType          &a,
+                         const VectorType          &b)
+  {
+    VectorType difference(a);
+    difference -= b;
+    return problem.strain_norm(difference);
+  }
 } // namespace Contact
 
 #endif

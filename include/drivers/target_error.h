@@ -7,8 +7,6 @@
 #ifndef contact_target_error_h
 #define contact_target_error_h
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <base/parameters.h>
 
 namespace Contact
@@ -16,7 +14,7 @@ namespace Contact
   /** Runs the pilots, chooses degree, h and k, and runs the choice with its
    *  error estimate; prints and writes target.txt. */
   template <int dim>
-  void run_to_target(ParameterHandler &prm, const Parameters &parameters);
+  void run_to_target(const Parameters &parameters);
 } // namespace Contact
 
 #endif

@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace Contact
@@ -30,10 +31,13 @@ namespace Contact
   constexpr double weakening_cap_fraction = 0.9;
 
   /**
-   * The friction coefficient mu(s) of the slip rate s = |w_tau| and the
-   * slip threshold mu(s) S of (3.6). For the slip rate weakening law this
-   * is the paper's (6.1), mu(s) = (a - b) exp(-alpha s) + b, whose one-sided
-   * Lipschitz constant (H(mu)(c)) is lambda = (a - b) alpha.
+   * The slip threshold mu(s) S of (3.6) of the slip rate s = |w_tau|, for
+   * the law of the entry 'Friction law' (base/friction_laws.h; for the slip
+   * rate weakening law the paper's (6.1), mu(s) = (a - b) exp(-alpha s) + b,
+   * whose one-sided Lipschitz constant (H(mu)(c)) is lambda = (a - b) alpha).
+   * What holds for every law is decided here once: no friction term where
+   * S = 0, and a rate independent law has the derivative 0 and the
+   * potential S mu(0) s. Each function costs at most one virtual call.
    */
   class FrictionLaw
   {
@@ -52,7 +56,7 @@ namespace Contact
     /** j(v) = S int_0^|v| mu(r) dr of (3.8), for the step's energy. */
     double potential(const double slip_velocity) const;
 
-    /** No friction term at all (law 'none' or S = 0). */
+    /** No friction term at all (mu = 0, e.g. law 'none', or S = 0). */
     bool is_frictionless() const;
 
     /** mu does not depend on s: one Tresca problem per step suffices. */
@@ -62,11 +66,12 @@ namespace Contact
     double one_sided_lipschitz_constant() const;
 
   private:
-    const FrictionParameters::Law law;
-    const double                  S;
-    const double                  a;
-    const double                  b;
-    const double                  alpha;
+    /** Shared with the parameters it was read from; immutable. */
+    const std::shared_ptr<const FrictionLaws::Interface> law;
+    const double                                         S;
+    /** The law's properties, asked once rather than per node. */
+    const bool frictionless;
+    const bool rate_independent;
   };
 
 

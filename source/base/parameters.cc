@@ -519,55 +519,32 @@ namespace Contact
 
   void FrictionParameters::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Friction");
+    prm.enter_subsection(FrictionLaws::subsection);
     {
-      prm.declare_entry(
-        "Friction law",
-        "slip rate weakening",
-        Patterns::Selection("none|constant|slip rate weakening"),
-        "none: frictionless Gamma_3; constant: mu = a; slip rate weakening: "
-        "mu(s) = (a - b) exp(-alpha s) + b, the paper's (6.1).");
+      // 'Friction law' (its names, default and help text) and the entries of
+      // each law come from the registry of the laws
+      // (source/base/friction_laws/). The laws' entries follow S, so that the
+      // used parameters of a run, printed in the order of declaration, list
+      // S next to the law.
+      FrictionLaws::declare_law_entry(prm);
       prm.declare_entry("Friction bound S",
                         "100",
                         Patterns::Double(0),
                         "S >= 0 [N/m^(dim-1)]: the slip threshold is mu S "
                         "(3.6).");
-      prm.declare_entry("a", "1", Patterns::Double(0), "mu(0) = a >= 0.");
-      prm.declare_entry("b",
-                        "0.1",
-                        Patterns::Double(0),
-                        "mu(inf) = b, b <= a.");
-      prm.declare_entry("alpha",
-                        "200",
-                        Patterns::Double(0),
-                        "Decay rate alpha >= 0 [s/m] of (6.1).");
+      FrictionLaws::declare_parameters(prm);
     }
     prm.leave_subsection();
   }
 
   void FrictionParameters::parse_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Friction");
+    prm.enter_subsection(FrictionLaws::subsection);
     {
-      const std::string name = prm.get("Friction law");
-      law                    = (name == "none"     ? Law::none :
-                                name == "constant" ? Law::constant :
-                                                     Law::slip_rate_weakening);
-      bound_S                = prm.get_double("Friction bound S");
-      a                      = prm.get_double("a");
-      b                      = prm.get_double("b");
-      alpha                  = prm.get_double("alpha");
+      bound_S = prm.get_double("Friction bound S");
+      law     = FrictionLaws::create(prm.get("Friction law"), prm);
     }
     prm.leave_subsection();
-
-    if (law == Law::slip_rate_weakening)
-      {
-        check_entry(b <= a, "Friction/b", b, "0 <= b <= a");
-        check_entry(alpha > 0 || a == b,
-                    "Friction/alpha",
-                    alpha,
-                    "alpha > 0, or alpha = 0 together with a = b");
-      }
   }
 
 
@@ -1218,8 +1195,7 @@ namespace Contact
     // On a P2 triangle the integral of a vertex basis function is zero:
     // the nodal friction weights m_p of Gamma_3 would vanish at the vertices.
     AssertThrow(!(dimension == 3 && geometry.simplex_cells &&
-                  geometry.fe_degree > 1 &&
-                  friction.law != FrictionParameters::Law::none),
+                  geometry.fe_degree > 1 && !friction.law->is_frictionless()),
                 ExcMessage("Entry 'Geometry/Finite element degree': P" +
                            std::to_string(geometry.fe_degree) +
                            " on tetrahedra gives zero nodal friction weights "

@@ -6,6 +6,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <base/dimensions.h>
 #include <core/contact_problem.h>
 
 #include <algorithm>
@@ -38,17 +39,17 @@ namespace Contact
     const double mu1      = material.viscosity_mu1;
     const double mu2      = material.viscosity_mu2;
 
-    FEValues<dim>                        fe_values(*mapping,
-                            fe,
-                            quadrature,
+    FEValues<dim>                        fe_values(*space.mapping,
+                            space.fe,
+                            space.quadrature,
                             update_gradients | update_JxW_values);
-    FEValues<dim>                        mass_values(*mapping,
-                              fe,
-                              mass_quadrature,
+    FEValues<dim>                        mass_values(*space.mapping,
+                              space.fe,
+                              space.mass_quadrature,
                               update_values | update_quadrature_points |
                                 update_JxW_values);
     const FEValuesExtractors::Vector     displacements(0);
-    const unsigned int                   n_dofs = fe.n_dofs_per_cell();
+    const unsigned int                   n_dofs = space.fe.n_dofs_per_cell();
     FullMatrix<double>                   cell_mass(n_dofs, n_dofs);
     FullMatrix<double>                   cell_viscosity(n_dofs, n_dofs);
     FullMatrix<double>                   cell_elasticity(n_dofs, n_dofs);
@@ -59,7 +60,7 @@ namespace Contact
     std::vector<Vector<double>> cell_momentum(dim, Vector<double>(n_dofs));
     Vector<double>              cell_angular_momentum(n_dofs);
 
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
@@ -106,24 +107,25 @@ namespace Contact
                   }
             }
           cell->get_dof_indices(dof_indices);
-          constraints.distribute_local_to_global(cell_mass,
-                                                 dof_indices,
-                                                 mass_matrix);
-          constraints.distribute_local_to_global(cell_viscosity,
-                                                 dof_indices,
-                                                 viscosity_matrix);
-          constraints.distribute_local_to_global(cell_elasticity,
-                                                 dof_indices,
-                                                 elasticity_matrix);
+          space.constraints.distribute_local_to_global(cell_mass,
+                                                       dof_indices,
+                                                       matrices.mass);
+          space.constraints.distribute_local_to_global(cell_viscosity,
+                                                       dof_indices,
+                                                       matrices.viscosity);
+          space.constraints.distribute_local_to_global(cell_elasticity,
+                                                       dof_indices,
+                                                       matrices.elasticity);
           for (unsigned int d = 0; d < dim; ++d)
-            momentum_density[d].add(dof_indices, cell_momentum[d]);
-          angular_momentum_density.add(dof_indices, cell_angular_momentum);
+            matrices.momentum_density[d].add(dof_indices, cell_momentum[d]);
+          matrices.angular_momentum_density.add(dof_indices,
+                                                cell_angular_momentum);
         }
-    for (VectorType &vector : momentum_density)
+    for (VectorType &vector : matrices.momentum_density)
       vector.compress(VectorOperation::add);
-    angular_momentum_density.compress(VectorOperation::add);
+    matrices.angular_momentum_density.compress(VectorOperation::add);
     for (MatrixType *matrix :
-         {&mass_matrix, &viscosity_matrix, &elasticity_matrix})
+         {&matrices.mass, &matrices.viscosity, &matrices.elasticity})
       matrix->compress(VectorOperation::add);
     form_system_matrix();
   }
@@ -135,246 +137,10 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::form_system_matrix()
   {
-    system_matrix.copy_from(mass_matrix);
-    system_matrix *= 1. / time_step;
-    system_matrix.add(1., viscosity_matrix);
-    system_matrix.add(time_step, elasticity_matrix);
-  }
-
-
-  // @sect4{ContactProblem::visit_loads}
-
-  // F_n = f(t_n) of (5.2): the body force f_0 in Omega and the tractions
-  // f_2 on Gamma_2. With a manufactured solution they come from it (f_2 =
-  // sigma n on every side that is neither clamped nor in contact), and its
-  // tangential load f_3 on Gamma_3 acts with the nodal weights m_p of the
-  // friction term. Every cell that carries a load is handed to `visit_cell`
-  // with its (unassembled) cell vector, every node of Gamma_3 with a force
-  // to `visit_node`: assemble_load() assembles them, load_power() tests
-  // them with a velocity.
-  template <int dim>
-  void ContactProblem<dim>::visit_loads(const double       load_time,
-                                        const bool         with_body_force,
-                                        const bool         with_surface_loads,
-                                        const CellVisitor &visit_cell,
-                                        const NodeVisitor &visit_node) const
-  {
-    body_force->set_time(load_time);
-    for (const auto &traction : tractions)
-      traction.second->set_time(load_time);
-
-    FEValues<dim>                    fe_values(*mapping,
-                            fe,
-                            quadrature,
-                            update_values | update_quadrature_points |
-                              update_JxW_values);
-    FEFaceValues<dim>                fe_face_values(*mapping,
-                                     fe,
-                                     face_quadrature,
-                                     update_values | update_quadrature_points |
-                                       update_normal_vectors |
-                                       update_JxW_values);
-    const FEValuesExtractors::Vector displacements(0);
-    const unsigned int               n_dofs = fe.n_dofs_per_cell();
-    Vector<double>                   cell_rhs(n_dofs);
-    Vector<double>                   value(dim);
-
-    const auto add_force = [&](const FEValuesBase<dim> &values,
-                               const auto              &force_at) {
-      for (const unsigned int q : values.quadrature_point_indices())
-        {
-          const Tensor<1, dim> f = force_at(q);
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            cell_rhs(i) +=
-              values[displacements].value(i, q) * f * values.JxW(q);
-        }
-    };
-    const auto parsed = [&](const FEValuesBase<dim> &values,
-                            const Function<dim>     &function) {
-      return [&](const unsigned int q) {
-        function.vector_value(values.quadrature_point(q), value);
-        Tensor<1, dim> f;
-        for (unsigned int d = 0; d < dim; ++d)
-          f[d] = value[d];
-        return f;
-      };
-    };
-    const auto exact_body_force = [&](const unsigned int q) {
-      return exact_solution->body_force(fe_values.quadrature_point(q),
-                                        load_time);
-    };
-    const auto exact_traction = [&](const unsigned int q) {
-      return exact_solution->stress(fe_face_values.quadrature_point(q),
-                                    load_time) *
-             fe_face_values.normal_vector(q);
-    };
-    const auto is_free_side = [&](const types::boundary_id id) {
-      const auto &boundary = parameters.boundary;
-      return std::count(boundary.clamped_ids.begin(),
-                        boundary.clamped_ids.end(),
-                        id) +
-               std::count(boundary.contact_ids.begin(),
-                          boundary.contact_ids.end(),
-                          id) ==
-             0;
-    };
-
-    // The surface loads alone (every step, when the body force is constant)
-    // touch the boundary cells only.
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && (with_body_force || cell->at_boundary()))
-        {
-          cell_rhs    = 0;
-          bool loaded = with_body_force;
-          if (with_body_force)
-            {
-              fe_values.reinit(cell);
-              if (exact_solution)
-                add_force(fe_values, exact_body_force);
-              else
-                add_force(fe_values, parsed(fe_values, *body_force));
-            }
-          for (const unsigned int f : cell->face_indices())
-            if (with_surface_loads && cell->face(f)->at_boundary())
-              {
-                const types::boundary_id id = cell->face(f)->boundary_id();
-                if (exact_solution && is_free_side(id))
-                  {
-                    fe_face_values.reinit(cell, f);
-                    add_force(fe_face_values, exact_traction);
-                    loaded = true;
-                  }
-                else if (!exact_solution && tractions.count(id) != 0)
-                  {
-                    fe_face_values.reinit(cell, f);
-                    add_force(fe_face_values,
-                              parsed(fe_face_values, *tractions.at(id)));
-                    loaded = true;
-                  }
-              }
-          if (loaded)
-            visit_cell(cell, cell_rhs);
-        }
-
-    if (exact_solution && with_surface_loads)
-      for (const ContactNode<dim> &node : friction_solver->boundary().nodes)
-        visit_node(node,
-                   node.weight * exact_solution->contact_load(node.location,
-                                                              node.normal,
-                                                              load_time));
-  }
-
-
-  // @sect4{ContactProblem::assemble_load}
-
-  // The load vector, condensed with the constraints like the matrices.
-  template <int dim>
-  void ContactProblem<dim>::assemble_load(const double load_time,
-                                          VectorType  &load_vector,
-                                          const bool   with_body_force,
-                                          const bool   with_surface_loads) const
-  {
-    TimerOutput::Scope                   t(computing_timer, "Assembly");
-    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-    load_vector = 0;
-    visit_loads(
-      load_time,
-      with_body_force,
-      with_surface_loads,
-      [&](const auto &cell, const Vector<double> &cell_rhs) {
-        cell->get_dof_indices(dof_indices);
-        constraints.distribute_local_to_global(cell_rhs,
-                                               dof_indices,
-                                               load_vector);
-      },
-      [&](const ContactNode<dim> &node, const Tensor<1, dim> &force) {
-        friction_solver->boundary().add_nodal_force(node, force, load_vector);
-      });
-    load_vector.compress(VectorOperation::add);
-  }
-
-
-  // @sect4{ContactProblem::assemble_constant_body_load}
-
-  // A body force that does not depend on t is assembled once; its cell
-  // vectors are kept for load_power().
-  template <int dim>
-  void ContactProblem<dim>::assemble_constant_body_load()
-  {
-    TimerOutput::Scope                   t(computing_timer, "Assembly");
-    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-    constant_body_load.reinit(locally_owned_dofs, mpi_communicator);
-    constant_body_cell_loads.clear();
-    visit_loads(
-      0.,
-      true,
-      false,
-      [&](const auto &cell, const Vector<double> &cell_rhs) {
-        constant_body_cell_loads.push_back(cell_rhs);
-        cell->get_dof_indices(dof_indices);
-        constraints.distribute_local_to_global(cell_rhs,
-                                               dof_indices,
-                                               constant_body_load);
-      },
-      [](const ContactNode<dim> &, const Tensor<1, dim> &) {});
-    constant_body_load.compress(VectorOperation::add);
-  }
-
-
-  // @sect4{ContactProblem::load_power}
-
-  // F(t) . w for fields w in V_h (ghosted), from the loads' expressions at
-  // time t and the fields' values on each cell, without the assembled load
-  // vector: int f_0 . w_h dx + int_Gamma2 f_2 . w_h ds (+ the nodal f_3 of
-  // a manufactured solution), with the quadrature of the assembly. The
-  // loads are evaluated once for all fields (the velocity's power and the
-  // rotation's moment), and with each the sum of the magnitudes of the
-  // products it adds up (of every cell's and node's entry), the scale of its
-  // round-off. A body force constant in time is integrated once
-  // (constant_body_cell_loads holds its cell vectors).
-  template <int dim>
-  std::vector<LoadPower> ContactProblem<dim>::load_power(
-    const double                           load_time,
-    const std::vector<const FastVector *> &fields) const
-  {
-    Vector<double> w_cell(fe.n_dofs_per_cell());
-    // Power and magnitude of field i at 2 i and 2 i + 1, summed at once.
-    std::vector<double> sums(2 * fields.size());
-    const auto          add = [&](const unsigned int i, const double product) {
-      sums[2 * i] += product;
-      sums[2 * i + 1] += std::abs(product);
-    };
-    const auto add_cell = [&](const auto           &cell,
-                              const Vector<double> &cell_rhs) {
-      for (unsigned int i = 0; i < fields.size(); ++i)
-        {
-          cell->get_dof_values(*fields[i], w_cell);
-          for (unsigned int j = 0; j < w_cell.size(); ++j)
-            add(i, cell_rhs[j] * w_cell[j]);
-        }
-    };
-    visit_loads(load_time,
-                !body_force_is_constant,
-                true,
-                add_cell,
-                [&](const ContactNode<dim> &node, const Tensor<1, dim> &force) {
-                  if (node.locally_owned)
-                    for (unsigned int i = 0; i < fields.size(); ++i)
-                      for (unsigned int d = 0; d < dim; ++d)
-                        add(i, force[d] * (*fields[i])[node.dofs[d]]);
-                });
-    if (body_force_is_constant)
-      {
-        unsigned int index = 0;
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            add_cell(cell, constant_body_cell_loads[index++]);
-      }
-    Utilities::MPI::sum(sums, mpi_communicator, sums);
-    std::vector<LoadPower> result(fields.size());
-    for (unsigned int i = 0; i < fields.size(); ++i)
-      result[i] = {sums[2 * i], sums[2 * i + 1]};
-    return result;
+    matrices.system.copy_from(matrices.mass);
+    matrices.system *= 1. / time_step;
+    matrices.system.add(1., matrices.viscosity);
+    matrices.system.add(time_step, matrices.elasticity);
   }
 
 
@@ -386,27 +152,21 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::set_initial_values()
   {
-    const Function<dim>           *u0 = initial_displacement.get();
-    const Function<dim>           *u1 = initial_velocity.get();
-    std::unique_ptr<Function<dim>> exact_u0, exact_u1;
-    if (exact_solution)
-      {
-        exact_u0 = std::make_unique<typename ManufacturedSolution<dim>::Field>(
-          *exact_solution, false);
-        exact_u1 = std::make_unique<typename ManufacturedSolution<dim>::Field>(
-          *exact_solution, true);
-        u0 = exact_u0.get();
-        u1 = exact_u1.get();
-      }
-    VectorTools::interpolate(*mapping, dof_handler, *u0, displacement);
-    VectorTools::interpolate(*mapping, dof_handler, *u1, velocity);
+    VectorTools::interpolate(*space.mapping,
+                             space.dof_handler,
+                             loads->initial_displacement(),
+                             state.displacement);
+    VectorTools::interpolate(*space.mapping,
+                             space.dof_handler,
+                             loads->initial_velocity(),
+                             state.velocity);
     if (!exact_solution)
       {
-        warn_of_normal_component(displacement, "Initial displacement");
-        warn_of_normal_component(velocity, "Initial velocity");
+        warn_of_normal_component(state.displacement, "Initial displacement");
+        warn_of_normal_component(state.velocity, "Initial velocity");
       }
-    constraints.distribute(displacement);
-    constraints.distribute(velocity);
+    space.constraints.distribute(state.displacement);
+    space.constraints.distribute(state.velocity);
     // Before anything is written: a NaN here would be blamed on step 1.
     const auto check_finite = [](const VectorType  &values,
                                  const std::string &entry,
@@ -422,25 +182,26 @@ namespace Contact
                              "allowed are expressions finite on the whole "
                              "body."));
     };
-    check_finite(displacement,
+    check_finite(state.displacement,
                  "Initial displacement",
                  parameters.loads.initial_displacement);
-    check_finite(velocity,
+    check_finite(state.velocity,
                  "Initial velocity",
                  parameters.loads.initial_velocity);
-    old_displacement = displacement;
-    old_velocity     = velocity;
+    state.old_displacement = state.displacement;
+    state.old_velocity     = state.velocity;
 
-    mass_times_velocity.reinit(velocity);
-    elasticity_times_displacement.reinit(displacement);
-    condensed_product(mass_matrix, velocity, mass_times_velocity);
-    condensed_product(elasticity_matrix,
-                      displacement,
-                      elasticity_times_displacement);
-    energy         = EnergyBalance();
-    energy.kinetic = 0.5 * (mass_times_velocity * velocity);
-    energy.elastic = 0.5 * (elasticity_times_displacement * displacement);
-    energy.initial = energy.kinetic + energy.elastic;
+    state.mass_times_velocity.reinit(state.velocity);
+    state.elasticity_times_displacement.reinit(state.displacement);
+    condensed_product(matrices.mass, state.velocity, state.mass_times_velocity);
+    condensed_product(matrices.elasticity,
+                      state.displacement,
+                      state.elasticity_times_displacement);
+    state.energy         = EnergyBalance();
+    state.energy.kinetic = 0.5 * (state.mass_times_velocity * state.velocity);
+    state.energy.elastic =
+      0.5 * (state.elasticity_times_displacement * state.displacement);
+    state.energy.initial = state.energy.kinetic + state.energy.elastic;
   }
 
 
@@ -485,21 +246,7 @@ namespace Contact
                                               VectorType       &product) const
   {
     matrix.vmult(product, x);
-    constraints.set_zero(product);
-  }
-
-
-  // @sect4{ContactProblem::momentum}
-
-  // int rho w dx: not condensed, since the translations it is tested with
-  // need not lie in V_h.
-  template <int dim>
-  Tensor<1, dim> ContactProblem<dim>::momentum() const
-  {
-    Tensor<1, dim> result;
-    for (unsigned int d = 0; d < dim; ++d)
-      result[d] = momentum_density[d] * velocity;
-    return result;
+    space.constraints.set_zero(product);
   }
 
 
@@ -512,10 +259,10 @@ namespace Contact
   template <int dim>
   VelocityProducts ContactProblem<dim>::velocity_products() const
   {
-    VelocityProducts products{velocity, velocity, velocity};
-    condensed_product(mass_matrix, velocity, products.mass);
-    condensed_product(viscosity_matrix, velocity, products.viscosity);
-    condensed_product(elasticity_matrix, velocity, products.elasticity);
+    VelocityProducts products{state.velocity, state.velocity, state.velocity};
+    condensed_product(matrices.mass, state.velocity, products.mass);
+    condensed_product(matrices.viscosity, state.velocity, products.viscosity);
+    condensed_product(matrices.elasticity, state.velocity, products.elasticity);
     return products;
   }
 
@@ -533,52 +280,39 @@ namespace Contact
   {
     TimerOutput::Scope t(computing_timer, "Energy balance");
     const double       k     = time_step;
-    const double       w_M_w = products.mass * velocity;
-    energy.numerical_dissipation +=
-      0.5 * (w_M_w - 2. * (mass_times_velocity * velocity) +
-             mass_times_velocity * old_velocity) +
-      0.5 * k * k * (products.elasticity * velocity);
-    energy.kinetic = 0.5 * w_M_w;
-    VectorType B_u(elasticity_times_displacement);
+    const double       w_M_w = products.mass * state.velocity;
+    state.energy.numerical_dissipation +=
+      0.5 * (w_M_w - 2. * (state.mass_times_velocity * state.velocity) +
+             state.mass_times_velocity * state.old_velocity) +
+      0.5 * k * k * (products.elasticity * state.velocity);
+    state.energy.kinetic = 0.5 * w_M_w;
+    VectorType B_u(state.elasticity_times_displacement);
     B_u.add(k, products.elasticity);
-    energy.elastic = 0.5 * (B_u * displacement);
-    energy.viscous_dissipation += k * (products.viscosity * velocity);
-    energy.external_work += k * (load * velocity);
+    state.energy.elastic = 0.5 * (B_u * state.displacement);
+    state.energy.viscous_dissipation +=
+      k * (products.viscosity * state.velocity);
+    state.energy.external_work += k * (state.load * state.velocity);
     const ContactBoundary<dim> &gamma3 = friction_solver->boundary();
     if (!friction_law.is_frictionless())
-      energy.friction_dissipation +=
+      state.energy.friction_dissipation +=
         k * (friction_solver->state().friction_force *
-             gamma3.tangential_velocities(velocity));
+             gamma3.tangential_velocities(state.velocity));
   }
 
 
-#define INSTANTIATE(dim)                                                     \
-  template void ContactProblem<dim>::assemble_matrices();                    \
-  template void ContactProblem<dim>::form_system_matrix();                   \
-  template void ContactProblem<dim>::assemble_load(const double,             \
-                                                   VectorType &,             \
-                                                   const bool,               \
-                                                   const bool) const;        \
-  template void ContactProblem<dim>::visit_loads(const double,               \
-                                                 const bool,                 \
-                                                 const bool,                 \
-                                                 const CellVisitor &,        \
-                                                 const NodeVisitor &) const; \
-  template void ContactProblem<dim>::assemble_constant_body_load();          \
-  template std::vector<LoadPower> ContactProblem<dim>::load_power(           \
-    const double, const std::vector<const FastVector *> &) const;            \
-  template void ContactProblem<dim>::set_initial_values();                   \
-  template void ContactProblem<dim>::warn_of_normal_component(               \
-    const VectorType &, const std::string &) const;                          \
-  template void ContactProblem<dim>::condensed_product(const MatrixType &,   \
-                                                       const VectorType &,   \
-                                                       VectorType &) const;  \
-  template void ContactProblem<dim>::update_energy_balance(                  \
-    const VelocityProducts &);                                               \
-  template VelocityProducts ContactProblem<dim>::velocity_products() const;  \
-  template Tensor<1, dim>   ContactProblem<dim>::momentum() const;
+#define INSTANTIATE(dim)                                                    \
+  template void ContactProblem<dim>::assemble_matrices();                   \
+  template void ContactProblem<dim>::form_system_matrix();                  \
+  template void ContactProblem<dim>::set_initial_values();                  \
+  template void ContactProblem<dim>::warn_of_normal_component(              \
+    const VectorType &, const std::string &) const;                         \
+  template void ContactProblem<dim>::condensed_product(const MatrixType &,  \
+                                                       const VectorType &,  \
+                                                       VectorType &) const; \
+  template VelocityProducts ContactProblem<dim>::velocity_products() const; \
+  template void             ContactProblem<dim>::update_energy_balance(     \
+    const VelocityProducts &);
 
-  INSTANTIATE(2)
-  INSTANTIATE(3)
+  CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
 } // namespace Contact

@@ -24,7 +24,11 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <base/dimensions.h>
+#include <base/scene_variant.h>
 #include <core/contact_problem.h>
+#include <core/output_directory.h>
+#include <core/postprocessor.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -39,7 +43,8 @@ namespace Contact
 {
   namespace
   {
-    const std::string checkpoint_format = "contact checkpoint 6";
+    const std::string checkpoint_format = "contact checkpoint 7";
+    const ResultFiles checkpoint_files("checkpoint(\\.[0-9]+)?(\\.tmp)?");
 
     std::uint32_t crc32(const std::string &bytes)
     {
@@ -69,36 +74,19 @@ namespace Contact
     problem_entries(const std::string &used_parameters)
     {
       std::map<std::string, std::string> entries;
-      std::vector<std::string>           sections;
-      std::istringstream                 in(used_parameters);
-      for (std::string line; std::getline(in, line);)
+      for (auto [entry, value] : read_printed_entries(used_parameters))
         {
-          line = Utilities::trim(line);
-          if (line.rfind("subsection ", 0) == 0)
-            sections.push_back(Utilities::trim(line.substr(11)));
-          else if (line == "end" && !sections.empty())
-            sections.pop_back();
-          else if (line.rfind("set ", 0) == 0 &&
-                   line.find('=') != std::string::npos)
+          // The same mesh file however the .prm's path was typed.
+          std::error_code unresolved;
+          if (entry == Entry::mesh_file && !value.empty())
             {
-              std::string entry;
-              for (const std::string &section : sections)
-                entry += section + "/";
-              const std::size_t equal = line.find('=');
-              entry += Utilities::trim(line.substr(4, equal - 4));
-              std::string value = Utilities::trim(line.substr(equal + 1));
-              // The same mesh file however the .prm's path was typed.
-              std::error_code unresolved;
-              if (entry == Entry::mesh_file && !value.empty())
-                {
-                  const auto path =
-                    std::filesystem::weakly_canonical(value, unresolved);
-                  if (!unresolved)
-                    value = path.string();
-                }
-              if (!may_change_on_resume(entry))
-                entries[entry] = value;
+              const auto path =
+                std::filesystem::weakly_canonical(value, unresolved);
+              if (!unresolved)
+                value = path.string();
             }
+          if (!may_change_on_resume(entry))
+            entries[entry] = value;
         }
       return entries;
     }
@@ -123,79 +111,77 @@ namespace Contact
       return text;
     }
 
-    template <class Archive>
-    void serialize_vector(Archive &archive, VectorType &vector)
+    // What identifies the discrete problem a checkpoint belongs to (k to
+    // all digits), as stored in it and shown when it does not match. (The
+    // probes, whose columns the time series continues, are compared as
+    // entries.)
+    template <int dim>
+    std::string shape(const DoFHandler<dim> &dof_handler,
+                      const unsigned int     n_contact_nodes,
+                      const double           time_step,
+                      const bool             manufactured,
+                      const MPI_Comm         communicator)
     {
-      std::vector<double> values(vector.begin(), vector.end());
-      archive            &values;
-      AssertThrow(values.size() == vector.locally_owned_size(),
-                  ExcInternalError());
-      std::copy(values.begin(), values.end(), vector.begin());
+      std::ostringstream text;
+      text << dim << "D, " << dof_handler.n_dofs() << " unknowns, "
+           << n_contact_nodes << " nodes on Gamma_3, "
+           << Utilities::MPI::n_mpi_processes(communicator)
+           << " process(es), k = " << std::setprecision(17) << time_step
+           << (manufactured ? ", manufactured solution" : "");
+      return text.str();
+    }
+
+    // One file per process.
+    std::string checkpoint_name(const std::string &directory,
+                                const MPI_Comm     communicator)
+    {
+      std::string name = directory + "/checkpoint";
+      if (Utilities::MPI::n_mpi_processes(communicator) > 1)
+        name += "." + Utilities::int_to_string(
+                        Utilities::MPI::this_mpi_process(communicator));
+      return name;
+    }
+
+    // @sect4{read_payload}
+
+    // The checkpoint's bytes after its two header lines, checked against the
+    // size and CRC-32 stored there.
+    std::string read_payload(const std::string &name)
+    {
+      std::ifstream file(name, std::ios::binary);
+      AssertThrow(file,
+                  ExcMessage("Cannot read the checkpoint '" + name + "'."));
+      std::string format;
+      std::getline(file, format);
+      AssertThrow(format == checkpoint_format,
+                  ExcMessage("'" + name +
+                             "' is not a checkpoint this program "
+                             "reads: it does not begin with the line '" +
+                             checkpoint_format +
+                             "' (written by an older version, or damaged)."));
+      std::size_t   size     = 0;
+      std::uint32_t checksum = 0;
+      file >> size >> checksum;
+      file.get();
+      std::error_code error;
+      const auto      file_size = std::filesystem::file_size(name, error);
+      AssertThrow(file && !error &&
+                    file_size ==
+                      static_cast<std::uintmax_t>(file.tellg()) + size,
+                  ExcMessage("The checkpoint '" + name +
+                             "' is damaged: its size does not match its header "
+                             "(truncated?). Resume from another copy, or start "
+                             "the run again without --resume."));
+      std::string bytes(size, '\0');
+      file.read(bytes.data(), size);
+      AssertThrow(file && crc32(bytes) == checksum,
+                  ExcMessage("The checkpoint '" + name +
+                             "' is damaged: its checksum does not match its "
+                             "contents. Resume from another copy, or start the "
+                             "run again without --resume."));
+      return bytes;
     }
   } // namespace
-
-
-  // @sect4{ContactProblem::serialize_checkpoint_state}
-
-  // Everything a step reads from the past, in one function that reads or
-  // writes depending on the archive, so the two directions cannot differ.
-  template <int dim>
-  template <class Archive>
-  void ContactProblem<dim>::serialize_checkpoint_state(Archive &archive)
-  {
-    archive &step_number &time;
-    for (VectorType *vector : {&displacement,
-                               &velocity,
-                               &mass_times_velocity,
-                               &elasticity_times_displacement})
-      serialize_vector(archive, *vector);
-    // Member by member, as before the state was a struct of its own (the
-    // format stays that of the name above).
-    FrictionState friction_state = friction_solver->state();
-    friction_state.serialize(archive, 0);
-    friction_solver->set_state(friction_state);
-    archive &energy &energy_by_quadrature &largest_checks;
-    archive &totals.convexification_iterations &totals.active_set_iterations;
-    archive &totals.rejected_accelerations &totals.cycles_cured;
-    archive &totals.step_cuts &totals.newton_iterations;
-    archive &totals.newton_fallbacks &totals.solves_with_K;
-    archive                          &totals.cg_iterations;
-    for (ErrorNorms *errors : {&current_errors, &max_errors})
-      archive & errors->displacement_V & errors->velocity_L2 &
-        errors->displacement_L2;
-    archive &pvd_records &pending_report_times &slip_onset;
-  }
-
-
-  // @sect4{ContactProblem::checkpoint_shape}
-
-  // What identifies the discrete problem a checkpoint belongs to (k to all
-  // digits), as stored in it and shown when it does not match.
-  template <int dim>
-  std::string ContactProblem<dim>::checkpoint_shape() const
-  {
-    std::ostringstream text;
-    text << dim << "D, " << dof_handler.n_dofs() << " unknowns, "
-         << friction_solver->boundary().nodes.size() << " nodes on Gamma_3, "
-         << Utilities::MPI::n_mpi_processes(mpi_communicator)
-         << " process(es), k = " << std::setprecision(17) << time_step << ", "
-         << probes.size() << " probe(s)"
-         << (exact_solution ? ", manufactured solution" : "");
-    return text.str();
-  }
-
-
-  // @sect4{ContactProblem::checkpoint_name}
-
-  template <int dim>
-  std::string ContactProblem<dim>::checkpoint_name() const
-  {
-    std::string name = parameters.output.directory + "/checkpoint";
-    if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
-      name += "." + Utilities::int_to_string(
-                      Utilities::MPI::this_mpi_process(mpi_communicator));
-    return name;
-  }
 
 
   // @sect4{ContactProblem::require_checkpoint}
@@ -215,11 +201,12 @@ namespace Contact
              std::filesystem::exists(directory + "/checkpoint.0"))
       other = " There is one written by several processes ('" + directory +
               "/checkpoint.0', ...): resume it with as many processes.";
-    AssertThrow(std::filesystem::exists(checkpoint_name()),
+    const std::string name = checkpoint_name(directory, mpi_communicator);
+    AssertThrow(std::filesystem::exists(name),
                 ExcMessage("'" + Entry::resume +
                            "' (--resume): there is no "
                            "checkpoint '" +
-                           checkpoint_name() + "' for a run on " +
+                           name + "' for a run on " +
                            std::to_string(n_processes) + " process(es)." +
                            other +
                            " Checkpoints are written with "
@@ -247,30 +234,39 @@ namespace Contact
     const bool late =
       output.checkpoint_minutes > 0 &&
       checkpoint_timer.wall_time() >= 60. * output.checkpoint_minutes;
-    return step_number == n_time_steps ||
+    return state.step_number == n_time_steps ||
            (output.checkpoint_interval > 0 &&
-            step_number % output.checkpoint_interval == 0) ||
+            state.step_number % output.checkpoint_interval == 0) ||
            Utilities::MPI::max(late ? 1 : 0, mpi_communicator) == 1;
   }
 
 
   // @sect4{ContactProblem::save_checkpoint}
 
+  // Everything a step reads from the past: the step state, the nodal state
+  // of Gamma_3, and each postprocessor's own state (its totals, the
+  // records of its files, ...), in the order of their ranks.
   template <int dim>
   void ContactProblem<dim>::save_checkpoint()
   {
-    // The checkpoint lists the VTU records written so far.
-    finish_vtu();
     TimerOutput::Scope t(computing_timer, "Checkpoint");
-    const std::string  name = checkpoint_name();
+    const std::string  name =
+      checkpoint_name(parameters.output.directory, mpi_communicator);
     std::ostringstream payload(std::ios::binary);
     {
-      boost::archive::binary_oarchive    archive(payload);
-      std::string                        shape = checkpoint_shape();
+      boost::archive::binary_oarchive archive(payload);
+      std::string                     problem_shape =
+        shape(space.dof_handler,
+              friction_solver->boundary().nodes.size(),
+              time_step,
+              exact_solution != nullptr,
+              mpi_communicator);
       std::map<std::string, std::string> entries =
         problem_entries(parameters.used_parameters);
-      archive &shape &entries;
-      serialize_checkpoint_state(archive);
+      FrictionState friction_state = friction_solver->state();
+      archive &problem_shape &entries &state &friction_state;
+      for (const auto &postprocessor : postprocessors)
+        postprocessor->save(archive);
     }
     const std::string bytes = payload.str();
     {
@@ -299,19 +295,26 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::load_checkpoint()
   {
-    const std::string                  bytes = read_checkpoint_payload();
+    const std::string name =
+      checkpoint_name(parameters.output.directory, mpi_communicator);
+    const std::string                  bytes = read_payload(name);
     std::istringstream                 payload(bytes, std::ios::binary);
     boost::archive::binary_iarchive    archive(payload);
     std::string                        stored_shape;
     std::map<std::string, std::string> stored_entries;
     archive &stored_shape             &stored_entries;
-    const std::string                  name  = checkpoint_name();
-    const std::string                  shape = checkpoint_shape();
-    AssertThrow(stored_shape == shape,
+    const std::string                  problem_shape =
+      shape(space.dof_handler,
+            friction_solver->boundary().nodes.size(),
+            time_step,
+            exact_solution != nullptr,
+            mpi_communicator);
+    AssertThrow(stored_shape == problem_shape,
                 ExcMessage("The checkpoint '" + name +
                            "' belongs to another "
                            "discrete problem (" +
-                           stored_shape + ") than this .prm gives (" + shape +
+                           stored_shape + ") than this .prm gives (" +
+                           problem_shape +
                            "): resume with the scene, mesh, time step and "
                            "number of processes of the checkpointed run."));
     const std::string differences =
@@ -327,7 +330,12 @@ namespace Contact
                            "'Output/...' may change on --resume:" +
                            differences));
 
-    serialize_checkpoint_state(archive);
+    FrictionState   friction_state;
+    archive &state &friction_state;
+    friction_solver->set_state(friction_state);
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->load(archive);
+    const unsigned int step_number = state.step_number;
     AssertThrow(Utilities::MPI::min(step_number, mpi_communicator) ==
                   Utilities::MPI::max(step_number, mpi_communicator),
                 ExcMessage("The checkpoints of the processes in '" +
@@ -343,106 +351,17 @@ namespace Contact
                            std::to_string(n_time_steps) + " steps): '" +
                            Entry::end_time + "' is too small."));
     pcout << "Resumed from the checkpoint at step " << step_number
-          << " (t = " << time << ")." << std::endl;
-    cut_output_back_to_checkpoint();
+          << " (t = " << state.time << ")." << std::endl;
     checkpoint_timer.restart();
   }
 
 
-  // @sect4{ContactProblem::read_checkpoint_payload}
+#define INSTANTIATE(dim)                                         \
+  template void ContactProblem<dim>::require_checkpoint() const; \
+  template bool ContactProblem<dim>::checkpoint_due() const;     \
+  template void ContactProblem<dim>::save_checkpoint();          \
+  template void ContactProblem<dim>::load_checkpoint();
 
-  // The checkpoint's bytes after its two header lines, checked against the
-  // size and CRC-32 stored there.
-  template <int dim>
-  std::string ContactProblem<dim>::read_checkpoint_payload() const
-  {
-    const std::string name = checkpoint_name();
-    std::ifstream     file(name, std::ios::binary);
-    AssertThrow(file, ExcMessage("Cannot read the checkpoint '" + name + "'."));
-    std::string format;
-    std::getline(file, format);
-    AssertThrow(format == checkpoint_format,
-                ExcMessage("'" + name +
-                           "' is not a checkpoint this program "
-                           "reads: it does not begin with the line '" +
-                           checkpoint_format +
-                           "' (written by an older version, or damaged)."));
-    std::size_t   size     = 0;
-    std::uint32_t checksum = 0;
-    file >> size >> checksum;
-    file.get();
-    std::error_code error;
-    const auto      file_size = std::filesystem::file_size(name, error);
-    AssertThrow(file && !error &&
-                  file_size == static_cast<std::uintmax_t>(file.tellg()) + size,
-                ExcMessage("The checkpoint '" + name +
-                           "' is damaged: its size does not match its header "
-                           "(truncated?). Resume from another copy, or start "
-                           "the run again without --resume."));
-    std::string bytes(size, '\0');
-    file.read(bytes.data(), size);
-    AssertThrow(file && crc32(bytes) == checksum,
-                ExcMessage("The checkpoint '" + name +
-                           "' is damaged: its checksum does not match its "
-                           "contents. Resume from another copy, or start the "
-                           "run again without --resume."));
-    return bytes;
-  }
-
-
-  // @sect4{ContactProblem::cut_output_back_to_checkpoint}
-
-  // The killed run may have written rows and VTU records after its last
-  // checkpoint; the resumed run recomputes those steps, so the time series
-  // and the Gamma_3 history keep the rows up to the checkpoint's step and the
-  // PVD the records stored with it. Both are rewritten atomically.
-  template <int dim>
-  void ContactProblem<dim>::cut_output_back_to_checkpoint() const
-  {
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
-      return;
-    const std::string &directory = parameters.output.directory;
-    for (const auto &[name, written] :
-         {std::make_pair(directory + "/time_series.csv",
-                         parameters.output.write_time_series),
-          std::make_pair(directory + "/gamma3_history.csv",
-                         parameters.output.write_gamma3_history)})
-      if (written && std::filesystem::exists(name))
-        {
-          std::ifstream in(name);
-          std::ofstream out(name + ".tmp");
-          std::string   line;
-          if (std::getline(in, line))
-            out << line << '\n';
-          while (std::getline(in, line) && in.good() && !line.empty())
-            {
-              const unsigned int step =
-                std::stoul(line.substr(0, line.find(',')));
-              if (step > step_number)
-                break;
-              out << line << '\n';
-            }
-          out.flush();
-          AssertThrow(out,
-                      ExcMessage("Cannot write '" + name +
-                                 ".tmp': " + std::strerror(errno) + "."));
-          std::filesystem::rename(name + ".tmp", name);
-        }
-    write_pvd();
-  }
-
-
-#define INSTANTIATE(dim)                                                     \
-  template std::string ContactProblem<dim>::checkpoint_name() const;         \
-  template std::string ContactProblem<dim>::checkpoint_shape() const;        \
-  template bool        ContactProblem<dim>::checkpoint_due() const;          \
-  template void        ContactProblem<dim>::require_checkpoint() const;      \
-  template void        ContactProblem<dim>::save_checkpoint();               \
-  template void        ContactProblem<dim>::load_checkpoint();               \
-  template std::string ContactProblem<dim>::read_checkpoint_payload() const; \
-  template void ContactProblem<dim>::cut_output_back_to_checkpoint() const;
-
-  INSTANTIATE(2)
-  INSTANTIATE(3)
+  CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
 } // namespace Contact

@@ -1,97 +1,43 @@
-/* The constructor and the time loop of ContactProblem<dim>. */
+/* The constructor and the time loop of ContactProblem<dim>, and what a run
+   gives back. */
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
 
-#include <deal.II/distributed/fully_distributed_tria.h>
-#include <deal.II/distributed/tria.h>
-
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_simplex_p.h>
-#include <deal.II/fe/mapping_fe.h>
-#include <deal.II/fe/mapping_q.h>
+#include <deal.II/fe/fe_values.h>
 
 #include <deal.II/grid/grid_tools.h>
 
+#include <base/dimensions.h>
 #include <core/contact_problem.h>
+#include <core/output_directory.h>
+#include <core/postprocessor.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
-#include <sstream>
 
 namespace Contact
 {
   namespace
   {
-    template <int dim>
-    std::unique_ptr<Triangulation<dim>>
-    make_triangulation(const GeometryParameters &geometry,
-                       const MPI_Comm            communicator)
-    {
-      if (geometry.simplex_cells &&
-          Utilities::MPI::n_mpi_processes(communicator) > 1)
-        return std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
-          communicator);
-      if (geometry.simplex_cells)
-        return std::make_unique<Triangulation<dim>>();
-      return std::make_unique<parallel::distributed::Triangulation<dim>>(
-        communicator);
-    }
-
-    template <int dim>
-    std::unique_ptr<const FiniteElement<dim>>
-    make_scalar_element(const GeometryParameters &geometry)
-    {
-      if (geometry.simplex_cells)
-        return std::make_unique<FE_SimplexP<dim>>(geometry.fe_degree);
-      return std::make_unique<FE_Q<dim>>(geometry.fe_degree);
-    }
-
-    // The map of the reference cell: linear (straight edges), or of the
-    // 'Mapping degree', whose points between the vertices lie on the
-    // manifold of a curved boundary. Assembly, the normals of Gamma_3 and
-    // its nodal weights all use this one.
-    template <int dim>
-    std::unique_ptr<const Mapping<dim>>
-    make_mapping(const GeometryParameters &geometry)
-    {
-      if (geometry.simplex_cells)
-        return std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
-      return std::make_unique<MappingQ<dim>>(geometry.mapping_degree);
-    }
+    // Every run writes the parameters it used.
+    const ResultFiles parameter_file("parameters\\.prm");
   } // namespace
-
-
-  // @sect4{ContactProblem::gauss_rule}
-
-  // QGaussSimplex has rules of up to 4 points per direction in this deal.II
-  // (exact for degree 7); more are not needed for the degrees offered.
-  template <int dim>
-  Quadrature<dim>
-  ContactProblem<dim>::gauss_rule(const unsigned int n_points) const
-  {
-    if (parameters.geometry.simplex_cells)
-      return QGaussSimplex<dim>(std::min(n_points, 4u));
-    return QGauss<dim>(n_points);
-  }
-
-  template <int dim>
-  Quadrature<dim - 1>
-  ContactProblem<dim>::face_gauss_rule(const unsigned int n_points) const
-  {
-    if (parameters.geometry.simplex_cells)
-      return QGaussSimplex<dim - 1>(std::min(n_points, 4u));
-    return QGauss<dim - 1>(n_points);
-  }
 
 
   // @sect4{ContactProblem::ContactProblem}
 
+  // The load data are parsed here (Loads), so that an expression with an
+  // error is refused before anything is computed or written.
   template <int dim>
-  ContactProblem<dim>::ContactProblem(const Parameters &run_parameters)
+  ContactProblem<dim>::ContactProblem(const Parameters    &run_parameters,
+                                      const Sabotage<dim> &injected)
     : parameters(run_parameters)
     , friction_law(parameters.friction)
     , n_time_steps(parameters.time.n_steps())
@@ -99,88 +45,79 @@ namespace Contact
     , mpi_communicator(MPI_COMM_WORLD)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
-    , body_force_is_constant(
-        !parameters.verification.manufactured_solution &&
-        !expression_uses_variable(parameters.loads.body_force, "t"))
-    , triangulation(
-        make_triangulation<dim>(parameters.geometry, mpi_communicator))
-    , scalar_fe(make_scalar_element<dim>(parameters.geometry))
-    , fe(*scalar_fe, dim)
-    , mapping(make_mapping<dim>(parameters.geometry))
-    , quadrature(gauss_rule(parameters.geometry.fe_degree + 1))
-    , mass_quadrature(parameters.geometry.lumped_mass ?
-                        Quadrature<dim>(QGaussLobatto<dim>(
-                          parameters.geometry.fe_degree + 1)) :
-                        quadrature)
-    , face_quadrature(face_gauss_rule(parameters.geometry.fe_degree + 1))
-    , dof_handler(*triangulation)
-    , scalar_dof_handler(*triangulation)
-    , time(0)
-    , step_number(0)
-    , pending_report_times(parameters.output.report_times)
+    , sabotage(injected)
+    , exact_solution(parameters.verification.manufactured_solution ?
+                       std::make_unique<ManufacturedSolution<dim>>(parameters) :
+                       nullptr)
+    , space(parameters.geometry, mpi_communicator)
+    , loads(std::make_unique<Loads<dim>>(parameters,
+                                         exact_solution.get(),
+                                         space,
+                                         computing_timer,
+                                         sabotage.load_factor))
   {
     AssertThrow(parameters.dimension == dim, ExcInternalError());
-    body_force = parse_vector_function<dim>(Entry::body_force,
-                                            parameters.loads.body_force,
-                                            true);
-    initial_displacement =
-      parse_vector_function<dim>(Entry::initial_displacement,
-                                 parameters.loads.initial_displacement,
-                                 false);
-    initial_velocity =
-      parse_vector_function<dim>(Entry::initial_velocity,
-                                 parameters.loads.initial_velocity,
-                                 false);
-    for (const auto &[id, expression] : parameters.boundary.tractions)
-      tractions[id] =
-        parse_vector_function<dim>(Entry::tractions + " (boundary id " +
-                                     std::to_string(id) + ")",
-                                   expression,
-                                   true);
-    if (parameters.verification.manufactured_solution)
-      exact_solution = std::make_unique<ManufacturedSolution<dim>>(parameters);
+    for (const auto &[rank, create] : postprocessor_registry<dim>())
+      add_postprocessor(create());
+  }
+
+
+  // A run that ends with an error completes what output it can (the
+  // postprocessors' destructors): the members are destroyed in reverse
+  // order, the postprocessors first.
+  template <int dim>
+  ContactProblem<dim>::~ContactProblem()
+  {}
+
+
+  template <int dim>
+  void ContactProblem<dim>::add_postprocessor(
+    std::unique_ptr<Postprocessor<dim>> postprocessor)
+  {
+    postprocessor->observed = this;
+    postprocessors.push_back(std::move(postprocessor));
   }
 
 
   // @sect4{ContactProblem::run}
 
+  // Set-up, the initial state, the steps, and what the run gives back. The
+  // output directory is locked before anything else, and kept locked until
+  // the problem is destroyed: an error estimate's coarse runs still write
+  // under it.
   template <int dim>
   RunSummary ContactProblem<dim>::run()
   {
     run_timer.restart();
-    claim_output_directory();
-    if (parameters.output.resume)
+    output_directory_lock =
+      lock_output_directory(parameters.output.directory, mpi_communicator);
+    const bool resumed = parameters.output.resume;
+    if (resumed)
       require_checkpoint();
     make_grid();
     if (exact_solution)
-      check_manufactured_setup();
+      check_manufactured_scene(parameters);
     setup_system();
     assemble_matrices();
-    if (body_force_is_constant)
-      assemble_constant_body_load();
     set_initial_values();
-    start_self_checks();
     factorize_system_matrix();
-    friction_solver->reinit(system_matrix, *factorization);
-    friction_solver->set_initial_velocity(velocity);
+    friction_solver->reinit(matrices.system, *factorization);
+    friction_solver->set_initial_velocity(state.velocity);
 
-    step_number = 0;
-    if (parameters.output.resume)
+    state.step_number = 0;
+    if (resumed)
       load_checkpoint();
     prepare_output_directory();
-    if (!parameters.output.resume)
-      {
-        if (exact_solution)
-          current_errors = compute_errors();
-        write_time_series_row(StepStatistics());
-        write_gamma3_history_rows();
-        if (parameters.output.vtu_interval > 0)
-          write_vtu();
-      }
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->start(resumed);
+    const unsigned int first_step = state.step_number;
     time_loop();
-    finish_vtu();
-    step_number = n_time_steps;
-    print_summary();
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->end();
+    state.step_number = n_time_steps;
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->print_summary();
+    print_timings(n_time_steps - first_step);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
         // Removed only if empty: what a killed run left there stays.
@@ -188,13 +125,126 @@ namespace Contact
         std::filesystem::remove(parameters.output.directory + "/.partial",
                                 error);
       }
-    // The lock on the output directory is kept until the problem is
-    // destroyed: an error estimate's coarse runs still write under it.
-    require_self_checks();
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->require_success();
+    return summary();
+  }
 
+
+  // @sect4{ContactProblem::prepare_output_directory}
+
+  // A fresh run first removes the results an earlier run left in the
+  // directory (remove_results(): every file and run directory a part of
+  // the program registered; other files stay), so that its PVD lists only
+  // its own files and a later --resume cannot resume the earlier run. A
+  // resumed run keeps them; its postprocessors cut them back to the
+  // checkpoint's step. Then the parameters of this run are written.
+  template <int dim>
+  void ContactProblem<dim>::prepare_output_directory()
+  {
+    const std::string &directory = parameters.output.directory;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    if (!parameters.output.resume)
+      // The run that a target chose keeps the pilots it was chosen by.
+      remove_results(directory,
+                     parameters.accuracy.target_error > 0,
+                     mpi_communicator);
+    // Output that is written in pieces (VTU) is written here first and
+    // renamed into the directory when complete.
+    std::error_code error;
+    std::filesystem::create_directories(directory + "/.partial", error);
+    AssertThrow(!error,
+                ExcMessage("Cannot create '" + directory +
+                           "/.partial': " + error.message()));
+    std::ofstream used(directory + "/parameters.prm");
+    used << parameters.used_parameters;
+    used.flush();
+    AssertThrow(used,
+                ExcMessage("Cannot write '" + directory +
+                           "/parameters.prm': " + std::strerror(errno) + "."));
+  }
+
+
+  // @sect4{ContactProblem::time_loop}
+
+  // The steps t_1, ..., t_N (from the checkpoint's step on a resumed run),
+  // and after each what the postprocessors make of it, then a checkpoint
+  // if one is due.
+  template <int dim>
+  void ContactProblem<dim>::time_loop()
+  {
+    for (++state.step_number; state.step_number <= n_time_steps;
+         ++state.step_number)
+      {
+        state.time                      = state.step_number * time_step;
+        const StepStatistics statistics = advance(parameters.solver.step_cuts);
+        AssertThrow(std::isfinite(state.velocity.linfty_norm()) &&
+                      std::isfinite(state.energy.residual()),
+                    ExcMessage("Step " + std::to_string(state.step_number) +
+                               " (t = " + std::to_string(state.time) +
+                               ") produced a velocity or energy that is not "
+                               "a finite number; the results up to step " +
+                               std::to_string(state.step_number - 1) +
+                               " are written. Check the loads and material "
+                               "data for values that overflow."));
+        for (const auto &postprocessor : postprocessors)
+          postprocessor->after_step(statistics);
+        if (checkpoint_due())
+          save_checkpoint();
+      }
+  }
+
+
+  // @sect4{ContactProblem::print_timings}
+
+  // With 'Output/Print timings': where the wall time of the run went
+  // (`steps`: the steps this process's run computed).
+  template <int dim>
+  void ContactProblem<dim>::print_timings(const unsigned int steps) const
+  {
+    if (!parameters.output.print_timings)
+      return;
+    pcout << "Wall time: " << std::setprecision(4) << run_timer.wall_time()
+          << " s" << std::endl;
+    const double step_time = computing_timer.get_summary_data(
+                               TimerOutput::total_wall_time)["Time steps"] /
+                             std::max(steps, 1u);
+    const double substitution = substitution_time / std::max(steps, 1u);
+    if (!friction_law.is_frictionless())
+      pcout << "Contact solver: " << friction_solver->description()
+            << std::endl;
+    if (factorization && factorization->factor_size() > 0)
+      pcout << "Factor of K: "
+            << static_cast<long long>(factorization->factor_size())
+            << " nonzeros" << std::endl;
+    if (substitution > 0)
+      pcout << "Time per step " << 1e3 * step_time
+            << " ms = " << step_time / substitution
+            << (factorization->iterations() > 0 ?
+                  " solves with K (one: " :
+                  " substitutions with the factor of K (one: ")
+            << 1e3 * substitution << " ms)" << std::endl;
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    const auto peak =
+      Utilities::MPI::min_max_avg(memory.VmHWM / 1024., mpi_communicator);
+    pcout << "Peak memory per process: " << std::setprecision(4) << peak.max
+          << " MB (smallest " << peak.min << " MB, "
+          << Utilities::MPI::n_mpi_processes(mpi_communicator) << " processes)"
+          << std::endl;
+    computing_timer.print_summary();
+  }
+
+
+  // @sect4{ContactProblem::summary}
+
+  // What a driver gets of the run (collective). A box has round(edge / h)
+  // cells along each edge: the largest of their sizes is the h it has.
+  template <int dim>
+  RunSummary ContactProblem<dim>::summary() const
+  {
     RunSummary summary;
-    // A box has round(edge / h) cells along each edge: the largest of
-    // their sizes is the h it has.
     summary.cell_size = 0;
     if (parameters.geometry.is_box())
       for (unsigned int d = 0; d < dim; ++d)
@@ -208,128 +258,75 @@ namespace Contact
         }
     else
       summary.cell_size =
-        GridTools::maximal_cell_diameter(*triangulation, *mapping);
+        GridTools::maximal_cell_diameter(*space.triangulation, *space.mapping);
     summary.time_step           = time_step;
     summary.n_steps             = n_time_steps;
-    summary.n_dofs              = dof_handler.n_dofs();
+    summary.n_dofs              = space.dof_handler.n_dofs();
     summary.wall_time           = run_timer.wall_time();
-    summary.max_errors          = max_errors;
-    summary.displacement_V_norm = strain_norm(displacement);
-    summary.final_errors        = current_errors;
-    summary.final_quantities    = final_quantities();
+    summary.displacement_V_norm = strain_norm(state.displacement);
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->add_to_summary(summary);
     return summary;
   }
 
 
-  // @sect4{ContactProblem::time_loop}
+  // @sect4{ContactProblem::strain_norm}
 
-  // The steps t_1, ..., t_N (from the checkpoint's step on a resumed run),
-  // and after each what the user asked to see of it.
+  // Norms of a field of this problem's finite element space, such as the
+  // difference of two solutions interpolated onto this mesh; the Gauss rule
+  // of the assembly integrates them exactly on affine cells. The cells of
+  // this process need the field's ghost entries too.
   template <int dim>
-  void ContactProblem<dim>::time_loop()
+  double ContactProblem<dim>::strain_norm(const VectorType &field) const
   {
-    const unsigned int vtu_interval = parameters.output.vtu_interval;
-    time_loop_timer.restart();
-    for (++step_number; step_number <= n_time_steps; ++step_number)
-      {
-        time                            = step_number * time_step;
-        const StepStatistics statistics = advance(parameters.solver.step_cuts);
-        ++steps_timed;
-        AssertThrow(std::isfinite(velocity.linfty_norm()) &&
-                      std::isfinite(energy.residual()),
-                    ExcMessage("Step " + std::to_string(step_number) +
-                               " (t = " + std::to_string(time) +
-                               ") produced a velocity or energy that is not "
-                               "a finite number; the results up to step " +
-                               std::to_string(step_number - 1) +
-                               " are written. Check the loads and material "
-                               "data for values that overflow."));
-
-        if (exact_solution)
-          {
-            current_errors            = compute_errors();
-            max_errors.displacement_V = std::max(max_errors.displacement_V,
-                                                 current_errors.displacement_V);
-            max_errors.velocity_L2 =
-              std::max(max_errors.velocity_L2, current_errors.velocity_L2);
-            max_errors.displacement_L2 =
-              std::max(max_errors.displacement_L2,
-                       current_errors.displacement_L2);
-          }
-
-        totals.add_counts(statistics);
-
-        track_slip_onset();
-        write_time_series_row(statistics);
-        write_gamma3_history_rows();
-        if (vtu_interval > 0 && (step_number % vtu_interval == 0 ||
-                                 step_number == n_time_steps || report_due()))
-          write_vtu();
-        print_progress(statistics);
-        report_contact_state();
-        if (step_observer)
-          step_observer(*this);
-        if (checkpoint_due())
-          save_checkpoint();
-      }
-  }
-
-
-  // A run that ends with an error completes the VTU output of the last
-  // written step; on several processes the others may not get here, and
-  // its pieces stay in .partial/ (the PVD does not list them).
-  template <int dim>
-  ContactProblem<dim>::~ContactProblem()
-  {
-    if (pending_vtu && Utilities::MPI::n_mpi_processes(mpi_communicator) == 1)
-      try
+    const VectorType                     v = space.ghosted(field);
+    FEValues<dim>                        fe_values(*space.mapping,
+                            space.fe,
+                            space.quadrature,
+                            update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector     displacements(0);
+    std::vector<SymmetricTensor<2, dim>> eps(space.quadrature.size());
+    double                               sum = 0;
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
         {
-          finish_vtu();
+          fe_values.reinit(cell);
+          fe_values[displacements].get_function_symmetric_gradients(v, eps);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            sum += eps[q] * eps[q] * fe_values.JxW(q);
         }
-      catch (...)
-        {
-          // An output error while another error ends the run: the first
-          // one is reported.
-        }
+    return std::sqrt(Utilities::MPI::sum(sum, mpi_communicator));
   }
 
-
-  template <int dim>
-  void ContactProblem<dim>::set_step_observer(
-    const std::function<void(const ContactProblem<dim> &)> &observer)
-  {
-    step_observer = observer;
-  }
 
   template <int dim>
   unsigned int ContactProblem<dim>::get_step_number() const
   {
-    return step_number;
+    return state.step_number;
   }
 
   template <int dim>
   const DoFHandler<dim> &ContactProblem<dim>::get_dof_handler() const
   {
-    return dof_handler;
+    return space.dof_handler;
   }
 
   template <int dim>
   const Mapping<dim> &ContactProblem<dim>::get_mapping() const
   {
-    return *mapping;
+    return *space.mapping;
   }
 
   template <int dim>
   const VectorType &ContactProblem<dim>::get_displacement() const
   {
-    return displacement;
+    return state.displacement;
   }
-
 
   template <int dim>
   const VectorType &ContactProblem<dim>::get_velocity() const
   {
-    return velocity;
+    return state.velocity;
   }
 
   template <int dim>
@@ -338,7 +335,35 @@ namespace Contact
     return friction_solver->state().friction_force;
   }
 
+  template <int dim>
+  VectorType ContactProblem<dim>::ghosted(const VectorType &v) const
+  {
+    return space.ghosted(v);
+  }
 
-  template class ContactProblem<2>;
-  template class ContactProblem<3>;
+
+#define INSTANTIATE(dim)                                                        \
+  template ContactProblem<dim>::ContactProblem(const Parameters &,              \
+                                               const Sabotage<dim> &);          \
+  template ContactProblem<dim>::~ContactProblem();                              \
+  template void ContactProblem<dim>::add_postprocessor(                         \
+    std::unique_ptr<Postprocessor<dim>>);                                       \
+  template RunSummary ContactProblem<dim>::run();                               \
+  template void       ContactProblem<dim>::prepare_output_directory();          \
+  template void       ContactProblem<dim>::time_loop();                         \
+  template void ContactProblem<dim>::print_timings(const unsigned int) const;   \
+  template RunSummary ContactProblem<dim>::summary() const;                     \
+  template double ContactProblem<dim>::strain_norm(const VectorType &) const;   \
+  template unsigned int           ContactProblem<dim>::get_step_number() const; \
+  template const DoFHandler<dim> &ContactProblem<dim>::get_dof_handler()        \
+    const;                                                                      \
+  template const Mapping<dim>   &ContactProblem<dim>::get_mapping() const;      \
+  template const VectorType     &ContactProblem<dim>::get_displacement() const; \
+  template const VectorType     &ContactProblem<dim>::get_velocity() const;     \
+  template const Vector<double> &ContactProblem<dim>::get_friction_force()      \
+    const;                                                                      \
+  template VectorType ContactProblem<dim>::ghosted(const VectorType &) const;
+
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
 } // namespace Contact

@@ -18,7 +18,10 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <base/dimensions.h>
+#include <core/contact_nodes.h>
 #include <core/contact_problem.h>
+#include <core/postprocessor.h>
 
 #include <algorithm>
 #include <cmath>
@@ -43,10 +46,10 @@ namespace Contact
     TimerOutput::Scope t(computing_timer, "Grid");
     auto              *fully_distributed =
       dynamic_cast<parallel::fullydistributed::Triangulation<dim> *>(
-        triangulation.get());
+        space.triangulation.get());
     if (fully_distributed == nullptr)
       {
-        build_mesh(*triangulation);
+        build_mesh(*space.triangulation);
         return;
       }
     Triangulation<dim> whole;
@@ -445,492 +448,74 @@ namespace Contact
 
   // @sect4{ContactProblem::setup_system}
 
+  // V_h with its constraints, the sparsity of the matrices, the vectors of
+  // the state, the nodes of Gamma_3 and the friction solver on them, and
+  // the set-up of the postprocessors.
   template <int dim>
   void ContactProblem<dim>::setup_system()
   {
     TimerOutput::Scope t(computing_timer, "Setup");
+    space.setup(parameters.boundary);
+    const IndexSet &owned    = space.locally_owned_dofs;
+    const IndexSet &relevant = space.locally_relevant_dofs;
 
-    dof_handler.distribute_dofs(fe);
-    scalar_dof_handler.distribute_dofs(*scalar_fe);
-    locally_owned_dofs = dof_handler.locally_owned_dofs();
-    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
-
-    make_constraints();
-
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    DynamicSparsityPattern dsp(relevant);
+    DoFTools::make_sparsity_pattern(space.dof_handler,
+                                    dsp,
+                                    space.constraints,
+                                    false);
     SparsityTools::distribute_sparsity_pattern(dsp,
-                                               locally_owned_dofs,
+                                               owned,
                                                mpi_communicator,
-                                               locally_relevant_dofs);
-    for (MatrixType *matrix :
-         {&mass_matrix, &viscosity_matrix, &elasticity_matrix, &system_matrix})
-      matrix->reinit(locally_owned_dofs,
-                     locally_owned_dofs,
-                     dsp,
-                     mpi_communicator);
-    for (VectorType &vector : momentum_density)
-      vector.reinit(locally_owned_dofs, mpi_communicator);
-    angular_momentum_density.reinit(locally_owned_dofs, mpi_communicator);
-    for (VectorType *vector :
-         {&displacement, &velocity, &old_displacement, &old_velocity, &load})
-      vector->reinit(locally_owned_dofs, mpi_communicator);
+                                               relevant);
+    for (MatrixType *matrix : {&matrices.mass,
+                               &matrices.viscosity,
+                               &matrices.elasticity,
+                               &matrices.system})
+      matrix->reinit(owned, owned, dsp, mpi_communicator);
+    for (VectorType &vector : matrices.momentum_density)
+      vector.reinit(owned, mpi_communicator);
+    matrices.angular_momentum_density.reinit(owned, mpi_communicator);
+    for (VectorType *vector : {&state.displacement,
+                               &state.velocity,
+                               &state.old_displacement,
+                               &state.old_velocity,
+                               &state.load})
+      vector->reinit(owned, mpi_communicator);
 
-    friction_solver = std::make_unique<FrictionSolver<dim>>(parameters,
-                                                            friction_law,
-                                                            contact_nodes(),
-                                                            constraints,
-                                                            locally_owned_dofs,
-                                                            mpi_communicator,
-                                                            pcout,
-                                                            computing_timer);
+    friction_solver = std::make_unique<FrictionSolver<dim>>(
+      parameters,
+      friction_law,
+      make_contact_nodes(space, parameters.boundary.contact_ids),
+      space.constraints,
+      owned,
+      mpi_communicator,
+      pcout,
+      computing_timer);
     friction_solver->set_sabotage(sabotage);
-    setup_moment_balance();
-    setup_probes();
+    loads->setup(friction_solver->boundary());
+    // The postprocessors' set-up may refuse an entry of theirs (a probe
+    // outside the body): before anything is reported of the mesh.
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->initialize();
 
-    pcout << "Mesh: " << triangulation->n_global_active_cells() << " cells, "
-          << (parameters.geometry.simplex_cells ? 'P' : 'Q') << fe.degree
-          << ", " << dof_handler.n_dofs() << " unknowns, "
-          << friction_solver->boundary().nodes.size()
+    pcout << "Mesh: " << space.triangulation->n_global_active_cells()
+          << " cells, " << (parameters.geometry.simplex_cells ? 'P' : 'Q')
+          << space.fe.degree << ", " << space.dof_handler.n_dofs()
+          << " unknowns, " << friction_solver->boundary().nodes.size()
           << " free nodes on Gamma_3" << std::endl;
     // Measured on the bushing (doc/verification.md, "A curved Gamma_3"):
     // Q2 nodes on the chords of a circle make the slip onset converge at
     // first order in h only, Q2 on the curved cells at second order.
     const auto &geometry = parameters.geometry;
-    if (geometry.shell && geometry.mapping_degree < fe.degree)
+    if (geometry.shell && geometry.mapping_degree < space.fe.degree)
       pcout << "Warning: '" << Entry::mapping_degree
             << "' = " << geometry.mapping_degree << " is below '"
-            << Entry::finite_element_degree << "' = " << fe.degree
+            << Entry::finite_element_degree << "' = " << space.fe.degree
             << ": the element's nodes on the circles lie on their chords, "
                "which costs the tractions on Gamma_3 an order of accuracy "
                "(doc/verification.md); set both equal."
             << std::endl;
-  }
-
-
-  // @sect4{ContactProblem::make_constraints}
-
-  // V_h of the paper: hanging nodes of a locally refined mesh, then w = 0
-  // on Gamma_1 and w.n = 0 on Gamma_3. The normal
-  // constraints come from compute_no_normal_flux_constraints, so that a
-  // Gamma_3 that is not axis-aligned works too. Where Gamma_3 meets the
-  // clamp the clamp wins (left_object_wins).
-  template <int dim>
-  void ContactProblem<dim>::make_constraints()
-  {
-    constraints.clear();
-    constraints.reinit(locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    for (const auto id : parameters.boundary.clamped_ids)
-      VectorTools::interpolate_boundary_values(*mapping,
-                                               dof_handler,
-                                               id,
-                                               Functions::ZeroFunction<dim>(
-                                                 dim),
-                                               constraints);
-
-    // Gamma_3 and the symmetry planes in one call, so that where they meet
-    // (an edge in 3D) both normal directions are constrained.
-    AffineConstraints<double>    normal_constraints(locally_relevant_dofs);
-    std::set<types::boundary_id> normal_ids(
-      parameters.boundary.contact_ids.begin(),
-      parameters.boundary.contact_ids.end());
-    normal_ids.insert(parameters.boundary.symmetry_ids.begin(),
-                      parameters.boundary.symmetry_ids.end());
-    VectorTools::compute_no_normal_flux_constraints(
-      dof_handler, 0, normal_ids, normal_constraints, *mapping);
-    normal_constraints.close();
-
-    constraints.merge(normal_constraints,
-                      AffineConstraints<double>::left_object_wins);
-    constraints.close();
-  }
-
-
-  // @sect4{The tangent basis of a node of Gamma_3}
-
-  // The directions in which a node of Gamma_3 may not move are the rows of
-  // its constraints: the normal that compute_no_normal_flux_constraints
-  // used, the normal of a symmetry plane it also lies on, a clamped
-  // component. The friction acts in the orthogonal complement, spanned by
-  // the node's tangents. With one constraint (the usual case) the tangents
-  // are, in 2D, the normal turned by +90 degrees, (-n_y, n_x), so that on the
-  // paper's Gamma_3 (n = (0, -1)) t = e_x; in 3D the coordinate axis least
-  // aligned with n, made orthogonal to n, and n x t_1. Where Gamma_3 meets a
-  // symmetry plane in 3D one direction is left; the second tangent is then
-  // zero, which the Tresca solver reads as a component without force. The
-  // Tresca ball is isotropic, so the solution does not depend on the choice
-  // of basis, only the components that represent it do.
-  namespace
-  {
-    std::array<Tensor<1, 2>, 1> tangent_basis(const Tensor<1, 2> &normal,
-                                              const unsigned int = 0)
-    {
-      return {{Tensor<1, 2>({-normal[1], normal[0]})}};
-    }
-
-    // `preferred`: the axis least aligned with all of Gamma_3's normals,
-    // so that t_1 is the same direction along a curved Gamma_3 (the axis
-    // of a tube), where it is not too close to this node's normal.
-    std::array<Tensor<1, 3>, 2> tangent_basis(const Tensor<1, 3> &normal,
-                                              const unsigned int  preferred = 3)
-    {
-      unsigned int axis = 0;
-      for (unsigned int d = 1; d < 3; ++d)
-        if (std::abs(normal[d]) < std::abs(normal[axis]))
-          axis = d;
-      if (preferred < 3 && std::abs(normal[preferred]) < 0.5)
-        axis = preferred;
-      Tensor<1, 3> first;
-      first[axis] = 1;
-      first -= (first * normal) * normal;
-      first /= first.norm();
-      return {{first, cross_product_3d(normal, first)}};
-    }
-
-    // Orthonormal rows of the constraints of one node's dofs (Gram-Schmidt).
-    template <int dim>
-    std::vector<Tensor<1, dim>>
-    constrained_directions(const std::array<types::global_dof_index, dim> &dofs,
-                           const AffineConstraints<double> &constraints)
-    {
-      std::vector<Tensor<1, dim>> directions;
-      for (unsigned int d = 0; d < dim; ++d)
-        if (constraints.is_constrained(dofs[d]))
-          {
-            Tensor<1, dim> row;
-            row[d] = 1;
-            for (const auto &[dof, weight] :
-                 *constraints.get_constraint_entries(dofs[d]))
-              for (unsigned int e = 0; e < dim; ++e)
-                if (dofs[e] == dof)
-                  row[e] -= weight;
-            for (const Tensor<1, dim> &direction : directions)
-              row -= (row * direction) * direction;
-            if (row.norm() > 1e-10)
-              directions.push_back(row / row.norm());
-          }
-      return directions;
-    }
-
-    // The tangents of a node whose constraint rows are `constrained`
-    // (1 <= size < dim); `normal` orients them.
-    template <int dim>
-    std::array<Tensor<1, dim>, dim - 1>
-    free_tangents(const std::vector<Tensor<1, dim>> &constrained,
-                  const Tensor<1, dim>              &normal,
-                  const unsigned int                 preferred)
-    {
-      if (constrained.size() == 1)
-        return tangent_basis(constrained[0] * normal > 0 ? constrained[0] :
-                                                           -constrained[0],
-                             preferred);
-      std::array<Tensor<1, dim>, dim - 1> tangents;
-      if constexpr (dim == 3)
-        {
-          // Oriented like the reference tangent it is closest to (on a
-          // tube's end t_1 is orthogonal to the axis, the first reference).
-          const auto reference = tangent_basis(normal, preferred);
-          tangents[0] = cross_product_3d(constrained[0], constrained[1]);
-          tangents[0] /= tangents[0].norm();
-          const double along_first  = tangents[0] * reference[0],
-                       along_second = tangents[0] * reference[1];
-          if ((std::abs(along_first) >= std::abs(along_second) ?
-                 along_first :
-                 along_second) < 0)
-            tangents[0] *= -1;
-        }
-      return tangents;
-    }
-  } // namespace
-
-
-  // @sect4{ContactProblem::contact_nodes}
-
-  // Collects the nodes of Gamma_3 with their dofs, the weight
-  // m_p = int_Gamma3 phi_p ds of the nodal ("node-to-rigid") friction and
-  // the outward normal averaged over the faces around the node. A node all
-  // of whose dofs are constrained (where Gamma_3 meets the clamp) has no
-  // friction unknown and is left out.
-  //
-  // Every process keeps every node: the friction problem on Gamma_3 is
-  // small and solved redundantly, so that all processes take the same
-  // branches. Each process integrates over the faces of its own cells; the
-  // parts are exchanged (all_gather) and summed, and the constraint rows of
-  // a node (known where its dofs are locally relevant) travel with them.
-  template <int dim>
-  std::vector<ContactNode<dim>> ContactProblem<dim>::contact_nodes() const
-  {
-    // One record per (process, node) as doubles (dof indices are exact):
-    // dofs, scalar dof, location, weight, normal, number of constraint
-    // rows, the rows.
-    constexpr unsigned int record_size =
-      dim + 1 + dim + 1 + dim + 1 + dim * dim;
-    std::vector<double> records;
-    for (const auto &[key, node] : integrate_contact_faces())
-      {
-        const auto constrained =
-          constrained_directions<dim>(node.dofs, constraints);
-        records.insert(records.end(), node.dofs.begin(), node.dofs.end());
-        records.push_back(node.scalar_dof);
-        for (unsigned int d = 0; d < dim; ++d)
-          records.push_back(node.location[d]);
-        records.push_back(node.weight);
-        for (unsigned int d = 0; d < dim; ++d)
-          records.push_back(node.normal[d]);
-        records.push_back(constrained.size());
-        for (unsigned int r = 0; r < dim; ++r)
-          for (unsigned int d = 0; d < dim; ++d)
-            records.push_back(r < constrained.size() ? constrained[r][d] : 0.);
-      }
-
-    std::map<types::global_dof_index, ContactNode<dim>>            nodes;
-    std::map<types::global_dof_index, std::vector<Tensor<1, dim>>> rows;
-    for (const auto &part :
-         Utilities::MPI::all_gather(mpi_communicator, records))
-      for (auto r = part.begin(); r != part.end(); r += record_size)
-        {
-          const auto        key  = static_cast<types::global_dof_index>(r[0]);
-          ContactNode<dim> &node = nodes[key];
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              node.dofs[d]     = static_cast<types::global_dof_index>(r[d]);
-              node.location[d] = r[dim + 1 + d];
-              node.normal[d] += r[2 * dim + 2 + d];
-            }
-          node.scalar_dof = static_cast<types::global_dof_index>(r[dim]);
-          node.weight += r[2 * dim + 1];
-          std::vector<Tensor<1, dim>> &directions = rows[key];
-          directions.resize(static_cast<unsigned int>(r[3 * dim + 2]));
-          for (unsigned int i = 0; i < directions.size(); ++i)
-            for (unsigned int d = 0; d < dim; ++d)
-              directions[i][d] = r[3 * dim + 3 + i * dim + d];
-        }
-
-    // The axis least aligned with all normals (the first on ties).
-    std::array<double, dim> largest{};
-    for (const auto &[key, node] : nodes)
-      for (unsigned int d = 0; d < dim; ++d)
-        largest[d] =
-          std::max(largest[d], std::abs(node.normal[d]) / node.normal.norm());
-    const unsigned int preferred = static_cast<unsigned int>(
-      std::min_element(largest.begin(), largest.end()) - largest.begin());
-
-    std::vector<ContactNode<dim>> contact_nodes;
-    for (auto &[key, node] : nodes)
-      {
-        const std::vector<Tensor<1, dim>> &constrained = rows[key];
-        AssertThrow(!constrained.empty(),
-                    ExcInternalError("A node of Gamma_3 without its normal "
-                                     "constraint."));
-        if (constrained.size() == dim)
-          continue;
-        node.normal /= node.normal.norm();
-        node.tangents      = free_tangents(constrained, node.normal, preferred);
-        node.locally_owned = locally_owned_dofs.is_element(node.dofs[0]);
-        contact_nodes.push_back(node);
-      }
-    // Order along Gamma_3, so that output and reports read left to right.
-    std::sort(contact_nodes.begin(),
-              contact_nodes.end(),
-              [](const ContactNode<dim> &a, const ContactNode<dim> &b) {
-                for (unsigned int d = 0; d < dim; ++d)
-                  if (a.location[d] != b.location[d])
-                    return a.location[d] < b.location[d];
-                return false;
-              });
-    return contact_nodes;
-  }
-
-
-  // @sect4{ContactProblem::integrate_contact_faces}
-
-  // This process's part of the nodes of Gamma_3: the faces of its own
-  // cells, keyed by the node's first dof.
-  template <int dim>
-  std::map<types::global_dof_index, ContactNode<dim>>
-  ContactProblem<dim>::integrate_contact_faces() const
-  {
-    const std::set<types::boundary_id> contact_ids(
-      parameters.boundary.contact_ids.begin(),
-      parameters.boundary.contact_ids.end());
-    FEFaceValues<dim>                    fe_face_values(*mapping,
-                                     fe,
-                                     face_quadrature,
-                                     update_values | update_normal_vectors |
-                                       update_JxW_values);
-    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-    std::vector<types::global_dof_index> scalar_dofs(
-      scalar_fe->n_dofs_per_cell());
-    std::map<types::global_dof_index, ContactNode<dim>> nodes;
-
-    auto scalar_cell = scalar_dof_handler.begin_active();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        const auto this_scalar_cell = scalar_cell++;
-        if (!cell->is_locally_owned())
-          continue;
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              contact_ids.count(cell->face(f)->boundary_id()) != 0)
-            {
-              fe_face_values.reinit(cell, f);
-              cell->get_dof_indices(cell_dofs);
-              this_scalar_cell->get_dof_indices(scalar_dofs);
-              // The dofs of the face (has_support_on_face is not exact
-              // for simplex elements).
-              for (unsigned int j = 0; j < fe.n_dofs_per_face(f); ++j)
-                {
-                  const unsigned int i = fe.face_to_cell_index(j, f);
-                  const auto [component, base_index] =
-                    fe.system_to_component_index(i);
-                  if (component != 0)
-                    continue;
-                  ContactNode<dim> &node = nodes[cell_dofs[i]];
-                  for (unsigned int d = 0; d < dim; ++d)
-                    node.dofs[d] =
-                      cell_dofs[fe.component_to_system_index(d, base_index)];
-                  node.scalar_dof = scalar_dofs[base_index];
-                  node.location   = mapping->transform_unit_to_real_cell(
-                    cell, fe.base_element(0).unit_support_point(base_index));
-                  for (const unsigned int q :
-                       fe_face_values.quadrature_point_indices())
-                    {
-                      const double phi_JxW =
-                        fe_face_values.shape_value_component(i, q, 0) *
-                        fe_face_values.JxW(q);
-                      node.weight += phi_JxW;
-                      node.normal +=
-                        fe_face_values.normal_vector(q) * std::abs(phi_JxW);
-                    }
-                }
-            }
-      }
-    return nodes;
-  }
-
-
-  // @sect4{ContactProblem::setup_probes}
-
-  template <int dim>
-  void ContactProblem<dim>::setup_probes()
-  {
-    const unsigned int this_process =
-                         Utilities::MPI::this_mpi_process(mpi_communicator),
-                       n_processes =
-                         Utilities::MPI::n_mpi_processes(mpi_communicator);
-    probes.clear();
-    for (const auto &coordinates : parameters.output.probe_points)
-      {
-        Point<dim> point;
-        for (unsigned int d = 0; d < dim; ++d)
-          point[d] = coordinates[d];
-        // The cells of this process around the point (a point outside the
-        // mesh gives none, or an exception, depending on the triangulation).
-        std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
-          probe;
-        try
-          {
-            for (const auto &candidate :
-                 GridTools::find_all_active_cells_around_point(*mapping,
-                                                               dof_handler,
-                                                               point))
-              if (candidate.first->is_locally_owned())
-                {
-                  probe = candidate;
-                  break;
-                }
-          }
-        catch (const ExceptionBase &)
-          {}
-        unsigned int evaluating_process =
-          Utilities::MPI::min(probe.first.state() == IteratorState::valid ?
-                                this_process :
-                                n_processes,
-                              mpi_communicator);
-        std::ostringstream text;
-        text << point;
-        if (evaluating_process == n_processes && parameters.geometry.shell)
-          evaluating_process = probe_near_curved_boundary(point, probe);
-        AssertThrow(evaluating_process < n_processes,
-                    ExcMessage("Entry '" + Entry::probe_points +
-                               "': the point " + text.str() +
-                               " is not in the mesh; allowed are points of "
-                               "the body."));
-        if (evaluating_process != this_process)
-          probe.first = typename DoFHandler<dim>::active_cell_iterator();
-        probes.push_back(probe);
-      }
-  }
-
-
-  // @sect4{ContactProblem::probe_near_curved_boundary}
-
-  // A point of the shell (between its radii, and in 3D its end faces, to
-  // 1e-6 of the outer radius, as a point typed with a few digits is) that
-  // no cell contains, because the cells' boundary is a polygon or a
-  // polynomial through points of the circle, not the circle itself: the
-  // nearest point of the cell around it (its reference coordinates, up to
-  // half a cell outside, moved onto the reference cell). Of all processes
-  // the one with the nearest cell evaluates it (the lowest rank on ties);
-  // the return value is that process, or the number of processes if the
-  // point is not of the shell.
-  template <int dim>
-  unsigned int ContactProblem<dim>::probe_near_curved_boundary(
-    const Point<dim> &point,
-    std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
-      &probe) const
-  {
-    const auto  &geometry = parameters.geometry;
-    const double radius   = std::hypot(point[0], point[1]),
-                 slack    = 1e-6 * geometry.outer_radius;
-    const unsigned int n_processes =
-      Utilities::MPI::n_mpi_processes(mpi_communicator);
-    if (radius < geometry.inner_radius - slack ||
-        radius > geometry.outer_radius + slack ||
-        (dim == 3 && (point[dim - 1] < -slack ||
-                      point[dim - 1] > geometry.shell_length + slack)))
-      return n_processes;
-    double outside = std::numeric_limits<double>::max();
-    try
-      {
-        for (const auto &candidate :
-             GridTools::find_all_active_cells_around_point(
-               *mapping, dof_handler, point, 0.5))
-          {
-            const Point<dim> inside =
-              GeometryInfo<dim>::project_to_unit_cell(candidate.second);
-            if (candidate.first->is_locally_owned() &&
-                inside.distance(candidate.second) < outside)
-              {
-                outside = inside.distance(candidate.second);
-                probe   = {candidate.first, inside};
-              }
-          }
-      }
-    catch (const ExceptionBase &)
-      {}
-    const double       nearest = Utilities::MPI::min(outside, mpi_communicator);
-    const unsigned int this_process =
-      Utilities::MPI::this_mpi_process(mpi_communicator);
-    return Utilities::MPI::min(nearest < std::numeric_limits<double>::max() &&
-                                   outside == nearest ?
-                                 this_process :
-                                 n_processes,
-                               mpi_communicator);
-  }
-
-
-  // @sect4{ContactProblem::ghosted}
-
-  template <int dim>
-  VectorType ContactProblem<dim>::ghosted(const VectorType &v) const
-  {
-    VectorType result(locally_owned_dofs,
-                      locally_relevant_dofs,
-                      mpi_communicator);
-    result = v;
-    return result;
   }
 
 
@@ -948,20 +533,8 @@ namespace Contact
     Triangulation<dim> &);                                                            \
   template void ContactProblem<dim>::check_boundary_ids(                              \
     const Triangulation<dim> &) const;                                                \
-  template void ContactProblem<dim>::setup_system();                                  \
-  template void ContactProblem<dim>::make_constraints();                              \
-  template std::vector<ContactNode<dim>> ContactProblem<dim>::contact_nodes()         \
-    const;                                                                            \
-  template std::map<types::global_dof_index, ContactNode<dim>>                        \
-                        ContactProblem<dim>::integrate_contact_faces() const;         \
-  template void         ContactProblem<dim>::setup_probes();                          \
-  template unsigned int ContactProblem<dim>::probe_near_curved_boundary(              \
-    const Point<dim> &,                                                               \
-    std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>> &)          \
-    const;                                                                            \
-  template VectorType ContactProblem<dim>::ghosted(const VectorType &) const;
+  template void ContactProblem<dim>::setup_system();
 
-  INSTANTIATE(2)
-  INSTANTIATE(3)
+  CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
 } // namespace Contact

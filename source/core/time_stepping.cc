@@ -5,9 +5,10 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
+#include <base/dimensions.h>
 #include <core/contact_problem.h>
+#include <core/postprocessor.h>
 
-#include <tuple>
 
 namespace Contact
 {
@@ -22,11 +23,11 @@ namespace Contact
     TimerOutput::Scope             t(computing_timer, "Factorization");
     std::vector<std::vector<bool>> constant_modes;
     if (parameters.solver.iterative_linear_solver)
-      DoFTools::extract_constant_modes(dof_handler,
+      DoFTools::extract_constant_modes(space.dof_handler,
                                        ComponentMask(),
                                        constant_modes);
     factorization = Factorization::create(parameters.solver.linear_solver,
-                                          system_matrix,
+                                          matrices.system,
                                           constant_modes);
   }
 
@@ -41,7 +42,7 @@ namespace Contact
     time_step = k;
     form_system_matrix();
     factorize_system_matrix();
-    friction_solver->reinit(system_matrix, *factorization);
+    friction_solver->reinit(matrices.system, *factorization);
   }
 
 
@@ -58,19 +59,10 @@ namespace Contact
     if (cuts_left == 0)
       return do_time_step();
 
-    // Everything a step changes, kept to retake the step from it.
-    const auto step_state = [this]() {
-      return std::tie(velocity,
-                      displacement,
-                      mass_times_velocity,
-                      elasticity_times_displacement,
-                      energy,
-                      energy_by_quadrature,
-                      largest_checks);
-    };
-    const auto saved = std::apply(
-      [](const auto &...values) { return std::make_tuple(values...); },
-      step_state());
+    // Everything a step changes, kept to retake the step from it. The
+    // postprocessors are not called for a step that fails, so they keep
+    // nothing that would have to be restored.
+    const StepState     saved_state          = state;
     const FrictionState saved_friction_state = friction_solver->state();
     try
       {
@@ -78,20 +70,20 @@ namespace Contact
       }
     catch (const ExcStepNotConverged &)
       {
-        step_state() = saved;
+        state = saved_state;
         friction_solver->set_state(saved_friction_state);
-        pcout << "Step " << step_number << " (t = " << time
+        pcout << "Step " << state.step_number << " (t = " << state.time
               << ") did not converge with k = " << time_step
               << "; cutting it into two steps of k/2 ('" + Entry::step_cuts +
                    "', "
               << cuts_left - 1 << " more allowed)." << std::endl;
       }
 
-    const double k = time_step, end = time;
+    const double k = time_step, end = state.time;
     change_time_step(k / 2);
-    time                  = end - k / 2;
+    state.time            = end - k / 2;
     StepStatistics first  = advance(cuts_left - 1);
-    time                  = end;
+    state.time            = end;
     StepStatistics second = advance(cuts_left - 1);
     change_time_step(k);
 
@@ -110,44 +102,36 @@ namespace Contact
   template <int dim>
   StepStatistics ContactProblem<dim>::do_time_step()
   {
-    old_velocity     = velocity;
-    old_displacement = displacement;
-    assemble_load(time, load, !body_force_is_constant, true);
-    if (body_force_is_constant)
-      load += constant_body_load;
-    if (sabotage.load_factor != 1.)
-      load *= sabotage.load_factor;
+    state.old_velocity     = state.velocity;
+    state.old_displacement = state.displacement;
+    loads->assemble(state.time, state.load);
 
     StepStatistics statistics;
     {
       TimerOutput::Scope t(computing_timer, "Time steps");
-      VectorType         step_rhs(load);
-      step_rhs.add(1. / time_step, mass_times_velocity);
-      step_rhs.add(-1., elasticity_times_displacement);
-      constraints.set_zero(step_rhs);
+      VectorType         step_rhs(state.load);
+      step_rhs.add(1. / time_step, state.mass_times_velocity);
+      step_rhs.add(-1., state.elasticity_times_displacement);
+      space.constraints.set_zero(step_rhs);
 
       const unsigned long long cg_before = factorization->iterations();
       statistics =
-        friction_solver->solve_step(step_rhs, velocity, step_label());
+        friction_solver->solve_step(step_rhs,
+                                    state.velocity,
+                                    {state.step_number, state.time, time_step});
       statistics.cg_iterations = factorization->iterations() - cg_before;
       substitution_time += friction_solver->substitution_seconds();
-      displacement = old_displacement;
-      displacement.add(time_step, velocity);
+      state.displacement = state.old_displacement;
+      state.displacement.add(time_step, state.velocity);
     }
 
     const VelocityProducts products = velocity_products();
     update_energy_balance(products);
-    mass_times_velocity = products.mass;
-    elasticity_times_displacement.add(time_step, products.elasticity);
-    check_step();
+    state.mass_times_velocity = products.mass;
+    state.elasticity_times_displacement.add(time_step, products.elasticity);
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->after_substep();
     return statistics;
-  }
-
-
-  template <int dim>
-  StepLabel ContactProblem<dim>::step_label() const
-  {
-    return {step_number, time, time_step};
   }
 
 
@@ -155,10 +139,8 @@ namespace Contact
   template void           ContactProblem<dim>::factorize_system_matrix();      \
   template void           ContactProblem<dim>::change_time_step(const double); \
   template StepStatistics ContactProblem<dim>::advance(const unsigned int);    \
-  template StepStatistics ContactProblem<dim>::do_time_step();                 \
-  template StepLabel      ContactProblem<dim>::step_label() const;
+  template StepStatistics ContactProblem<dim>::do_time_step();
 
-  INSTANTIATE(2)
-  INSTANTIATE(3)
+  CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
 } // namespace Contact

@@ -22,10 +22,12 @@
 #include <deal.II/base/table_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <base/scene_variant.h>
 #include <core/contact_problem.h>
+#include <core/output_directory.h>
+#include <core/postprocessor.h>
 #include <drivers/error_estimate.h>
 #include <drivers/reference_interpolation.h>
-#include <app/run.h>
 
 #include <array>
 #include <cmath>
@@ -37,6 +39,15 @@
 
 namespace Contact
 {
+  namespace
+  {
+    // What an error estimate writes into its output directory: its table
+    // and the coarse runs.
+    const ResultFiles       estimate_table("error_estimate\\.txt");
+    const ResultDirectories coarse_runs("coarse-(1|2|space|time)");
+  } // namespace
+
+
   // @sect3{Richardson extrapolation with the observed order}
 
   RichardsonEstimate richardson_estimate(const double d_fine,
@@ -240,66 +251,6 @@ namespace Contact
   }
 
 
-  // @sect3{Versions of the scene}
-
-  // Coarse runs and pilots write only what an estimate compares (the state
-  // at T, and time_series.csv); the run a target chose gets the output the
-  // user asked for, which a quiet version before it may have switched off
-  // in prm.
-  Parameters parameters_of_version(ParameterHandler   &prm,
-                                   const Parameters   &base,
-                                   const SceneVersion &version)
-  {
-    const auto text = [](const double value) {
-      std::ostringstream out;
-      out << std::setprecision(17) << value;
-      return out.str();
-    };
-    if (base.geometry.is_box())
-      apply_override(prm,
-                     Entry::cell_size,
-                     text(std::ldexp(base.geometry.cell_size, -version.finer)));
-    else
-      apply_override(prm,
-                     Entry::mesh_refinements,
-                     std::to_string(
-                       static_cast<int>(base.geometry.mesh_refinements) +
-                       version.finer));
-    apply_override(prm,
-                   Entry::finite_element_degree,
-                   std::to_string(version.degree));
-    apply_override(prm,
-                   Entry::time_step,
-                   text(base.time.end_time / version.n_steps));
-    apply_override(prm, Entry::output_directory, version.directory);
-    const bool  quiet  = version.quiet;
-    const auto &output = base.output;
-    apply_override(prm, Entry::estimate_error, quiet ? "false" : "true");
-    apply_override(prm,
-                   Entry::separate_space_and_time,
-                   !quiet && base.accuracy.separate_space_and_time ? "true" :
-                                                                     "false");
-    apply_override(prm,
-                   Entry::target_error,
-                   quiet ? "0" : text(base.accuracy.target_error));
-    apply_override(prm,
-                   Entry::vtu_interval,
-                   quiet ? "0" : std::to_string(output.vtu_interval));
-    apply_override(prm,
-                   Entry::gamma3_history,
-                   !quiet && output.write_gamma3_history ? "true" : "false");
-    apply_override(prm,
-                   Entry::checkpoint_interval,
-                   quiet ? "0" : std::to_string(output.checkpoint_interval));
-    apply_override(prm,
-                   Entry::checkpoint_minutes,
-                   quiet ? "0" : text(output.checkpoint_minutes));
-    Parameters parameters;
-    parameters.parse_parameters(prm);
-    return parameters;
-  }
-
-
   // @sect3{Runs and their histories}
 
   template <int dim>
@@ -319,14 +270,15 @@ namespace Contact
         located = onto->locate(run);
       return (*onto)(*located, run, run.get_displacement());
     };
+    // (A problem runs once: the observer is not called after run().)
     if (stride > 0)
-      problem.set_step_observer([&](const ContactProblem<dim> &run) {
-        if (run.get_step_number() % stride == 0)
-          result.history.push_back(carry(run));
-      });
+      problem.add_postprocessor(std::make_unique<StepObserver<dim>>(
+        [&](const ContactProblem<dim> &run) {
+          if (run.get_step_number() % stride == 0)
+            result.history.push_back(carry(run));
+        }));
     result.summary      = problem.run();
     result.displacement = carry(problem);
-    problem.set_step_observer({});
     return result;
   }
 
@@ -363,11 +315,8 @@ namespace Contact
                                const double               coarse_time_step,
                                const TwoOrders           *known)
     {
-      const auto difference_norm = [&](const VectorType &a,
-                                       const VectorType &b) {
-        VectorType difference(a);
-        difference -= b;
-        return fine.strain_norm(difference);
+      const auto distance = [&](const VectorType &a, const VectorType &b) {
+        return strain_distance(fine, a, b);
       };
       EstimateRow worst{worst_V_error, 0, 0, 0, {}};
       worst.estimate.error = -1;
@@ -375,13 +324,10 @@ namespace Contact
         std::min({f.history.size(), m.history.size(), c.history.size()});
       for (std::size_t j = 0; j < n_times; ++j)
         {
-          const double d_fine   = difference_norm(f.history[j], m.history[j]);
-          const double d_coarse = difference_norm(m.history[j], c.history[j]);
-          const RichardsonEstimate estimate =
-            field_estimate(d_fine,
-                           d_coarse,
-                           difference_norm(f.history[j], c.history[j]),
-                           known);
+          const double d_fine   = distance(f.history[j], m.history[j]);
+          const double d_coarse = distance(m.history[j], c.history[j]);
+          const RichardsonEstimate estimate = field_estimate(
+            d_fine, d_coarse, distance(f.history[j], c.history[j]), known);
           if (estimate.error > worst.estimate.error)
             worst = {worst_V_error,
                      fine.strain_norm(f.history[j]),
@@ -404,8 +350,7 @@ namespace Contact
     // time_factor)-th step where N is a multiple of 4) on the given run's
     // mesh.
     template <int dim>
-    RunAtTimes run_coarse(ParameterHandler                  &prm,
-                          const Parameters                  &base,
+    RunAtTimes run_coarse(const Parameters                  &base,
                           const unsigned int                 space_factor,
                           const unsigned int                 time_factor,
                           const std::string                 &name,
@@ -413,14 +358,13 @@ namespace Contact
     {
       // factors 1, 2 or 4: 0, 1 or 2 levels coarser; T / ceil(N / factor)
       // steps, so that every run ends at T.
-      ContactProblem<dim> coarse(parameters_of_version(
-        prm,
-        base,
-        {base.geometry.fe_degree,
-         -static_cast<int>(space_factor / 2),
-         (base.time.n_steps() + time_factor - 1) / time_factor,
-         base.output.directory + "/" + name,
-         true}));
+      ContactProblem<dim> coarse(
+        parameters_of(base,
+                      {-static_cast<int>(space_factor / 2),
+                       (base.time.n_steps() + time_factor - 1) / time_factor,
+                       base.geometry.fe_degree,
+                       base.output.directory + "/" + name,
+                       true}));
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         std::cout << std::endl
                   << "Error estimate: the scene with h times " << space_factor
@@ -466,11 +410,10 @@ namespace Contact
         const auto found = orders.find(name);
         return found == orders.end() ? nullptr : &found->second;
       };
-      const auto difference_norm = [&](const VectorType &a,
-                                       const VectorType &b) {
-        VectorType difference(a);
-        difference -= b;
-        return fine.strain_norm(difference);
+      const auto distance = [&](const unsigned int a, const unsigned int b) {
+        return strain_distance(fine,
+                               runs[a].displacement,
+                               runs[b].displacement);
       };
       // The orders of a row's two parts where they are known and tell the
       // parts apart (the estimate then uses them), else NaN.
@@ -496,27 +439,18 @@ namespace Contact
       std::vector<EstimateRow> rows;
       EstimateRow              v{"V-norm of u",
                     runs[0].summary.displacement_V_norm,
-                    difference_norm(runs[0].displacement, runs[1].displacement),
-                    difference_norm(runs[1].displacement, runs[2].displacement),
+                    distance(0, 1),
+                    distance(1, 2),
                     {}};
-      v.estimate    = field_estimate(v.d_fine,
-                                  v.d_coarse,
-                                  difference_norm(runs[0].displacement,
-                                                  runs[2].displacement),
-                                  known(v.name));
+      v.estimate =
+        field_estimate(v.d_fine, v.d_coarse, distance(0, 2), known(v.name));
       v.exact_error = runs[0].summary.final_errors.displacement_V;
       if (separate)
         {
-          v.space_part = part_of_error(v,
-                                       difference_norm(runs[0].displacement,
-                                                       runs[3].displacement),
-                                       true,
-                                       space_order(v.name));
-          v.time_part  = part_of_error(v,
-                                      difference_norm(runs[0].displacement,
-                                                      runs[4].displacement),
-                                      true,
-                                      time_order(v.name));
+          v.space_part =
+            part_of_error(v, distance(0, 3), true, space_order(v.name));
+          v.time_part =
+            part_of_error(v, distance(0, 4), true, time_order(v.name));
         }
       rows.push_back(v);
       if (!runs[2].history.empty())
@@ -697,8 +631,7 @@ namespace Contact
   // @sect3{run_with_error_estimate}
 
   template <int dim>
-  EstimatedRun run_with_error_estimate(ParameterHandler  &prm,
-                                       const Parameters  &parameters,
+  EstimatedRun run_with_error_estimate(const Parameters  &parameters,
                                        const KnownOrders &orders)
   {
     Timer timer;
@@ -708,14 +641,14 @@ namespace Contact
     std::vector<RunAtTimes> runs = {
       run_onto<dim>(fine, nullptr, parameters.time.n_steps() % 4 == 0 ? 4 : 0)};
     const ReferenceInterpolation<dim> interpolate(fine);
-    runs.push_back(run_coarse(prm, parameters, 2, 2, "coarse-1", interpolate));
-    runs.push_back(run_coarse(prm, parameters, 4, 4, "coarse-2", interpolate));
+    runs.push_back(run_coarse(parameters, 2, 2, "coarse-1", interpolate));
+    runs.push_back(run_coarse(parameters, 4, 4, "coarse-2", interpolate));
     if (parameters.accuracy.separate_space_and_time)
       {
         runs.push_back(
-          run_coarse(prm, parameters, 2, 1, "coarse-space", interpolate));
+          run_coarse(parameters, 2, 1, "coarse-space", interpolate));
         runs.push_back(
-          run_coarse(prm, parameters, 1, 2, "coarse-time", interpolate));
+          run_coarse(parameters, 1, 2, "coarse-time", interpolate));
       }
 
     EstimatedRun result{runs[0].summary, estimate_rows(fine, runs, orders), 0};
@@ -740,10 +673,8 @@ namespace Contact
   template RunAtTimes   run_onto<3>(ContactProblem<3> &,
                                   const ReferenceInterpolation<3> *,
                                   const unsigned int);
-  template EstimatedRun run_with_error_estimate<2>(ParameterHandler &,
-                                                   const Parameters &,
+  template EstimatedRun run_with_error_estimate<2>(const Parameters &,
                                                    const KnownOrders &);
-  template EstimatedRun run_with_error_estimate<3>(ParameterHandler &,
-                                                   const Parameters &,
+  template EstimatedRun run_with_error_estimate<3>(const Parameters &,
                                                    const KnownOrders &);
 } // namespace Contact

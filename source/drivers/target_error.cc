@@ -21,10 +21,11 @@
 #include <deal.II/base/table_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <base/scene_variant.h>
 #include <core/contact_problem.h>
+#include <core/output_directory.h>
 #include <drivers/error_estimate.h>
 #include <drivers/reference_interpolation.h>
-#include <app/run.h>
 #include <drivers/target_error.h>
 
 #include <cmath>
@@ -38,6 +39,15 @@
 
 namespace Contact
 {
+  namespace
+  {
+    // What a target writes into its output directory: its table, and the
+    // pilots' runs (kept by the run the target chose).
+    const ResultFiles       target_table("target\\.txt");
+    const ResultDirectories pilot_runs("pilot-q[12]-[24]?h-[24]?k", true);
+  } // namespace
+
+
   namespace
   {
     // The chosen run is predicted to have this fraction of the target: the
@@ -95,9 +105,7 @@ namespace Contact
                                const double               max_order)
     {
       const auto difference = [&](const VectorType &a, const VectorType &b) {
-        VectorType d(a);
-        d -= b;
-        return base.strain_norm(d);
+        return strain_distance(base, a, b);
       };
       // The largest error over time: the error at T, times the largest
       // ratio of the difference at a time that both runs share to that at T
@@ -324,12 +332,44 @@ namespace Contact
 
     // @sect3{Running the pilots}
 
+    // From the pilots of the first degree (H at K, 2H, 4H, 2K and 4K, from
+    // `first` on): the size of the quantity on the first (the scale of a
+    // relative target), and how the space and the time error of the V-norm
+    // combine, from the angle between what doubling h and what doubling k
+    // changes. A quantity's two errors add (they may cancel on the pilots
+    // and not later).
+    template <int dim>
+    void measure_size_and_cosine(const ContactProblem<dim> &base,
+                                 const std::vector<Pilot>  &pilots,
+                                 const std::size_t          first,
+                                 const std::string         &quantity,
+                                 PilotResults              &results)
+    {
+      const RunAtTimes &own = pilots[first].run;
+      results.size          = std::abs(quantity_of(own.summary, quantity));
+      if (quantity == worst_V_error)
+        {
+          results.size = own.summary.displacement_V_norm;
+          for (const VectorType &u : own.history)
+            results.size = std::max(results.size, base.strain_norm(u));
+        }
+      const auto norm = [&](const std::size_t a, const std::size_t b) {
+        return strain_distance(base,
+                               pilots[first + a].run.displacement,
+                               pilots[first + b].run.displacement);
+      };
+      const double s = norm(0, 1), t = norm(0, 3), across = norm(3, 1);
+      if ((quantity == "V-norm of u" || quantity == worst_V_error) && s > 0 &&
+          t > 0)
+        results.cosine =
+          std::clamp((s * s + t * t - across * across) / (2 * s * t), 0., 1.);
+    }
+
     // The pilots of one degree: H, 2H, 4H at K, and for the first degree
     // also 2K and 4K at H (the time part, shared by the degrees).
     template <int dim>
     void
-    run_pilots_of_degree(ParameterHandler  &prm,
-                         const Parameters  &parameters,
+    run_pilots_of_degree(const Parameters  &parameters,
                          const unsigned int degree,
                          const bool         with_time,
                          PilotResults      &results,
@@ -351,13 +391,12 @@ namespace Contact
           (time_factor > 1 ? std::to_string(time_factor) : "") + "k";
         print("Target error: pilot " + name);
         auto problem = std::make_unique<ContactProblem<dim>>(
-          parameters_of_version(prm,
-                                parameters,
-                                {degree,
-                                 -static_cast<int>(space_factor / 2),
-                                 N0 / time_factor,
-                                 parameters.output.directory + "/" + name,
-                                 true}));
+          parameters_of(parameters,
+                        {-static_cast<int>(space_factor / 2),
+                         N0 / time_factor,
+                         degree,
+                         parameters.output.directory + "/" + name,
+                         true}));
         pilots.push_back(
           {name, degree, run_onto(*problem, interpolate.get(), 1)});
         // The cost model, and so the choice, must be the same on every
@@ -397,34 +436,14 @@ namespace Contact
         return;
       run(1, 2);
       run(1, 4);
-      results.time_V        = fit(3, 4, V, 1.);
-      results.time          = fit(3, 4, quantity, 1.);
-      const RunAtTimes &own = pilots[first].run;
-      results.size          = std::abs(quantity_of(own.summary, quantity));
-      if (quantity == worst_V_error)
-        {
-          results.size = own.summary.displacement_V_norm;
-          for (const VectorType &u : own.history)
-            results.size = std::max(results.size, base->strain_norm(u));
-        }
-      // How the space and the time error of the V-norm combine: the angle
-      // between what doubling h and what doubling k changes. A quantity's
-      // two errors add (they may cancel on the pilots and not later).
-      const auto norm = [&](const std::size_t a, const std::size_t b) {
-        VectorType d(pilots[first + a].run.displacement);
-        d -= pilots[first + b].run.displacement;
-        return base->strain_norm(d);
-      };
-      const double s = norm(0, 1), t = norm(0, 3), across = norm(3, 1);
-      if (field && s > 0 && t > 0)
-        results.cosine =
-          std::clamp((s * s + t * t - across * across) / (2 * s * t), 0., 1.);
+      results.time_V = fit(3, 4, V, 1.);
+      results.time   = fit(3, 4, quantity, 1.);
+      measure_size_and_cosine(*base, pilots, first, quantity, results);
     }
 
     template <int dim>
     PilotResults
-    run_pilots(ParameterHandler                               &prm,
-               const Parameters                               &parameters,
+    run_pilots(const Parameters                               &parameters,
                const std::function<void(const std::string &)> &print)
     {
       Timer timer;
@@ -432,12 +451,12 @@ namespace Contact
       // (parameters.cc): there only degree 1.
       std::vector<unsigned int> degrees = {2, 1};
       if (dim == 3 && parameters.geometry.simplex_cells &&
-          parameters.friction.law != FrictionParameters::Law::none)
+          !parameters.friction.law->is_frictionless())
         degrees = {1};
       PilotResults results;
       for (const unsigned int degree : degrees)
         run_pilots_of_degree<dim>(
-          prm, parameters, degree, degree == degrees.front(), results, print);
+          parameters, degree, degree == degrees.front(), results, print);
       for (DegreeModel &model : results.models)
         fit_cost(model, results.pilots, parameters.accuracy.measured_cost);
       results.wall_time = timer.wall_time();
@@ -565,13 +584,54 @@ namespace Contact
             << std::endl;
       return out.str();
     }
+
+    // The target as an absolute error: a relative one times the size of
+    // the quantity on the first pilot, which must be defined.
+    double target_of(const AccuracyParameters &accuracy,
+                     const PilotResults       &pilots)
+    {
+      AssertThrow(std::isfinite(pilots.size) &&
+                    std::isfinite(pilots.time.error),
+                  ExcMessage("Entry '" + Entry::target_quantity + "' = '" +
+                             accuracy.target_quantity +
+                             "' is not defined on the pilots (e.g. no slip "
+                             "zone, or no node on Gamma_3): choose a quantity "
+                             "that this scene has."));
+      AssertThrow(pilots.size > 0 || !accuracy.target_is_relative,
+                  ExcMessage("Entry '" + Entry::target_error_type +
+                             "' = relative: the size of '" +
+                             accuracy.target_quantity +
+                             "' is 0 on the pilots; give an absolute target."));
+      return accuracy.target_is_relative ? accuracy.target_error * pilots.size :
+                                           accuracy.target_error;
+    }
+
+    // The orders that the pilots of `degree` measured, with which the
+    // estimate of the chosen run extrapolates.
+    KnownOrders known_orders(const PilotResults &pilots,
+                             const unsigned int  degree,
+                             const std::string  &quantity)
+    {
+      KnownOrders orders;
+      for (const DegreeModel &model : pilots.models)
+        if (model.degree == degree)
+          {
+            orders[quantity]      = {model.space.order,
+                                     pilots.time.order,
+                                quantity == worst_V_error ? pilots.cosine : 1.};
+            orders["V-norm of u"] = {model.space_V.order,
+                                     pilots.time_V.order,
+                                     pilots.cosine};
+          }
+      return orders;
+    }
   } // namespace
 
 
   // @sect3{run_to_target}
 
   template <int dim>
-  void run_to_target(ParameterHandler &prm, const Parameters &parameters)
+  void run_to_target(const Parameters &parameters)
   {
     Timer              timer;
     const std::string &directory = parameters.output.directory;
@@ -589,24 +649,9 @@ namespace Contact
     remove_results(directory, false, MPI_COMM_WORLD);
 
     const PilotResults pilots =
-      run_pilots<dim>(prm, parameters, [&](const std::string &line) {
-        print(line + "\n");
-      });
-    const auto &accuracy = parameters.accuracy;
-    AssertThrow(std::isfinite(pilots.size) && std::isfinite(pilots.time.error),
-                ExcMessage("Entry '" + Entry::target_quantity + "' = '" +
-                           accuracy.target_quantity +
-                           "' is not defined on the pilots (e.g. no slip "
-                           "zone, or no node on Gamma_3): choose a quantity "
-                           "that this scene has."));
-    AssertThrow(pilots.size > 0 || !accuracy.target_is_relative,
-                ExcMessage("Entry '" + Entry::target_error_type +
-                           "' = relative: the size of '" +
-                           accuracy.target_quantity +
-                           "' is 0 on the pilots; give an absolute target."));
-    const double target = accuracy.target_is_relative ?
-                            accuracy.target_error * pilots.size :
-                            accuracy.target_error;
+      run_pilots<dim>(parameters,
+                      [&](const std::string &line) { print(line + "\n"); });
+    const double target = target_of(parameters.accuracy, pilots);
     print("\n" + pilots_report(pilots, parameters, target));
     std::ostringstream choice;
     choice << std::setprecision(3);
@@ -614,8 +659,8 @@ namespace Contact
       choose(pilots, parameters, dim, target, choice);
     print(choice.str());
     AssertThrow(chosen,
-                ExcMessage("Entry '" + Entry::target_error +
-                           "' = " + number_text(accuracy.target_error) +
+                ExcMessage("Entry '" + Entry::target_error + "' = " +
+                           number_text(parameters.accuracy.target_error) +
                            ": the pilots predict an error above the target "
                            "for every degree up to h = H/" +
                            std::to_string(1u << max_halvings) + " and '" +
@@ -631,30 +676,17 @@ namespace Contact
           std::to_string(chosen->degree) + ", h = H/" +
           std::to_string(1u << chosen->halvings) + ", k = T/" +
           std::to_string(chosen->n_steps) + ", with its error estimate\n");
-    // Its estimate extrapolates with the orders that the pilots measured.
-    KnownOrders orders;
-    for (const DegreeModel &model : pilots.models)
-      if (model.degree == chosen->degree)
-        {
-          orders[accuracy.target_quantity] = {
-            model.space.order,
-            pilots.time.order,
-            accuracy.target_quantity == worst_V_error ? pilots.cosine : 1.};
-          orders["V-norm of u"] = {model.space_V.order,
-                                   pilots.time_V.order,
-                                   pilots.cosine};
-        }
     const Timer        chosen_timer;
     const EstimatedRun result = run_with_error_estimate<dim>(
-      prm,
-      parameters_of_version(prm,
-                            parameters,
-                            {chosen->degree,
-                             static_cast<int>(chosen->halvings),
-                             chosen->n_steps,
-                             directory,
-                             false}),
-      orders);
+      parameters_of(parameters,
+                    {static_cast<int>(chosen->halvings),
+                     chosen->n_steps,
+                     chosen->degree,
+                     directory,
+                     false}),
+      known_orders(pilots,
+                   chosen->degree,
+                   parameters.accuracy.target_quantity));
     print("\n" + chosen_report(parameters, *chosen, result, target));
     if (parameters.output.print_timings)
       {
@@ -675,6 +707,6 @@ namespace Contact
   }
 
 
-  template void run_to_target<2>(ParameterHandler &, const Parameters &);
-  template void run_to_target<3>(ParameterHandler &, const Parameters &);
+  template void run_to_target<2>(const Parameters &);
+  template void run_to_target<3>(const Parameters &);
 } // namespace Contact

@@ -1,4 +1,5 @@
-/* The friction law (6.1) and the nodal Tresca solver on Gamma_3. */
+/* The slip threshold of the friction law and the nodal Tresca solver on
+   Gamma_3. */
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
@@ -12,66 +13,63 @@ namespace Contact
 {
   // @sect3{The friction law}
 
+  // The law itself is one file of source/base/friction_laws/; here only what
+  // holds for every law: S = 0 leaves no friction term, and a rate
+  // independent law has no derivative and the potential S mu(0) s (the law
+  // is not asked, so that its formula need not handle its constant cases,
+  // e.g. alpha = 0 in (6.1), where it would divide by zero).
   FrictionLaw::FrictionLaw(const FrictionParameters &parameters)
     : law(parameters.law)
     , S(parameters.bound_S)
-    , a(parameters.a)
-    , b(parameters.b)
-    , alpha(parameters.alpha)
-  {}
+    , frictionless(S == 0. || (law && law->is_frictionless()))
+    , rate_independent(law && law->is_rate_independent())
+  {
+    AssertThrow(law,
+                ExcMessage("FrictionLaw: the parameters hold no friction law "
+                           "(FrictionParameters::parse_parameters() reads "
+                           "it)."));
+  }
 
   double FrictionLaw::coefficient(const double slip_rate) const
   {
-    switch (law)
-      {
-        case FrictionParameters::Law::none:
-          return 0.;
-        case FrictionParameters::Law::constant:
-          return a;
-        case FrictionParameters::Law::slip_rate_weakening:
-          // (6.1)
-          return (a - b) * std::exp(-alpha * slip_rate) + b;
-      }
-    return 0.;
+    return law->coefficient(slip_rate);
   }
 
   double FrictionLaw::bound(const double slip_rate) const
   {
-    return S * coefficient(slip_rate);
+    return S * law->coefficient(slip_rate);
   }
 
   double FrictionLaw::bound_derivative(const double slip_rate) const
   {
-    if (is_frictionless() || is_rate_independent())
+    if (frictionless || rate_independent)
       return 0.;
-    return -S * (a - b) * alpha * std::exp(-alpha * slip_rate);
+    return law->bound_derivative(S, slip_rate);
   }
 
   double FrictionLaw::potential(const double slip_velocity) const
   {
     const double s = std::abs(slip_velocity);
-    if (is_frictionless())
+    if (frictionless)
       return 0.;
-    if (is_rate_independent())
-      return S * coefficient(0.) * s;
-    return S * (b * s + (a - b) * (1. - std::exp(-alpha * s)) / alpha);
+    if (rate_independent)
+      return S * law->coefficient(0.) * s;
+    return law->potential(S, s);
   }
 
   bool FrictionLaw::is_frictionless() const
   {
-    return law == FrictionParameters::Law::none || S == 0. ||
-           (a == 0. && b == 0.);
+    return frictionless;
   }
 
   bool FrictionLaw::is_rate_independent() const
   {
-    return law != FrictionParameters::Law::slip_rate_weakening || a == b ||
-           alpha == 0.;
+    return rate_independent;
   }
 
   double FrictionLaw::one_sided_lipschitz_constant() const
   {
-    return is_rate_independent() ? 0. : (a - b) * alpha;
+    return rate_independent ? 0. : law->one_sided_lipschitz_constant();
   }
 
 

@@ -16,15 +16,184 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <core/contact_problem.h>
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+
+#include <core/postprocessor.h>
 
 #include <array>
+#include <limits>
 #include <iomanip>
 #include <sstream>
 
 namespace Contact
 {
-  // @sect4{ContactProblem::field_integrals}
+  /**
+   * The self-checks of a run (doc/verification.md), each a
+   * relative violation that round-off keeps far below
+   * SelfChecks::tolerance:
+   *   - algebraic_energy: the energy identity from the products of the
+   *     step's matrices with w_n. It holds whenever each step solves its
+   *     linear system with the eta it reports, whatever the matrices, the
+   *     loads or the friction law: it checks the solve and the bookkeeping.
+   *   - quadrature_energy: the same identity with every term integrated
+   *     from the fields (1/2 int rho |w_h|^2, 1/2 int B eps(u_h):eps(u_h),
+   *     ...) and the loads' expressions, not from the matrices and the
+   *     load vector: it catches wrong matrices, loads or constraints.
+   *   - friction_law: the friction law (5.3) at the converged slip rates,
+   *     FrictionSolver::law_residual: it catches a wrong coefficient, sign
+   *     or stick condition. It fails where it exceeds the tolerance and
+   *     twice what the convexification's own tolerance allows
+   *     (friction_law_allowance, FrictionSolver::law_residual_allowance).
+   *   - negative_friction_power: a step whose friction power on the
+   *     slipping nodes is negative, relative to the energies (friction
+   *     only dissipates; FrictionSolver::slip_power).
+   *   - moment_balance: the balance of moments about the z-axis, (5.2)
+   *     tested with the rigid rotation r = e_z x x, relative to the
+   *     largest sum so far of the magnitudes of the products it adds up
+   *     (moment_scale, update_moments()). Checked only where r lies in
+   *     V_h (MomentBalance): it catches wrong loads or velocities in the
+   *     balance law of the angular momentum.
+   */
+  struct SelfCheckValues
+  {
+    double algebraic_energy        = 0;
+    double quadrature_energy       = 0;
+    double friction_law            = 0;
+    double friction_law_allowance  = 0;
+    double friction_law_excess     = 0;
+    double negative_friction_power = 0;
+    double moment_balance          = 0;
+    double moment_scale            = 0;
+
+    void take_largest(const SelfCheckValues &other)
+    {
+      algebraic_energy  = std::max(algebraic_energy, other.algebraic_energy);
+      quadrature_energy = std::max(quadrature_energy, other.quadrature_energy);
+      friction_law      = std::max(friction_law, other.friction_law);
+      friction_law_allowance =
+        std::max(friction_law_allowance, other.friction_law_allowance);
+      friction_law_excess =
+        std::max(friction_law_excess, other.friction_law_excess);
+      negative_friction_power =
+        std::max(negative_friction_power, other.negative_friction_power);
+      moment_balance = std::max(moment_balance, other.moment_balance);
+      moment_scale   = std::max(moment_scale, other.moment_scale);
+    }
+
+    template <class Archive>
+    void serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &algebraic_energy &quadrature_energy &friction_law
+        &friction_law_allowance &friction_law_excess &negative_friction_power
+          &moment_balance &moment_scale;
+    }
+  };
+
+
+  /** The integrals of the fields that the energy identity by quadrature
+   *  adds up (self_checks.cc). */
+  struct FieldIntegrals
+  {
+    double kinetic       = 0; // 1/2 int rho |w_n|^2
+    double velocity_jump = 0; // 1/2 int rho |w_n - w_{n-1}|^2
+    double elastic       = 0; // 1/2 int B eps(u_n) : eps(u_n)
+    double viscous_power = 0; // int A eps(w_n) : eps(w_n)
+    double elastic_power = 0; // int B eps(w_n) : eps(w_n)
+  };
+
+
+  /** * The moments about the z-axis through the origin (the axis normal to
+   * the plane in 2D) at t_n: the angular momentum L_n = int rho (x x w_n)_z
+   * (with the mass matrix's quadrature), the moment of the loads F_n, that
+   * of the friction forces -C^T eta_n on the body, and what is left of
+   * (L_n - L_{n-1}) / k: the moment of the reactions of the constraints
+   * (clamp, normal reactions of Gamma_3 and of symmetry planes). (5.2)
+   * tested with the rotation r = e_z x x gives
+   *   (L_n - L_{n-1}) / k = applied + friction + reaction
+   * where r lies in V_h, with reaction = 0: no clamp, and every normal
+   * constraint normal to r, as on a Gamma_3 that is a circle or a cylinder
+   * around the z-axis; and the mapping's degree at most the element's, so
+   * that r is its own interpolant.
+   */
+  struct MomentBalance
+  {
+    double angular_momentum = 0;
+    double applied          = 0;
+    double friction         = 0;
+    double reaction         = 0;
+  };
+
+
+  template <int dim>
+  class SelfChecks : public Postprocessor<dim>
+  {
+  public:
+    /** Above it a self-check has failed, and the run ends with an error
+     *  (the summary prints which). */
+    static constexpr double tolerance = 1e-8;
+
+    void initialize() override
+    {
+      setup_moment_balance();
+    }
+
+    // A resumed run has the state of the checks from the checkpoint.
+    void start(const bool resumed) override
+    {
+      if (!resumed)
+        start_self_checks();
+    }
+
+    void after_substep() override
+    {
+      check_step();
+    }
+
+    void add_columns(TimeSeriesRow &row) const override;
+
+    void save(boost::archive::binary_oarchive &archive) override
+    {
+      archive &energy_by_quadrature &largest_checks;
+    }
+
+    void load(boost::archive::binary_iarchive &archive) override
+    {
+      archive &energy_by_quadrature &largest_checks;
+    }
+
+    void print_summary() const override;
+
+    void require_success() const override;
+
+  private:
+    FieldIntegrals field_integrals(const FastVector &u,
+                                   const FastVector &w,
+                                   const FastVector &old_w) const;
+    void           setup_moment_balance();
+    void           start_self_checks();
+    void           check_step();
+    double         update_moments(const LoadPower &applied);
+    void           print_why_moments_are_not_checked() const;
+
+    // The energy identity's terms by quadrature, and the checks' values of
+    // the last step and their largest over the steps.
+    EnergyBalance   energy_by_quadrature;
+    SelfCheckValues step_checks;
+    SelfCheckValues largest_checks;
+    // The rotation r = e_z x x (interpolated), its tangential components on
+    // Gamma_3 (C r), how much the constraints change it relative to its
+    // size, whether it lies in V_h (the moment balance is then a
+    // self-check), and the moments of the last step.
+    FastVector     rotation;
+    Vector<double> rotation_on_gamma3;
+    double         rotation_defect           = 0;
+    bool           moment_balance_is_checked = false;
+    MomentBalance  moments;
+  };
+
+
+  // @sect4{SelfChecks::field_integrals}
 
   // The integrals of the fields that the energy identity (5.7) is made of,
   // with the quadrature rules of the assembly (the mass rule for rho |w|^2,
@@ -37,12 +206,12 @@ namespace Contact
   // is a scalar one in one component) instead of through FEValues' vector
   // functions, which allocate at every call.
   template <int dim>
-  FieldIntegrals
-  ContactProblem<dim>::field_integrals(const FastVector &u,
-                                       const FastVector &w,
-                                       const FastVector &old_w) const
+  FieldIntegrals SelfChecks<dim>::field_integrals(const FastVector &u,
+                                                  const FastVector &w,
+                                                  const FastVector &old_w) const
   {
-    const auto  &material = parameters.material;
+    const DiscreteSpace<dim> &space    = this->space();
+    const auto               &material = this->parameters().material;
     const double rho = material.density, lambda = material.lambda(dim),
                  two_G = material.two_G(), mu1 = material.viscosity_mu1,
                  mu2 = material.viscosity_mu2;
@@ -55,25 +224,25 @@ namespace Contact
              deviator_factor * (eps * eps);
     };
 
-    const bool         lumped = parameters.geometry.lumped_mass;
-    FEValues<dim>      strain_values(*mapping,
-                                fe,
-                                quadrature,
+    const bool         lumped = this->parameters().geometry.lumped_mass;
+    FEValues<dim>      strain_values(*space.mapping,
+                                space.fe,
+                                space.quadrature,
                                 update_gradients | update_JxW_values |
                                   (lumped ? update_default : update_values));
-    FEValues<dim>      lumped_values(*mapping,
-                                fe,
-                                mass_quadrature,
+    FEValues<dim>      lumped_values(*space.mapping,
+                                space.fe,
+                                space.mass_quadrature,
                                 update_values | update_JxW_values);
     FEValues<dim>     &mass_values = (lumped ? lumped_values : strain_values);
-    const unsigned int n_dofs      = fe.n_dofs_per_cell();
+    const unsigned int n_dofs      = space.fe.n_dofs_per_cell();
     Vector<double>     u_cell(n_dofs), w_cell(n_dofs), old_w_cell(n_dofs);
     std::vector<unsigned int> component(n_dofs);
     for (unsigned int i = 0; i < n_dofs; ++i)
-      component[i] = fe.system_to_component_index(i).first;
+      component[i] = space.fe.system_to_component_index(i).first;
 
     std::array<double, 5> sums{};
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           cell->get_dof_values(u, u_cell);
@@ -113,34 +282,13 @@ namespace Contact
             }
         }
     Utilities::MPI::sum(ArrayView<const double>(sums.data(), sums.size()),
-                        mpi_communicator,
+                        this->mpi_communicator(),
                         ArrayView<double>(sums.data(), sums.size()));
     return {sums[0], sums[1], sums[2], sums[3], sums[4]};
   }
 
 
-  // @sect4{ContactProblem::fast_ghosted}
-
-  // A ghosted copy of a field in deal.II's own vector, whose entries the
-  // cell loops read much faster than those of an Epetra vector (a lookup in
-  // the vector's map for each).
-  template <int dim>
-  FastVector ContactProblem<dim>::fast_ghosted(const VectorType &v) const
-  {
-    FastVector result(locally_owned_dofs,
-                      locally_relevant_dofs,
-                      mpi_communicator);
-    if (locally_owned_dofs.is_contiguous())
-      std::copy(v.begin(), v.end(), result.begin());
-    else
-      for (const types::global_dof_index i : locally_owned_dofs)
-        result[i] = v[i];
-    result.update_ghost_values();
-    return result;
-  }
-
-
-  // @sect4{ContactProblem::setup_moment_balance}
+  // @sect4{SelfChecks::setup_moment_balance}
 
   // The rigid rotation r = e_z x x, interpolated, its tangential components
   // on Gamma_3, and whether the balance of moments is a self-check: where r
@@ -153,43 +301,49 @@ namespace Contact
   // circular Gamma_3 about the axis, so do nodes' normals that are not
   // radial, by how much the summary says (rotation_defect).
   template <int dim>
-  void ContactProblem<dim>::setup_moment_balance()
+  void SelfChecks<dim>::setup_moment_balance()
   {
+    const DiscreteSpace<dim> &space = this->space();
     std::vector<std::function<double(const Point<dim> &)>> components(
       dim, [](const Point<dim> &) { return 0.; });
     components[0] = [](const Point<dim> &x) { return -x[1]; };
     components[1] = [](const Point<dim> &x) { return x[0]; };
-    VectorType r(locally_owned_dofs, mpi_communicator);
-    VectorTools::interpolate(*mapping,
-                             dof_handler,
+    VectorType r(space.locally_owned_dofs, this->mpi_communicator());
+    VectorTools::interpolate(*space.mapping,
+                             space.dof_handler,
                              FunctionFromFunctionObjects<dim>(components),
                              r);
     VectorType constrained(r);
-    constraints.distribute(constrained);
+    space.constraints.distribute(constrained);
     constrained -= r;
-    const auto &geometry = parameters.geometry;
+    const auto &geometry = this->parameters().geometry;
     rotation_defect      = constrained.linfty_norm() / r.linfty_norm();
     moment_balance_is_checked =
       rotation_defect <= 1e-12 &&
-      (geometry.simplex_cells || geometry.mapping_degree <= fe.degree);
-    rotation           = fast_ghosted(r);
-    rotation_on_gamma3 = friction_solver->boundary().tangential_velocities(r);
+      (geometry.simplex_cells || geometry.mapping_degree <= space.fe.degree);
+    rotation = space.fast_ghosted(r);
+    rotation_on_gamma3 =
+      this->friction_solver().boundary().tangential_velocities(r);
   }
 
 
-  // @sect4{ContactProblem::start_self_checks}
+  // @sect4{SelfChecks::start_self_checks}
 
   // The initial energy by quadrature, after set_initial_values(), and the
   // moments of the row of step 0: the angular momentum and the loads'
   // moment at t = 0 (no friction force acts before the first step, and the
   // reaction, a rate, is not defined there: 0).
   template <int dim>
-  void ContactProblem<dim>::start_self_checks()
+  void SelfChecks<dim>::start_self_checks()
   {
-    moments                  = MomentBalance();
-    moments.angular_momentum = angular_momentum_density * velocity;
-    moments.applied          = load_power(0., {&rotation})[0].power;
-    const FastVector u = fast_ghosted(displacement), w = fast_ghosted(velocity);
+    const DiscreteSpace<dim> &space = this->space();
+    const StepState          &state = this->state();
+    moments                         = MomentBalance();
+    moments.angular_momentum =
+      this->matrices().angular_momentum_density * state.velocity;
+    moments.applied    = this->loads().power(0., {&rotation})[0].power;
+    const FastVector u = space.fast_ghosted(state.displacement),
+                     w = space.fast_ghosted(state.velocity);
     const FieldIntegrals integrals = field_integrals(u, w, w);
     energy_by_quadrature           = EnergyBalance();
     energy_by_quadrature.kinetic   = integrals.kinetic;
@@ -200,7 +354,7 @@ namespace Contact
   }
 
 
-  // @sect4{ContactProblem::check_step}
+  // @sect4{SelfChecks::check_step}
 
   // After each step (each half of a cut step): the terms of (5.7) by
   // quadrature, (5.2) tested with w_n as in update_energy_balance(),
@@ -213,12 +367,15 @@ namespace Contact
   // energies' round-off when K is ill-conditioned: the law check measures
   // it).
   template <int dim>
-  void ContactProblem<dim>::check_step()
+  void SelfChecks<dim>::check_step()
   {
-    TimerOutput::Scope t(computing_timer, "Self-checks");
-    const double       k = time_step;
-    const FastVector u = fast_ghosted(displacement), w = fast_ghosted(velocity),
-                     old_w         = fast_ghosted(old_velocity);
+    const DiscreteSpace<dim> &space = this->space();
+    const StepState          &state = this->state();
+    TimerOutput::Scope        t(this->computing_timer(), "Self-checks");
+    const double              k    = this->time_step();
+    const FastVector          u    = space.fast_ghosted(state.displacement),
+                     w             = space.fast_ghosted(state.velocity),
+                     old_w         = space.fast_ghosted(state.old_velocity);
     const FieldIntegrals integrals = field_integrals(u, w, old_w);
     EnergyBalance       &balance   = energy_by_quadrature;
     balance.kinetic                = integrals.kinetic;
@@ -227,28 +384,31 @@ namespace Contact
     balance.numerical_dissipation +=
       integrals.velocity_jump + 0.5 * k * k * integrals.elastic_power;
     const std::vector<LoadPower> load_powers =
-      load_power(time, {&w, &rotation});
+      this->loads().power(state.time, {&w, &rotation});
     balance.external_work += k * load_powers[0].power;
-    balance.friction_dissipation = energy.friction_dissipation;
+    balance.friction_dissipation = state.energy.friction_dissipation;
     const double moment_scale    = update_moments(load_powers[1]);
 
     const auto relative = [](const double value, const double scale) {
       return std::abs(value) /
              std::max(scale, std::numeric_limits<double>::min());
     };
-    step_checks.algebraic_energy = relative(energy.residual(), energy.scale());
+    step_checks.algebraic_energy =
+      relative(state.energy.residual(), state.energy.scale());
     step_checks.quadrature_energy =
       relative(balance.residual(), balance.scale());
-    step_checks.friction_law = friction_solver->law_residual(velocity);
+    step_checks.friction_law =
+      this->friction_solver().law_residual(state.velocity);
     step_checks.friction_law_allowance =
-      2. * friction_solver->law_residual_allowance();
+      2. * this->friction_solver().law_residual_allowance();
     step_checks.friction_law_excess =
       step_checks.friction_law <= step_checks.friction_law_allowance ?
         0. :
         step_checks.friction_law;
     step_checks.negative_friction_power =
-      relative(std::min(k * friction_solver->slip_power(velocity), 0.),
-               energy.scale());
+      relative(std::min(k * this->friction_solver().slip_power(state.velocity),
+                        0.),
+               state.energy.scale());
     step_checks.moment_scale = moment_scale;
     step_checks.moment_balance =
       moment_balance_is_checked ?
@@ -260,7 +420,7 @@ namespace Contact
   }
 
 
-  // @sect4{ContactProblem::update_moments}
+  // @sect4{SelfChecks::update_moments}
 
   // The moments of the step (MomentBalance): L_n and L_{n-1} by the angular
   // momentum density (from w_{n-1}, so that a resumed run needs nothing
@@ -270,8 +430,9 @@ namespace Contact
   // moments themselves are no scale: a ring under pressure alone, or
   // spinning freely, has no moment at all.
   template <int dim>
-  double ContactProblem<dim>::update_moments(const LoadPower &applied)
+  double SelfChecks<dim>::update_moments(const LoadPower &applied)
   {
+    const StepState &state = this->state();
     // a . b (by the vectors' own dot product, whose summation is more
     // accurate than a plain loop's), and the sum of |a_i b_i|.
     const auto dot =
@@ -281,37 +442,40 @@ namespace Contact
         for (auto a_entry = a.begin(); a_entry != a.end(); ++a_entry, ++b_entry)
           magnitude += std::abs(*a_entry * *b_entry);
         if (distributed)
-          magnitude = Utilities::MPI::sum(magnitude, mpi_communicator);
+          magnitude = Utilities::MPI::sum(magnitude, this->mpi_communicator());
         return std::array<double, 2>{{a * b, magnitude}};
       };
-    const auto old_momentum = dot(angular_momentum_density, old_velocity, true);
-    const auto momentum     = dot(angular_momentum_density, velocity, true);
+    const auto old_momentum =
+      dot(this->matrices().angular_momentum_density, state.old_velocity, true);
+    const auto momentum =
+      dot(this->matrices().angular_momentum_density, state.velocity, true);
     // Every process has all of eta and C r.
-    const auto friction =
-      dot(friction_solver->state().friction_force, rotation_on_gamma3, false);
+    const auto friction = dot(this->friction_solver().state().friction_force,
+                              rotation_on_gamma3,
+                              false);
     moments.angular_momentum = momentum[0];
     moments.applied          = applied.power;
     moments.friction         = -friction[0];
-    moments.reaction         = (momentum[0] - old_momentum[0]) / time_step -
+    moments.reaction = (momentum[0] - old_momentum[0]) / this->time_step() -
                        moments.applied - moments.friction;
-    return (momentum[1] + old_momentum[1]) / time_step + applied.magnitude +
-           friction[1];
+    return (momentum[1] + old_momentum[1]) / this->time_step() +
+           applied.magnitude + friction[1];
   }
 
 
-  // @sect4{ContactProblem::print_self_checks}
+  // @sect4{SelfChecks::print_summary}
 
   template <int dim>
-  void ContactProblem<dim>::print_self_checks() const
+  void SelfChecks<dim>::print_summary() const
   {
     const auto line =
       [&](const std::string &name, const double value, const double violation) {
-        pcout << "  " << name << ": " << std::setprecision(2) << value
-              << (violation < self_check_tolerance ? "" : "  FAILED")
-              << std::endl;
+        this->pcout() << "  " << name << ": " << std::setprecision(2) << value
+                      << (violation < tolerance ? "" : "  FAILED") << std::endl;
       };
-    pcout << "Self-checks, largest over the steps (relative; each must stay "
-          << "below " << self_check_tolerance << "):" << std::endl;
+    this->pcout()
+      << "Self-checks, largest over the steps (relative; each must stay "
+      << "below " << tolerance << "):" << std::endl;
     const SelfCheckValues &c = largest_checks;
     line("energy identity from the matrices (the solve)",
          c.algebraic_energy,
@@ -322,11 +486,10 @@ namespace Contact
     line("friction law at the converged slip rates",
          c.friction_law,
          c.friction_law_excess);
-    if (c.friction_law >= self_check_tolerance &&
-        c.friction_law_excess < self_check_tolerance)
-      pcout << "    (within what '" + Entry::convexification_tolerance +
-                 "' allows, "
-            << "up to " << c.friction_law_allowance << ")" << std::endl;
+    if (c.friction_law >= tolerance && c.friction_law_excess < tolerance)
+      this->pcout() << "    (within what '" + Entry::convexification_tolerance +
+                         "' allows, "
+                    << "up to " << c.friction_law_allowance << ")" << std::endl;
     line("negative friction power on slipping nodes",
          c.negative_friction_power,
          c.negative_friction_power);
@@ -334,49 +497,51 @@ namespace Contact
       line("balance of moments about the z-axis",
            c.moment_balance,
            c.moment_balance);
-    else if (parameters.geometry.shell)
+    else if (this->parameters().geometry.shell)
       print_why_moments_are_not_checked();
   }
 
 
-  // @sect4{ContactProblem::print_why_moments_are_not_checked}
+  // @sect4{SelfChecks::print_why_moments_are_not_checked}
 
   // On a shell, where a user expects the balance of moments, the reason it
   // is not a self-check of this run (setup_moment_balance()).
   template <int dim>
-  void ContactProblem<dim>::print_why_moments_are_not_checked() const
+  void SelfChecks<dim>::print_why_moments_are_not_checked() const
   {
-    pcout << "  (balance of moments about the z-axis: not checked, ";
+    this->pcout() << "  (balance of moments about the z-axis: not checked, ";
     if (rotation_defect <= 1e-12)
-      pcout << "the mapping's degree is above the element's, so the rigid "
-               "rotation is not in the finite element space; column "
-               "reaction_moment of time_series.csv shows how far the "
-               "balance holds)";
-    else if (!parameters.boundary.clamped_ids.empty())
-      pcout << "a clamp holds the body against turning; column "
-               "reaction_moment of time_series.csv is its moment)";
+      this->pcout()
+        << "the mapping's degree is above the element's, so the rigid "
+           "rotation is not in the finite element space; column "
+           "reaction_moment of time_series.csv shows how far the "
+           "balance holds)";
+    else if (!this->parameters().boundary.clamped_ids.empty())
+      this->pcout() << "a clamp holds the body against turning; column "
+                       "reaction_moment of time_series.csv is its moment)";
     else
-      pcout << "the nodes' normals on the constraints' boundaries are not "
-               "all normal to the rotation about the axis: they change it "
-               "by "
-            << rotation_defect << " of its size)";
-    pcout << std::endl;
+      this->pcout()
+        << "the nodes' normals on the constraints' boundaries are not "
+           "all normal to the rotation about the axis: they change it "
+           "by "
+        << rotation_defect << " of its size)";
+    this->pcout() << std::endl;
   }
 
 
-  // @sect4{ContactProblem::require_self_checks}
+  // @sect4{SelfChecks::require_success}
 
   // The end of a run whose self-check failed: an error that names the
   // check and the column of time_series.csv that shows from which step on.
   template <int dim>
-  void ContactProblem<dim>::require_self_checks() const
+  void SelfChecks<dim>::require_success() const
   {
     std::ostringstream failures;
     failures << std::setprecision(2);
     const auto add = [&](const double       value,
                          const std::string &what,
                          const std::string &column) {
-      if (!(value < self_check_tolerance))
+      if (!(value < tolerance))
         failures << "\n  " << what << " holds only to " << value << " (column "
                  << column << " of time_series.csv)";
     };
@@ -399,37 +564,38 @@ namespace Contact
         "constraints must have no moment)",
         "reaction_moment");
     std::ostringstream message;
-    message << "Self-check failed (tolerance " << self_check_tolerance
+    message << "Self-check failed (tolerance " << tolerance
             << "):" << failures.str() << "\nThe results in '"
-            << parameters.output.directory
+            << this->parameters().output.directory
             << "' are not a solution of the scheme.";
     AssertThrow(failures.str().empty(), ExcMessage(message.str()));
   }
 
 
+  // @sect4{SelfChecks::add_columns}
+
+  // The checks' values of the step, with the momentum and the moments the
+  // balance of moments adds up (columns of time_series.csv).
   template <int dim>
-  void ContactProblem<dim>::set_sabotage(const Sabotage<dim> &injected)
+  void SelfChecks<dim>::add_columns(TimeSeriesRow &row) const
   {
-    sabotage = injected;
+    const StepState     &state = this->state();
+    const Tensor<1, dim> p     = this->matrices().momentum(state.velocity);
+    row.add("algebraic_energy_residual", state.energy.residual());
+    row.add("quadrature_energy_residual", energy_by_quadrature.residual());
+    row.add("friction_law_residual", step_checks.friction_law);
+    for (unsigned int d = 0; d < dim; ++d)
+      row.add(std::string("momentum_") + "xyz"[d], p[d]);
+    row.add("angular_momentum", moments.angular_momentum);
+    row.add("applied_moment", moments.applied);
+    row.add("friction_moment", moments.friction);
+    row.add("reaction_moment", moments.reaction);
   }
 
 
-#define INSTANTIATE(dim)                                                    \
-  template FieldIntegrals ContactProblem<dim>::field_integrals(             \
-    const FastVector &, const FastVector &, const FastVector &) const;      \
-  template FastVector ContactProblem<dim>::fast_ghosted(const VectorType &) \
-    const;                                                                  \
-  template void   ContactProblem<dim>::setup_moment_balance();              \
-  template void   ContactProblem<dim>::start_self_checks();                 \
-  template double ContactProblem<dim>::update_moments(const LoadPower &);   \
-  template void   ContactProblem<dim>::check_step();                        \
-  template void   ContactProblem<dim>::print_self_checks() const;           \
-  template void   ContactProblem<dim>::print_why_moments_are_not_checked()  \
-    const;                                                                  \
-  template void ContactProblem<dim>::require_self_checks() const;           \
-  template void ContactProblem<dim>::set_sabotage(const Sabotage<dim> &);
 
-  INSTANTIATE(2)
-  INSTANTIATE(3)
-#undef INSTANTIATE
+  namespace
+  {
+    const PostprocessorRegistration<SelfChecks> registration(30);
+  }
 } // namespace Contact

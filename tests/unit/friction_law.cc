@@ -9,18 +9,25 @@
 
 using namespace Contact;
 
-FrictionParameters make_parameters(const FrictionParameters::Law law,
-                                   const double                  S,
-                                   const double                  a,
-                                   const double                  b,
-                                   const double                  alpha)
+// The law as a .prm file gives it: through the declaration and the parser
+// of the subsection Friction.
+FrictionParameters make_parameters(const std::string &law,
+                                   const double       S,
+                                   const double       a,
+                                   const double       b,
+                                   const double       alpha)
 {
+  ParameterHandler prm;
+  FrictionParameters::declare_parameters(prm);
+  prm.enter_subsection(FrictionLaws::subsection);
+  prm.set("Friction law", law);
+  prm.set("Friction bound S", S);
+  prm.set("a", a);
+  prm.set("b", b);
+  prm.set("alpha", alpha);
+  prm.leave_subsection();
   FrictionParameters parameters;
-  parameters.law     = law;
-  parameters.bound_S = S;
-  parameters.a       = a;
-  parameters.b       = b;
-  parameters.alpha   = alpha;
+  parameters.parse_parameters(prm);
   return parameters;
 }
 
@@ -67,18 +74,15 @@ int main()
 {
   std::cout << std::setprecision(8);
   print_law("slip rate weakening a = 1, b = 0.1, alpha = 200, S = 2",
-            FrictionLaw(make_parameters(
-              FrictionParameters::Law::slip_rate_weakening, 2, 1, 0.1, 200)));
-  print_law("constant a = 0.4, S = 3",
-            FrictionLaw(make_parameters(
-              FrictionParameters::Law::constant, 3, 0.4, 0.1, 200)));
-  print_law("slip rate weakening with a = b = 0.5, S = 1",
-            FrictionLaw(make_parameters(
-              FrictionParameters::Law::slip_rate_weakening, 1, 0.5, 0.5, 200)));
-  print_law("none",
             FrictionLaw(
-              make_parameters(FrictionParameters::Law::none, 3, 1, 0.1, 200)));
+              make_parameters("slip rate weakening", 2, 1, 0.1, 200)));
+  print_law("constant a = 0.4, S = 3",
+            FrictionLaw(make_parameters("constant", 3, 0.4, 0.1, 200)));
+  print_law("slip rate weakening with a = b = 0.5, S = 1",
+            FrictionLaw(
+              make_parameters("slip rate weakening", 1, 0.5, 0.5, 200)));
+  print_law("none", FrictionLaw(make_parameters("none", 3, 1, 0.1, 200)));
   print_law("slip rate weakening with S = 0",
-            FrictionLaw(make_parameters(
-              FrictionParameters::Law::slip_rate_weakening, 0, 1, 0.1, 200)));
+            FrictionLaw(
+              make_parameters("slip rate weakening", 0, 1, 0.1, 200)));
 }

@@ -83,14 +83,21 @@ std::pair<double, std::string> violation(const FullMatrix<double> &D,
   return {worst / law.bound(0), pattern};
 }
 
+// The law as a .prm file gives it: through the declaration and the parser
+// of the subsection Friction.
 FrictionLaw make_friction_law(const Law &law)
 {
+  ParameterHandler prm;
+  FrictionParameters::declare_parameters(prm);
+  prm.enter_subsection(FrictionLaws::subsection);
+  prm.set("Friction law", "slip rate weakening");
+  prm.set("Friction bound S", law.S);
+  prm.set("a", law.a);
+  prm.set("b", law.b);
+  prm.set("alpha", law.alpha);
+  prm.leave_subsection();
   FrictionParameters parameters;
-  parameters.law     = FrictionParameters::Law::slip_rate_weakening;
-  parameters.bound_S = law.S;
-  parameters.a       = law.a;
-  parameters.b       = law.b;
-  parameters.alpha   = law.alpha;
+  parameters.parse_parameters(prm);
   return FrictionLaw(parameters);
 }
 

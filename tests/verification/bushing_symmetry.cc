@@ -35,6 +35,7 @@
 #include <boost/serialization/utility.hpp>
 
 #include <core/contact_problem.h>
+#include <core/postprocessor.h>
 #include <app/run.h>
 
 #include <array>
@@ -213,10 +214,11 @@ Ring run(const std::string &scene, const std::vector<std::string> &sets)
   ContactProblem<dim> problem(parameters);
   Ring                ring;
   if constexpr (dim == 2)
-    problem.set_step_observer([&](const ContactProblem<2> &p) {
-      ring.largest_rotation_defect =
-        std::max(ring.largest_rotation_defect, rotation_defect(p));
-    });
+    problem.add_postprocessor(
+      std::make_unique<StepObserver<2>>([&](const ContactProblem<2> &p) {
+        ring.largest_rotation_defect =
+          std::max(ring.largest_rotation_defect, rotation_defect(p));
+      }));
   std::ostringstream silent;
   auto *const        console = std::cout.rdbuf(silent.rdbuf());
   const RunSummary   summary = problem.run();

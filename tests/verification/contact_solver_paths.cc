@@ -18,6 +18,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <core/contact_problem.h>
+#include <core/postprocessor.h>
 #include <app/run.h>
 
 #include <algorithm>
@@ -57,11 +58,12 @@ Trajectory run(const std::string              &scene,
 
   ContactProblem<dim> problem(parameters);
   Trajectory          trajectory;
-  problem.set_step_observer([&](const ContactProblem<dim> &p) {
-    trajectory.displacements.push_back(p.get_displacement());
-    trajectory.velocities.push_back(p.get_velocity());
-    trajectory.friction_forces.push_back(p.get_friction_force());
-  });
+  problem.add_postprocessor(
+    std::make_unique<StepObserver<dim>>([&](const ContactProblem<dim> &p) {
+      trajectory.displacements.push_back(p.get_displacement());
+      trajectory.velocities.push_back(p.get_velocity());
+      trajectory.friction_forces.push_back(p.get_friction_force());
+    }));
   // The runs' console output is not part of this test's output.
   std::ostringstream silent;
   auto *const        console = std::cout.rdbuf(silent.rdbuf());

@@ -13,6 +13,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <core/contact_problem.h>
+#include <core/postprocessor.h>
 #include <core/manufactured_solution.h>
 #include <app/run.h>
 
@@ -37,8 +38,7 @@ Parameters scene(const std::string &directory)
 double largest_V_error(const std::string &directory,
                        const Sabotage<2> &sabotage)
 {
-  ContactProblem<2> problem(scene(directory));
-  problem.set_sabotage(sabotage);
+  ContactProblem<2>  problem(scene(directory), sabotage);
   std::ostringstream console_output;
   auto *const        console = std::cout.rdbuf(console_output.rdbuf());
   std::string        outcome = "ended normally";

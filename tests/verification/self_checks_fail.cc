@@ -23,6 +23,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <core/contact_problem.h>
+#include <core/postprocessor.h>
 #include <app/run.h>
 
 #include <iostream>
@@ -46,13 +47,13 @@ void run(const std::string &name,
                      "Output/Print timings=false",
                      "Output/Report times=",
                      "Output/Output directory=" + name});
-  ContactProblem<2> problem(parameters);
-  problem.set_sabotage(sabotage);
+  ContactProblem<2> problem(parameters, sabotage);
   if (double_velocity_after_step_3)
-    problem.set_step_observer([](const ContactProblem<2> &p) {
-      if (p.get_step_number() == 3)
-        const_cast<VectorType &>(p.get_velocity()) *= 2.;
-    });
+    problem.add_postprocessor(
+      std::make_unique<StepObserver<2>>([](const ContactProblem<2> &p) {
+        if (p.get_step_number() == 3)
+          const_cast<VectorType &>(p.get_velocity()) *= 2.;
+      }));
   std::ostringstream console_output;
   auto *const        console = std::cout.rdbuf(console_output.rdbuf());
   try

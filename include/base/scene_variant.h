@@ -1,0 +1,63 @@
+/**
+ * A variant of a scene: the same scene with another h, k, element degree
+ * and output directory, as the drivers run it (the levels of a convergence
+ * study, the coarse runs of an error estimate, the pilots of a target and
+ * the run it chooses). Also the one reader of parameters as a run prints
+ * them (Parameters::used_parameters, a run's parameters.prm).
+ */
+#ifndef contact_scene_variant_h
+#define contact_scene_variant_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <base/parameters.h>
+
+#include <map>
+#include <string>
+
+namespace Contact
+{
+  /** 'Section/Entry' -> value of every entry of a parameter text as
+   *  ParameterHandler prints it ("subsection X", "set a = b", "end"; other
+   *  lines, such as comments, are skipped). Entries outside subsections
+   *  are keyed by their name alone. */
+  std::map<std::string, std::string>
+  read_printed_entries(const std::string &text);
+
+  /** Sets the entry 'Section/Entry' of prm to value. Throws
+   *  ParameterHandler's exception for an entry that is not declared or a
+   *  value that does not fit its pattern. */
+  void set_entry(ParameterHandler  &prm,
+                 const std::string &path,
+                 const std::string &value);
+
+  /** A scene with other h, k, degree and output directory. */
+  struct SceneVariant
+  {
+    /** h = 2^-h_halvings times the scene's 'Cell size' for a box; a mesh
+     *  file or a shell is refined h_halvings times more than the scene's
+     *  'Mesh refinements'. Negative: coarser. Powers of 2 keep the meshes
+     *  nested and h exact. */
+    int h_halvings;
+    /** k = T / n_steps (the run a target chooses has a number of steps
+     *  that is no power-of-2 multiple of the scene's). */
+    unsigned int n_steps;
+    unsigned int degree;
+    std::string  directory;
+    /** A quiet variant (a coarse run of an error estimate, a pilot) writes
+     *  only what an estimate compares (its state at T and
+     *  time_series.csv): no VTU, Gamma_3 history or checkpoint, and it runs
+     *  without error estimate or target. A variant that is not quiet has
+     *  the output of the scene; of a scene with a target it is the chosen
+     *  run, which runs with its error estimate. */
+    bool quiet;
+  };
+
+  /** The parameters of `variant` of `scene`, checked as those of a scene
+   *  are. Its used_parameters are the scene's with the entries of the
+   *  variant set (numbers with 17 digits, read back as the same double). */
+  Parameters parameters_of(const Parameters   &scene,
+                           const SceneVariant &variant);
+} // namespace Contact
+
+#endif

@@ -1,0 +1,30 @@
+/**
+ * The nodes of Gamma_3 (contact_nodes.cc): what the friction solver and
+ * the postprocessors know of the contact boundary.
+ */
+#ifndef contact_contact_nodes_h
+#define contact_contact_nodes_h
+
+#include <core/discrete_space.h>
+#include <gamma3/friction_solver.h>
+
+#include <vector>
+
+namespace Contact
+{
+  /**
+   * The nodes of the faces with one of `contact_ids`, with their dofs, the
+   * weight m_p = int_Gamma3 phi_p ds of the nodal ("node-to-rigid")
+   * friction, the outward normal averaged over the faces around the node
+   * and the tangents orthogonal to its constraints, ordered along Gamma_3.
+   * A node all of whose dofs are constrained (where Gamma_3 meets the
+   * clamp) has no friction unknown and is left out. Every process gets
+   * every node (collective).
+   */
+  template <int dim>
+  std::vector<ContactNode<dim>>
+  make_contact_nodes(const DiscreteSpace<dim>              &space,
+                     const std::vector<types::boundary_id> &contact_ids);
+} // namespace Contact
+
+#endif

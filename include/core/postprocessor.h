@@ -1,0 +1,231 @@
+/**
+ * Postprocessor<dim>: what observes a run of ContactProblem<dim> without
+ * changing it (the split of ASPECT's Postprocess::Interface). The core
+ * solves; everything a user sees of a run (the VTU/PVD output, the time
+ * series, the Gamma_3 history, the probes, the console reports, the
+ * self-checks, the slip diagnostics, the errors against a manufactured
+ * solution) is a postprocessor that owns its state, saves it with a
+ * checkpoint, and reads the problem through the accessors of this base
+ * class.
+ *
+ * A run calls, in the order of the postprocessors' ranks:
+ *   initialize()      after the set-up (mesh, matrices, initial values),
+ *   load()            on --resume, with the checkpoint's state,
+ *   start(resumed)    before the first step: files are opened (a resumed
+ *                     run cuts them back to its step), a fresh run's
+ *                     initial state is written,
+ *   after_substep()   after each solved linear system of a step (both
+ *                     halves of a cut step); a step that fails never gets
+ *                     here, so no postprocessor has state to roll back,
+ *   after_step()      after each step t_n,
+ *   save()            for a checkpoint,
+ *   end()             after the last step (output still pending is
+ *                     completed),
+ *   print_summary(), add_to_summary(), and last require_success(): a
+ *   postprocessor that found the results wrong (a self-check) ends the run
+ *   with an error.
+ *
+ * A postprocessor is registered once for all dimensions with a rank
+ * (PostprocessorRegistration); ranks order the summary's lines and the
+ * columns of time_series.csv. Tests and drivers that observe a run add
+ * their own with ContactProblem::add_postprocessor().
+ */
+#ifndef contact_postprocessor_h
+#define contact_postprocessor_h
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <core/contact_problem.h>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+// The archives of a checkpoint (checkpoint.cc); a postprocessor with a
+// state includes them.
+namespace boost
+{
+  namespace archive
+  {
+    class binary_iarchive;
+    class binary_oarchive;
+  } // namespace archive
+} // namespace boost
+
+namespace Contact
+{
+  /** The columns of one row of time_series.csv, by name, in the order the
+   *  postprocessors add them. */
+  struct TimeSeriesRow
+  {
+    std::vector<std::pair<std::string, double>> columns;
+
+    void add(const std::string &name, const double value)
+    {
+      columns.emplace_back(name, value);
+    }
+  };
+
+
+  template <int dim>
+  class Postprocessor
+  {
+  public:
+    virtual ~Postprocessor() = default;
+
+    virtual void initialize()
+    {}
+    virtual void start(const bool /*resumed*/)
+    {}
+    virtual void after_substep()
+    {}
+    virtual void after_step(const StepStatistics & /*statistics*/)
+    {}
+    /** Its columns of the step's row of time_series.csv (collective). */
+    virtual void add_columns(TimeSeriesRow & /*row*/) const
+    {}
+    virtual void save(boost::archive::binary_oarchive & /*archive*/)
+    {}
+    virtual void load(boost::archive::binary_iarchive & /*archive*/)
+    {}
+    virtual void end()
+    {}
+    virtual void print_summary() const
+    {}
+    /** Its part of what a driver gets of the run (collective). */
+    virtual void add_to_summary(RunSummary & /*summary*/) const
+    {}
+    virtual void require_success() const
+    {}
+
+  protected:
+    // The problem observed, set by ContactProblem when it takes the
+    // postprocessor; and read access to it (a friend of the problem).
+    const ContactProblem<dim> &problem() const
+    {
+      return *observed;
+    }
+    const Parameters &parameters() const
+    {
+      return observed->parameters;
+    }
+    const StepState &state() const
+    {
+      return observed->state;
+    }
+    double time_step() const
+    {
+      return observed->time_step;
+    }
+    unsigned int n_time_steps() const
+    {
+      return observed->n_time_steps;
+    }
+    const FrictionLaw &friction_law() const
+    {
+      return observed->friction_law;
+    }
+    const FrictionSolver<dim> &friction_solver() const
+    {
+      return *observed->friction_solver;
+    }
+    const DiscreteSpace<dim> &space() const
+    {
+      return observed->space;
+    }
+    const SystemMatrices<dim> &matrices() const
+    {
+      return observed->matrices;
+    }
+    const Loads<dim> &loads() const
+    {
+      return *observed->loads;
+    }
+    const ManufacturedSolution<dim> *exact_solution() const
+    {
+      return observed->exact_solution.get();
+    }
+    const ConditionalOStream &pcout() const
+    {
+      return observed->pcout;
+    }
+    TimerOutput &computing_timer() const
+    {
+      return observed->computing_timer;
+    }
+    MPI_Comm mpi_communicator() const
+    {
+      return observed->mpi_communicator;
+    }
+    /** All postprocessors of the run, this one among them. */
+    const std::vector<std::unique_ptr<Postprocessor<dim>>> &
+    postprocessors() const
+    {
+      return observed->postprocessors;
+    }
+
+  private:
+    const ContactProblem<dim> *observed = nullptr;
+    friend class ContactProblem<dim>;
+  };
+
+
+  /** A postprocessor of a lambda called after every step: what a test or a
+   *  driver uses to collect or perturb the solutions of a run. */
+  template <int dim>
+  class StepObserver : public Postprocessor<dim>
+  {
+  public:
+    explicit StepObserver(
+      const std::function<void(const ContactProblem<dim> &)> &observer)
+      : observe(observer)
+    {}
+
+    void after_step(const StepStatistics &) override
+    {
+      observe(this->problem());
+    }
+
+  private:
+    const std::function<void(const ContactProblem<dim> &)> observe;
+  };
+
+
+  /**
+   * The postprocessors of every run, by rank: a postprocessor's file
+   * registers it for both dimensions with a static
+   *   const PostprocessorRegistration<Class> registration(rank);
+   * and ContactProblem::run() creates one of each (a class that is not
+   * wanted by the parameters is created all the same and does nothing).
+   */
+  template <int dim>
+  using PostprocessorFactory =
+    std::function<std::unique_ptr<Postprocessor<dim>>()>;
+
+  template <int dim>
+  std::multimap<unsigned int, PostprocessorFactory<dim>> &
+  postprocessor_registry()
+  {
+    static std::multimap<unsigned int, PostprocessorFactory<dim>> registry;
+    return registry;
+  }
+
+  template <template <int> class Class>
+  struct PostprocessorRegistration
+  {
+    explicit PostprocessorRegistration(const unsigned int rank)
+    {
+      postprocessor_registry<2>().emplace(rank, []() {
+        return std::make_unique<Class<2>>();
+      });
+      postprocessor_registry<3>().emplace(rank, []() {
+        return std::make_unique<Class<3>>();
+      });
+    }
+  };
+} // namespace Contact
+
+#endif

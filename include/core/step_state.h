@@ -1,0 +1,101 @@
+/**
+ * What a time step of ContactProblem<dim> reads from the past and writes
+ * for the next one, in one struct: a checkpoint stores it (one serialize),
+ * and a step that is cut is retaken from a copy of it (one rollback).
+ */
+#ifndef contact_step_state_h
+#define contact_step_state_h
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace Contact
+{
+  using namespace dealii;
+
+  /**
+   * The terms of the discrete energy identity of backward Euler, (5.7)
+   * summed over the steps: kinetic + elastic energy now, plus everything
+   * dissipated so far (viscous, frictional and the numerical dissipation
+   * rho/2 |w_n - w_{n-1}|^2 + k^2/2 <B w_n, w_n> of the scheme) equals the
+   * initial energy plus the work of the loads.
+   */
+  struct EnergyBalance
+  {
+    double kinetic               = 0;
+    double elastic               = 0;
+    double initial               = 0;
+    double external_work         = 0;
+    double viscous_dissipation   = 0;
+    double friction_dissipation  = 0;
+    double numerical_dissipation = 0;
+
+    double residual() const
+    {
+      return kinetic + elastic + viscous_dissipation + friction_dissipation +
+             numerical_dissipation - initial - external_work;
+    }
+    double scale() const
+    {
+      return std::max({kinetic + elastic,
+                       initial + std::abs(external_work),
+                       viscous_dissipation + std::abs(friction_dissipation) +
+                         numerical_dissipation});
+    }
+
+    template <class Archive>
+    void serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &kinetic &elastic &initial &external_work &viscous_dissipation
+        &friction_dissipation &numerical_dissipation;
+    }
+  };
+
+
+  /**
+   * The state of the discrete problem at t_n: u_n, w_n, their predecessors,
+   * the load F_n, what the next step's right-hand side needs of this one
+   * (M w_n and B u_n, condensed, updated by the step), and the energy
+   * balance. The nodal state of Gamma_3 is the friction solver's
+   * (FrictionState).
+   */
+  struct StepState
+  {
+    double                        time        = 0;
+    unsigned int                  step_number = 0;
+    TrilinosWrappers::MPI::Vector displacement;
+    TrilinosWrappers::MPI::Vector velocity;
+    TrilinosWrappers::MPI::Vector old_displacement;
+    TrilinosWrappers::MPI::Vector old_velocity;
+    TrilinosWrappers::MPI::Vector load;
+    TrilinosWrappers::MPI::Vector mass_times_velocity;
+    TrilinosWrappers::MPI::Vector elasticity_times_displacement;
+    EnergyBalance                 energy;
+
+    /** What a checkpoint keeps: what the next step reads (u, w, M w, B u)
+     *  and the balance. u_{n-1}, w_{n-1} and F_n are set by the step. */
+    template <class Archive>
+    void serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &step_number &time;
+      for (TrilinosWrappers::MPI::Vector *vector :
+           {&displacement,
+            &velocity,
+            &mass_times_velocity,
+            &elasticity_times_displacement})
+        {
+          std::vector<double> values(vector->begin(), vector->end());
+          archive            &values;
+          AssertThrow(values.size() == vector->locally_owned_size(),
+                      ExcInternalError());
+          std::copy(values.begin(), values.end(), vector->begin());
+        }
+      archive &energy;
+    }
+  };
+} // namespace Contact
+
+#endif

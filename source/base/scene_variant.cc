@@ -1,0 +1,145 @@
+/* The variants of a scene that the drivers run, and the reader of printed
+ * parameters (include/base/scene_variant.h). */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <base/scene_variant.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <vector>
+
+namespace Contact
+{
+  // @sect3{Printed parameters}
+
+  std::map<std::string, std::string>
+  read_printed_entries(const std::string &text)
+  {
+    std::map<std::string, std::string> entries;
+    // The subsections entered, as "A/B/".
+    std::string        section;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+      {
+        line                    = Utilities::trim(line);
+        const std::size_t equal = line.find('=');
+        if (line.rfind("subsection ", 0) == 0)
+          section += Utilities::trim(line.substr(11)) + '/';
+        else if (line == "end" && !section.empty())
+          section.erase(section.rfind('/', section.size() - 2) + 1);
+        else if (line.rfind("set ", 0) == 0 && equal != std::string::npos)
+          entries[section + Utilities::trim(line.substr(4, equal - 4))] =
+            Utilities::trim(line.substr(equal + 1));
+      }
+    return entries;
+  }
+
+
+  void set_entry(ParameterHandler  &prm,
+                 const std::string &path,
+                 const std::string &value)
+  {
+    const std::vector<std::string> names =
+      Utilities::split_string_list(path, '/');
+    for (unsigned int i = 0; i + 1 < names.size(); ++i)
+      prm.enter_subsection(names[i]);
+    prm.set(names.back(), value);
+    for (unsigned int i = 0; i + 1 < names.size(); ++i)
+      prm.leave_subsection();
+  }
+
+
+  // @sect3{Variants}
+
+  namespace
+  {
+    // A number as an entry's value: 17 digits, so that the variant reads
+    // back the double it was given.
+    std::string exact_text(const double value)
+    {
+      std::ostringstream text;
+      text << std::setprecision(17) << value;
+      return text.str();
+    }
+
+    std::string bool_text(const bool value)
+    {
+      return value ? "true" : "false";
+    }
+
+    // The entries that a variant sets: h, k, degree and directory, and
+    // what a quiet variant switches off (the scene's values otherwise).
+    std::map<std::string, std::string>
+    variant_entries(const Parameters &scene, const SceneVariant &variant)
+    {
+      const AccuracyParameters          &accuracy = scene.accuracy;
+      const OutputParameters            &output   = scene.output;
+      const bool                         quiet    = variant.quiet;
+      std::map<std::string, std::string> entries;
+      entries[Entry::finite_element_degree] = std::to_string(variant.degree);
+      entries[Entry::time_step] =
+        exact_text(scene.time.end_time / variant.n_steps);
+      entries[Entry::output_directory] = variant.directory;
+      entries[Entry::levels]           = "0";
+      // The run that a target chose runs with its error estimate.
+      entries[Entry::estimate_error] = bool_text(
+        !quiet && (accuracy.estimate_error || accuracy.target_error > 0));
+      entries[Entry::separate_space_and_time] =
+        bool_text(!quiet && accuracy.separate_space_and_time);
+      entries[Entry::target_error] =
+        quiet ? "0" : exact_text(accuracy.target_error);
+      entries[Entry::vtu_interval] =
+        quiet ? "0" : std::to_string(output.vtu_interval);
+      entries[Entry::gamma3_history] =
+        bool_text(!quiet && output.write_gamma3_history);
+      entries[Entry::checkpoint_interval] =
+        quiet ? "0" : std::to_string(output.checkpoint_interval);
+      entries[Entry::checkpoint_minutes] =
+        quiet ? "0" : exact_text(output.checkpoint_minutes);
+      // 'Cell size' describes the box only.
+      const GeometryParameters &geometry = scene.geometry;
+      if (geometry.is_box())
+        entries[Entry::cell_size] =
+          exact_text(std::ldexp(geometry.cell_size, -variant.h_halvings));
+      else
+        entries[Entry::mesh_refinements] = std::to_string(
+          static_cast<int>(geometry.mesh_refinements) + variant.h_halvings);
+      return entries;
+    }
+  } // namespace
+
+
+  // The scene's entries as it used them, with the variant's set, parsed and
+  // checked as a scene is (a variant may be refused where the scene was
+  // not, e.g. for its number of steps or refinements). The handler is this
+  // function's own: no variant sees what another one set.
+  Parameters parameters_of(const Parameters &scene, const SceneVariant &variant)
+  {
+    std::map<std::string, std::string> entries =
+      read_printed_entries(scene.used_parameters);
+    for (const auto &[path, value] : variant_entries(scene, variant))
+      entries[path] = value;
+    ParameterHandler prm;
+    Parameters::declare_parameters(prm);
+    for (const auto &[path, value] : entries)
+      try
+        {
+          set_entry(prm, path, value);
+        }
+      catch (const ExceptionBase &exc)
+        {
+          std::ostringstream reason;
+          exc.print_info(reason);
+          AssertThrow(false,
+                      ExcMessage("Entry '" + path + "' = " + value +
+                                 " of the run in '" + variant.directory +
+                                 "': " + Utilities::trim(reason.str())));
+        }
+    Parameters parameters;
+    parameters.parse_parameters(prm);
+    return parameters;
+  }
+} // namespace Contact

@@ -1,0 +1,451 @@
+/* The VTU/PVD output ('Output/VTU interval', 'Output/Report times'):
+   the fields of a step as solution_NNNNN.pvtu with one piece per process,
+   listed in solution.pvd. */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+
+#include <core/output_directory.h>
+#include <core/postprocessor.h>
+#include <postprocess/slip_zone.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <future>
+
+namespace Contact
+{
+  namespace
+  {
+    const ResultFiles vtu_files(
+      "solution_[0-9]{5}\\.([0-9]+\\.vtu|pvtu)|solution\\.pvd(\\.tmp)?");
+  }
+
+
+  // @sect4{VtuOutput}
+
+  // One VTU output: copies of the fields at t_n, and the thread that turns
+  // them into a file. DataOut's patches and the compression take most of
+  // an output's time (measured: 18 + 18 ms of 45 ms per output of the
+  // paper's scene); they run in a background thread while the time loop
+  // goes on, and finish_vtu() waits for them before the next output, a
+  // checkpoint or the end of the run. The thread reads the mesh, the
+  // DoFHandlers and the mapping, which the time loop does not change, and
+  // makes no MPI calls: DataOut's ghosted copies of the fields (MPI calls)
+  // are made before it starts.
+  template <int dim>
+  class VtuOutput : public Postprocessor<dim>
+  {
+  public:
+    // A run that ends with an error completes the output of the last
+    // written step; on several processes the others may not get here, and
+    // its pieces stay in .partial/ (the PVD does not list them).
+    ~VtuOutput() override;
+
+    void initialize() override
+    {
+      report_times = ReportTimes(this->parameters().output.report_times);
+    }
+
+    void start(const bool resumed) override;
+    void after_step(const StepStatistics &) override;
+
+    // The checkpoint lists the records written so far.
+    void save(boost::archive::binary_oarchive &archive) override
+    {
+      finish_vtu();
+      archive &pvd_records &report_times;
+    }
+
+    void load(boost::archive::binary_iarchive &archive) override
+    {
+      archive &pvd_records &report_times;
+    }
+
+    void end() override
+    {
+      finish_vtu();
+    }
+
+  private:
+    struct Pending
+    {
+      double                      time;
+      unsigned int                step;
+      FastVector                  displacement, velocity, friction_traction;
+      Vector<double>              status, slip_rate, friction_bound;
+      std::vector<Vector<double>> stress;
+      Vector<double>              von_mises;
+      DataOut<dim>                data_out;
+      std::future<void>           written;
+    };
+
+    std::string vtu_piece_name(const unsigned int step,
+                               const unsigned int process) const;
+    void        write_vtu();
+    void        cell_average_stress(Pending &output) const;
+    void        add_vtu_fields(Pending &output) const;
+    void        write_vtu_piece(Pending &output, const std::string &file) const;
+    void        finish_vtu();
+    void        write_pvd() const;
+
+    std::vector<std::pair<double, std::string>> pvd_records;
+    ReportTimes                                 report_times;
+    // The output being written in the background, last so that it is
+    // destroyed first.
+    std::shared_ptr<Pending> pending_vtu;
+  };
+
+
+  template <int dim>
+  VtuOutput<dim>::~VtuOutput()
+  {
+    if (pending_vtu &&
+        Utilities::MPI::n_mpi_processes(this->mpi_communicator()) == 1)
+      try
+        {
+          finish_vtu();
+        }
+      catch (...)
+        {
+          // An output error while another error ends the run: the first
+          // one is reported.
+        }
+  }
+
+
+  // @sect4{VtuOutput::start}
+
+  // A fresh run writes its initial state; a resumed one the PVD of the
+  // records stored with the checkpoint (the killed run may have listed
+  // steps after it, which are computed again).
+  template <int dim>
+  void VtuOutput<dim>::start(const bool resumed)
+  {
+    if (resumed)
+      write_pvd();
+    else if (this->parameters().output.vtu_interval > 0)
+      write_vtu();
+  }
+
+
+  // @sect4{VtuOutput::after_step}
+
+  // Every 'VTU interval' steps, at the last step and at the step nearest
+  // to each report time.
+  template <int dim>
+  void VtuOutput<dim>::after_step(const StepStatistics &)
+  {
+    const unsigned int interval = this->parameters().output.vtu_interval,
+                       step     = this->state().step_number;
+    const bool last             = (step == this->n_time_steps());
+    const bool reported =
+      !report_times.take_due(this->state().time, this->time_step(), last)
+         .empty();
+    if (interval > 0 && (step % interval == 0 || last || reported))
+      write_vtu();
+  }
+
+
+
+  // @sect4{VtuOutput::vtu_piece_name}
+
+  // deal.II's names for the pieces of a parallel VTU output and their
+  // record: solution_00012.0.vtu, ..., solution_00012.pvtu.
+  template <int dim>
+  std::string VtuOutput<dim>::vtu_piece_name(const unsigned int step,
+                                             const unsigned int process) const
+  {
+    return "solution_" + Utilities::int_to_string(step, 5) + "." +
+           Utilities::int_to_string(process) + ".vtu";
+  }
+
+
+  // @sect4{VtuOutput::write_vtu}
+
+  // Displacement and velocity as vectors; on Gamma_3 the status (0: off
+  // Gamma_3, 1: stick, 2: slip), the slip rate |w_tau|, the friction
+  // traction -eta_p/m_p t_p and the bound mu(|w_tau|) S, as nodal fields;
+  // the stress of (3.1) as cell averages (cell_stress_*, cell_von_mises,
+  // see cell_average_stress()). Here the fields are copied and handed to
+  // DataOut; the patches and the file are made in the background
+  // (VtuOutput).
+  template <int dim>
+  void VtuOutput<dim>::write_vtu()
+  {
+    const DiscreteSpace<dim> &space = this->space();
+    finish_vtu();
+    TimerOutput::Scope t(this->computing_timer(), "Output");
+
+    auto output          = std::make_shared<Pending>();
+    output->time         = this->state().time;
+    output->step         = this->state().step_number;
+    output->displacement = space.fast_ghosted(this->state().displacement);
+    output->velocity     = space.fast_ghosted(this->state().velocity);
+
+    const unsigned int n_scalar_dofs = space.scalar_dof_handler.n_dofs();
+    output->status.reinit(n_scalar_dofs);
+    output->slip_rate.reinit(n_scalar_dofs);
+    output->friction_bound.reinit(n_scalar_dofs);
+    output->friction_traction.reinit(space.locally_owned_dofs,
+                                     space.locally_relevant_dofs,
+                                     this->mpi_communicator());
+    const std::vector<ContactNode<dim>> &contact_nodes =
+      this->friction_solver().boundary().nodes;
+    const auto &[friction_force, slip_velocity, node_state] =
+      this->friction_solver().state();
+    for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+      {
+        const ContactNode<dim> &node = contact_nodes[p];
+        const double rate = node.tangential_vector(slip_velocity, p).norm();
+        output->status[node.scalar_dof] =
+          (node_state[p] == NodeState::stick ? 1 : 2);
+        output->slip_rate[node.scalar_dof] = rate;
+        output->friction_bound[node.scalar_dof] =
+          this->friction_law().bound(rate);
+        if (node.weight > 0 && node.locally_owned)
+          for (unsigned int d = 0; d < dim; ++d)
+            output->friction_traction[node.dofs[d]] =
+              -node.tangential_vector(friction_force, p)[d] / node.weight;
+      }
+    output->friction_traction.update_ghost_values();
+    cell_average_stress(*output);
+    add_vtu_fields(*output);
+
+    const std::string piece = this->parameters().output.directory +
+                              "/.partial/" +
+                              vtu_piece_name(this->state().step_number,
+                                             Utilities::MPI::this_mpi_process(
+                                               this->mpi_communicator()));
+    Pending &fields = *output;
+    output->written = std::async(std::launch::async, [this, &fields, piece]() {
+      write_vtu_piece(fields, piece);
+    });
+    pending_vtu     = std::move(output);
+  }
+
+
+  // @sect4{VtuOutput::cell_average_stress}
+
+  // The stress sigma = A eps(w) + B eps(u) of (3.1) averaged over each
+  // cell, and the von Mises value of that average (in 2D plane strain
+  // sigma_zz = lambda tr eps(u) + mu_1 tr eps(w) enters it).
+  template <int dim>
+  void VtuOutput<dim>::cell_average_stress(Pending &output) const
+  {
+    const DiscreteSpace<dim> &space    = this->space();
+    const auto               &material = this->parameters().material;
+    const double              two_G    = material.two_G();
+    const double              lambda   = material.lambda(dim);
+    const bool plane_strain            = (dim == 2 && !material.plane_stress);
+
+    const unsigned int n_cells = space.triangulation->n_active_cells();
+    output.stress.assign(dim * (dim + 1) / 2, Vector<double>(n_cells));
+    output.von_mises.reinit(n_cells);
+    FEValues<dim>                        fe_values(*space.mapping,
+                            space.fe,
+                            space.quadrature,
+                            update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector     displacements(0);
+    std::vector<SymmetricTensor<2, dim>> eps_u(space.quadrature.size()),
+      eps_w(space.quadrature.size());
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacements].get_function_symmetric_gradients(
+            output.displacement, eps_u);
+          fe_values[displacements].get_function_symmetric_gradients(
+            output.velocity, eps_w);
+          SymmetricTensor<2, dim> sigma;
+          double                  sigma_zz = 0, volume = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              const double JxW = fe_values.JxW(q);
+              sigma +=
+                (material.viscosity_mu1 * trace(eps_w[q]) *
+                   unit_symmetric_tensor<dim>() +
+                 material.viscosity_mu2 * eps_w[q] +
+                 lambda * trace(eps_u[q]) * unit_symmetric_tensor<dim>() +
+                 two_G * eps_u[q]) *
+                JxW;
+              if (plane_strain)
+                sigma_zz += (lambda * trace(eps_u[q]) +
+                             material.viscosity_mu1 * trace(eps_w[q])) *
+                            JxW;
+              volume += JxW;
+            }
+          sigma /= volume;
+          sigma_zz /= volume;
+          const unsigned int c         = cell->active_cell_index();
+          unsigned int       component = 0;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = i; j < dim; ++j)
+              output.stress[component++][c] = sigma[i][j];
+          const double                  mean = (trace(sigma) + sigma_zz) / 3.;
+          const SymmetricTensor<2, dim> deviator =
+            sigma - mean * unit_symmetric_tensor<dim>();
+          const double out_of_plane = (dim == 2 ? sigma_zz - mean : 0.);
+          output.von_mises[c]       = std::sqrt(
+            1.5 * (deviator * deviator + out_of_plane * out_of_plane));
+        }
+  }
+
+
+  // @sect4{VtuOutput::add_vtu_fields}
+
+  // DataOut makes ghosted copies of the nodal fields (an MPI call, so here,
+  // before the output thread starts).
+  template <int dim>
+  void VtuOutput<dim>::add_vtu_fields(Pending &output) const
+  {
+    const DiscreteSpace<dim> &space    = this->space();
+    DataOut<dim>             &data_out = output.data_out;
+    data_out.attach_dof_handler(space.dof_handler);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_field(dim,
+                   DataComponentInterpretation::component_is_part_of_vector);
+    const std::vector<std::pair<const FastVector *, std::string>> fields = {
+      {&output.displacement, "displacement"},
+      {&output.velocity, "velocity"},
+      {&output.friction_traction, "friction_traction"}};
+    for (const auto &[vector, name] : fields)
+      data_out.add_data_vector(*vector,
+                               std::vector<std::string>(dim, name),
+                               DataOut<dim>::type_dof_data,
+                               vector_field);
+    data_out.add_data_vector(space.scalar_dof_handler,
+                             output.status,
+                             "contact_status");
+    data_out.add_data_vector(space.scalar_dof_handler,
+                             output.slip_rate,
+                             "slip_rate");
+    data_out.add_data_vector(space.scalar_dof_handler,
+                             output.friction_bound,
+                             "friction_bound");
+    const char  *axes      = "xyz";
+    unsigned int component = 0;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        data_out.add_data_vector(output.stress[component++],
+                                 std::string("cell_stress_") + axes[i] +
+                                   axes[j],
+                                 DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(output.von_mises,
+                             "cell_von_mises",
+                             DataOut<dim>::type_cell_data);
+  }
+
+
+  // @sect4{VtuOutput::write_vtu_piece}
+
+  // This process's piece of the output, written into .partial/: the
+  // output thread's work.
+  template <int dim>
+  void VtuOutput<dim>::write_vtu_piece(Pending           &output,
+                                       const std::string &file) const
+  {
+    const DiscreteSpace<dim> &space    = this->space();
+    DataOut<dim>             &data_out = output.data_out;
+    data_out.build_patches(*space.mapping, space.fe.degree);
+
+    DataOutBase::VtkFlags flags;
+    flags.time              = output.time;
+    flags.cycle             = output.step;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
+    std::ofstream stream(file);
+    if (stream)
+      data_out.write_vtu(stream);
+    stream.flush();
+    AssertThrow(stream,
+                ExcMessage("Cannot write the VTU file '" + file +
+                           "': " + std::strerror(errno) + "."));
+  }
+
+
+  // @sect4{VtuOutput::finish_vtu}
+
+  // Atomic output: the pieces and the .pvtu record go to .partial/ and are
+  // renamed into the output directory once all processes have written
+  // them, the record last; the PVD is rewritten by rename. A run killed at
+  // any point leaves only complete files, and the PVD lists only files
+  // that exist.
+  template <int dim>
+  void VtuOutput<dim>::finish_vtu()
+  {
+    if (!pending_vtu)
+      return;
+    TimerOutput::Scope             t(this->computing_timer(), "Output");
+    const std::shared_ptr<Pending> output = std::move(pending_vtu);
+    output->written.get();
+    const int ierr = MPI_Barrier(this->mpi_communicator());
+    AssertThrowMPI(ierr);
+    if (Utilities::MPI::this_mpi_process(this->mpi_communicator()) != 0)
+      return;
+
+    const std::string &directory = this->parameters().output.directory;
+    const std::string  record =
+      "solution_" + Utilities::int_to_string(output->step, 5) + ".pvtu";
+    std::vector<std::string> pieces;
+    for (unsigned int process = 0;
+         process < Utilities::MPI::n_mpi_processes(this->mpi_communicator());
+         ++process)
+      pieces.push_back(vtu_piece_name(output->step, process));
+    {
+      std::ofstream stream(directory + "/.partial/" + record);
+      output->data_out.write_pvtu_record(stream, pieces);
+      stream.flush();
+      AssertThrow(stream,
+                  ExcMessage("Cannot write '" + directory + "/.partial/" +
+                             record + "': " + std::strerror(errno) + "."));
+    }
+    for (const std::string &piece : pieces)
+      std::filesystem::rename(directory + "/.partial/" + piece,
+                              directory + "/" + piece);
+    std::filesystem::rename(directory + "/.partial/" + record,
+                            directory + "/" + record);
+    pvd_records.emplace_back(output->time, record);
+    write_pvd();
+  }
+
+
+  // @sect4{VtuOutput::write_pvd}
+
+  template <int dim>
+  void VtuOutput<dim>::write_pvd() const
+  {
+    if (Utilities::MPI::this_mpi_process(this->mpi_communicator()) != 0)
+      return;
+    const std::string name =
+      this->parameters().output.directory + "/solution.pvd";
+    {
+      std::ofstream pvd(name + ".tmp");
+      DataOutBase::write_pvd_record(pvd, pvd_records);
+      pvd.flush();
+      AssertThrow(pvd,
+                  ExcMessage("Cannot write '" + name +
+                             ".tmp': " + std::strerror(errno) + "."));
+    }
+    std::filesystem::rename(name + ".tmp", name);
+  }
+
+
+  namespace
+  {
+    const PostprocessorRegistration<VtuOutput> registration(70);
+  }
+} // namespace Contact
