@@ -49,10 +49,6 @@ namespace Contact
     std::vector<double>
     take_due(const double time, const double time_step, const bool last);
 
-    /** Whether one is met at t_n, without taking it. */
-    bool
-    is_due(const double time, const double time_step, const bool last) const;
-
     template <class Archive>
     void serialize(Archive &archive, const unsigned int /*version*/)
     {

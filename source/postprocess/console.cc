@@ -22,7 +22,6 @@ namespace Contact
   public:
     void initialize() override
     {
-      run_timer.restart();
       report_times = ReportTimes(this->parameters().output.report_times);
     }
 
@@ -61,7 +60,8 @@ namespace Contact
     // (both checkpointed).
     StepStatistics totals;
     ReportTimes    report_times;
-    // Wall time since the run started and since its time loop did (the
+    // Wall time since the problem was made (the run starts with it) and
+    // since its time loop did (the
     // time left in the progress line is from the steps of this run alone:
     // the set-up before the first step, factorisation and Delassus
     // operator, would make the first estimates several times too large).

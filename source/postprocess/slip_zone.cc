@@ -100,16 +100,6 @@ namespace Contact
   }
 
 
-  bool ReportTimes::is_due(const double time,
-                           const double time_step,
-                           const bool   last) const
-  {
-    return std::any_of(pending.begin(), pending.end(), [&](const double t) {
-      return is_nearest_step(t, time, time_step, last);
-    });
-  }
-
-
 #define INSTANTIATE(dim)                                             \
   template SlipZone slip_zone(const std::vector<ContactNode<dim>> &, \
                               const std::vector<NodeState> &,        \
