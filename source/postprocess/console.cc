@@ -61,10 +61,10 @@ namespace Contact
     StepStatistics totals;
     ReportTimes    report_times;
     // Wall time since the problem was made (the run starts with it) and
-    // since its time loop did (the
-    // time left in the progress line is from the steps of this run alone:
-    // the set-up before the first step, factorisation and Delassus
-    // operator, would make the first estimates several times too large).
+    // since its time loop did (the time left in the progress line is from
+    // the steps of this run alone: the set-up before the first step,
+    // factorisation and Delassus operator, would make the first estimates
+    // several times too large).
     Timer        run_timer;
     Timer        loop_timer;
     unsigned int steps_timed = 0;
