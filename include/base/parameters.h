@@ -2,10 +2,12 @@
  * Parameters of a run, one struct per subsection of the .prm file (the
  * step-44 / Lethe habit). Every entry carries a Pattern with its allowed
  * range and a documentation string with units; each struct's
- * parse_parameters() checks its entries (check_entry() in parameters.cc
- * names the entry and the allowed range), Parameters::parse_parameters()
- * the checks that involve entries of several subsections, and
- * ContactProblem::check_boundary_ids() those that need the mesh.
+ * parse_parameters() checks its entries (check_entry() names the entry
+ * and the allowed range), Parameters::parse_parameters() the checks that
+ * involve entries of several subsections, and Geometry::create_mesh()
+ * those that need the mesh. A Selection entry is an enum class with its
+ * ChoiceTable. The entries of the box and the shell are declared and
+ * parsed by those geometries (source/geometry/).
  */
 #ifndef contact_parameters_h
 #define contact_parameters_h
@@ -15,7 +17,10 @@
 #include <deal.II/base/types.h>
 
 #include <base/friction_laws.h>
+#include <base/choice_table.h>
+#include <base/quantity.h>
 
+#include <any>
 #include <map>
 #include <memory>
 #include <string>
@@ -29,6 +34,13 @@ namespace Contact
    *  digits: 1e-12, 0.05, 2000). */
   std::string number_text(const double value);
 
+  /** Unless `condition`: the error "Invalid value <value> for the entry
+   *  '<entry>': allowed is <allowed>." (entry as "Subsection/Entry"). */
+  void check_entry(const bool         condition,
+                   const std::string &entry,
+                   const double       value,
+                   const std::string &allowed);
+
   /**
    * The entries that code outside parameters.cc names, as
    * "Subsection/Entry": in error messages, in the overrides of a
@@ -40,6 +52,7 @@ namespace Contact
   namespace Entry
   {
     inline const std::string lower_corner = "Geometry/Lower corner";
+    inline const std::string upper_corner = "Geometry/Upper corner";
     inline const std::string cell_size    = "Geometry/Cell size";
     inline const std::string cell_shape   = "Geometry/Cell shape";
     inline const std::string finite_element_degree =
@@ -54,6 +67,7 @@ namespace Contact
     inline const std::string mapping_degree    = "Geometry/Mapping degree";
     inline const std::string refinement_points = "Geometry/Refinement points";
     inline const std::string refinement_radius = "Geometry/Refinement radius";
+    inline const std::string rotation_angle    = "Geometry/Rotation angle";
     inline const std::string clamped_boundary_ids =
       "Boundary conditions/Clamped boundary ids";
     inline const std::string contact_boundary_ids =
@@ -107,6 +121,7 @@ namespace Contact
     inline std::vector<std::string> all()
     {
       return {lower_corner,
+              upper_corner,
               cell_size,
               cell_shape,
               finite_element_degree,
@@ -120,6 +135,7 @@ namespace Contact
               mapping_degree,
               refinement_points,
               refinement_radius,
+              rotation_angle,
               clamped_boundary_ids,
               contact_boundary_ids,
               tractions,
@@ -161,15 +177,27 @@ namespace Contact
     }
   } // namespace Entry
 
+  struct Parameters;
+
+  /**
+   * The subsection Geometry: the entries that every geometry shares, and
+   * the fields of those of the box and the shell, which each geometry
+   * (source/geometry/) declares and parses itself.
+   */
   struct GeometryParameters
   {
     /** A gmsh .msh file; empty: the box of lower_corner, upper_corner, or
      *  the shell. */
     std::string  mesh_file;
     unsigned int mesh_refinements;
-    /** The annulus (2D) or tube along z (3D) between inner_radius and
-     *  outer_radius around the origin, instead of the box. */
-    bool         shell;
+    /** 'Geometry/Domain': the box, or the annulus (2D) or tube along z (3D)
+     *  between inner_radius and outer_radius around the origin. */
+    enum class Domain
+    {
+      box,
+      shell
+    };
+    Domain       domain;
     double       inner_radius;
     double       outer_radius;
     double       shell_length;
@@ -180,16 +208,27 @@ namespace Contact
     /** The box of lower_corner, upper_corner, divided by cell_size. */
     bool is_box() const
     {
-      return mesh_file.empty() && !shell;
+      return mesh_file.empty() && domain == Domain::box;
     }
     std::vector<double> lower_corner;
     std::vector<double> upper_corner;
     double              cell_size;
-    /** Triangles/tetrahedra with P_p instead of quadrilaterals/hexahedra
-     *  with Q_p. */
-    bool         simplex_cells;
+    /** Quadrilaterals/hexahedra with Q_p, or triangles/tetrahedra with
+     *  P_p. */
+    enum class CellShape
+    {
+      hypercube,
+      simplex
+    };
+    CellShape    cell_shape;
     unsigned int fe_degree;
-    bool         lumped_mass;
+    /** Gauss quadrature, or Gauss-Lobatto at the nodes: a diagonal M. */
+    enum class MassMatrix
+    {
+      consistent,
+      lumped
+    };
+    MassMatrix mass_matrix;
     /** Points towards which the mesh is refined, each of dim coordinates. */
     std::vector<std::vector<double>> refinement_points;
     double                           refinement_radius;
@@ -199,8 +238,39 @@ namespace Contact
     double              rotation_angle;
     std::vector<double> rotation_axis;
 
+    /** The names of the choices of 'Domain', 'Cell shape' and 'Mass
+     *  matrix'. */
+    static const ChoiceTable<Domain>     &domains();
+    static const ChoiceTable<CellShape>  &cell_shapes();
+    static const ChoiceTable<MassMatrix> &mass_matrices();
+
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm, const unsigned int dim);
+
+    /**
+     * The entries of one geometry: declare() declares them in the
+     * subsection Geometry right after the shared entry `after` (their
+     * place in the printed parameters), parse() reads them into the
+     * fields above (in the subsection, after the shared entries) and
+     * checks them. Each geometry registers its own from its file
+     * (register_entries(), while the shared library is loaded), so that
+     * the parameters do not depend on the geometries.
+     */
+    struct Entries
+    {
+      std::string after;
+      void (*declare)(ParameterHandler &prm);
+      void (*parse)(ParameterHandler   &prm,
+                    GeometryParameters &geometry,
+                    const unsigned int  dim);
+    };
+    /** Adds the entries of the geometry `name`; returns true, for the
+     *  static variable of the registration. */
+    static bool register_entries(const std::string &name,
+                                 const Entries     &entries);
+
+  private:
+    static std::map<std::string, Entries> &registered_entries();
   };
 
   struct BoundaryParameters
@@ -222,7 +292,16 @@ namespace Contact
     double poisson_ratio;
     double viscosity_mu1;
     double viscosity_mu2;
-    bool   plane_stress;
+    /** 2D only: the paper's B (plane strain), or plane stress. */
+    enum class PlaneModel
+    {
+      plane_strain,
+      plane_stress
+    };
+    PlaneModel plane_model;
+
+    /** The names of the choices of 'Plane model'. */
+    static const ChoiceTable<PlaneModel> &plane_models();
 
     /** 2G = E/(1 + kappa) of the elasticity tensor B. */
     double two_G() const;
@@ -276,9 +355,18 @@ namespace Contact
     unsigned int max_active_set_iterations;
     double       active_set_parameter;
     unsigned int anderson_depth;
-    /** 'Linear solver' with 'auto' resolved: CHOLMOD, CG-AMG or the name of
-     *  an Amesos solver, for Factorization::create(). */
-    std::string linear_solver;
+    /** How systems with K are solved (Factorization::create()). */
+    enum class LinearSolver
+    {
+      automatic,
+      cholmod,
+      amesos_klu,
+      amesos_mumps,
+      amesos_lapack,
+      cg_amg
+    };
+    /** 'Linear solver' with 'auto' resolved. */
+    LinearSolver linear_solver;
     /** CG-AMG: every solve with K is iterative (and costs CG iterations). */
     bool iterative_linear_solver = false;
     /** Halvings of k allowed for a step that does not converge. */
@@ -298,6 +386,12 @@ namespace Contact
     FrictionMethod friction_method = FrictionMethod::convexification;
     unsigned int   max_newton_iterations;
 
+    /** The names of the choices of 'Linear solver' (Amesos takes its
+     *  solvers by these names), 'Contact solver' and 'Friction method'. */
+    static const ChoiceTable<LinearSolver>   &linear_solvers();
+    static const ChoiceTable<ContactSolver>  &contact_solvers();
+    static const ChoiceTable<FrictionMethod> &friction_methods();
+
     /** 'Contact solver = auto' takes the Delassus path up to this many
      *  tangential unknowns of Gamma_3 (its Newton steps are dense, O(n^3)),
      *  and without CHOLMOD only while Z = K^{-1} C^T takes at most this
@@ -313,9 +407,23 @@ namespace Contact
 
   struct VerificationParameters
   {
-    /** Replace loads and initial values by those of ManufacturedSolution. */
-    bool   manufactured_solution;
-    double amplitude;
+    /** Replace loads and initial values by those of ManufacturedSolution
+     *  (slip_front), or not (none). */
+    enum class Solution
+    {
+      none,
+      slip_front
+    };
+    Solution manufactured_solution;
+    double   amplitude;
+
+    bool manufactured() const
+    {
+      return manufactured_solution != Solution::none;
+    }
+
+    /** The names of the choices of 'Manufactured solution'. */
+    static const ChoiceTable<Solution> &solutions();
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);
@@ -335,13 +443,12 @@ namespace Contact
     /** Element degree of the reference run; 0: that of the levels. */
     unsigned int reference_degree;
 
+    /** The names of the choices of 'Refine'. */
+    static const ChoiceTable<Refine> &refinements();
+
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);
   };
-
-  /** The name of the largest V-error over the times of an estimate's
-   *  coarsest run (a row of the estimate, a 'Target quantity'). */
-  inline const std::string worst_V_error = "V-norm of u, max over t";
 
   struct AccuracyParameters
   {
@@ -355,27 +462,43 @@ namespace Contact
      *  degree for (target_error.cc). */
     double target_error;
     /** Relative to the size of the quantity, or absolute. */
-    bool target_is_relative;
-    /** "V-norm of u" or the name of a quantity of the estimate's table. */
-    std::string target_quantity;
+    enum class TargetErrorType
+    {
+      relative,
+      absolute
+    };
+    TargetErrorType target_error_type;
+    /** A quantity of the estimate's table. */
+    Quantity target_quantity;
     /** Predict the cost of a run from the pilots' measured wall times, or
      *  (reproducibly, for tests) from unknowns times steps. */
-    bool measured_cost;
+    enum class CostModel
+    {
+      measured,
+      unknowns_times_steps
+    };
+    CostModel cost_model;
+
+    /** The names of the choices of 'Target error type' and 'Cost
+     *  model'. */
+    static const ChoiceTable<TargetErrorType> &target_error_types();
+    static const ChoiceTable<CostModel>       &cost_models();
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);
   };
 
+  /**
+   * The subsection Output: the entries that several parts of the program
+   * read, and the values of those that one postprocessor alone reads
+   * (source/postprocess/), which it declares, parses and checks itself.
+   */
   struct OutputParameters
   {
     std::string         directory;
-    unsigned int        vtu_interval;
-    bool                write_time_series;
-    bool                write_gamma3_history;
     std::vector<double> report_times;
     /** Points whose displacement goes into time_series.csv. */
     std::vector<std::vector<double>> probe_points;
-    unsigned int                     progress_interval;
     bool                             print_timings;
     /** Write a checkpoint every this many steps / minutes; 0: never. */
     unsigned int checkpoint_interval;
@@ -385,6 +508,45 @@ namespace Contact
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm, const unsigned int dim);
+
+    /**
+     * One entry that one postprocessor alone reads: declare() declares it
+     * in the subsection Output right after the entry `after` (its place in
+     * the printed parameters); parse() reads it there, checks it (against
+     * the other entries, all parsed by then) and returns its value, which
+     * the postprocessor gets back by entry<Value>(entry). Each postprocessor
+     * registers its own from its file (register_entry(), while the shared
+     * library is loaded), so that the parameters do not depend on the
+     * postprocessors.
+     */
+    struct OwnEntry
+    {
+      std::string entry;
+      std::string after;
+      void (*declare)(ParameterHandler &prm);
+      std::any (*parse)(ParameterHandler &prm, const Parameters &parameters);
+    };
+    /** Adds an entry; returns true, for the static variable of the
+     *  registration. */
+    static bool register_entry(const OwnEntry &entry);
+
+    /** Reads and checks the registered entries, once the other entries
+     *  of `parameters` are parsed. */
+    void parse_own_entries(ParameterHandler &prm, const Parameters &parameters);
+
+    /** The value of the registered entry `name`. */
+    template <class Value>
+    const Value &entry(const std::string &name) const
+    {
+      return std::any_cast<const Value &>(own_values.at(name));
+    }
+
+  private:
+    static std::vector<OwnEntry> &registered_entries();
+    static void                   declare_entries_after(ParameterHandler  &prm,
+                                                        const std::string &name);
+    /** Entry name -> its value, as the registered parse() returned it. */
+    std::map<std::string, std::any> own_values;
   };
 
   struct Parameters

@@ -164,17 +164,8 @@ namespace Contact
 
   private:
     // setup.cc
-    void         make_grid();
-    void         build_mesh(Triangulation<dim> &mesh);
-    unsigned int make_box(Triangulation<dim> &mesh);
-    unsigned int make_shell(Triangulation<dim> &mesh);
-    void         check_memory(const double       cells,
-                              const double       unknowns,
-                              const std::string &entry) const;
-    unsigned int read_mesh_file(Triangulation<dim> &mesh);
-    void         grade_towards_points(Triangulation<dim> &mesh);
-    void         check_boundary_ids(const Triangulation<dim> &mesh) const;
-    void         setup_system();
+    void make_grid();
+    void setup_system();
 
     // assembly.cc
     void             assemble_matrices();

@@ -30,8 +30,11 @@
  *
  * A postprocessor is registered once for all dimensions with a rank
  * (PostprocessorRegistration); ranks order the summary's lines and the
- * columns of time_series.csv. Tests and drivers that observe a run add
- * their own with ContactProblem::add_postprocessor().
+ * columns of time_series.csv. An entry that one postprocessor alone reads
+ * is declared, parsed and checked in its file
+ * (OutputParameters::register_entry(), base/parameters.h). Tests and
+ * drivers that observe a run add their own with
+ * ContactProblem::add_postprocessor().
  */
 #ifndef contact_postprocessor_h
 #define contact_postprocessor_h

@@ -23,6 +23,8 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <base/parameters.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -84,12 +86,12 @@ namespace Contact
     }
 
     /**
-     * 'CHOLMOD', an Amesos solver name ('Amesos_Klu', ...) or 'CG-AMG';
-     * the constant modes (one per displacement component) tell AMG the
-     * near null space of elasticity.
+     * CHOLMOD, an Amesos solver or CG-AMG ('auto' resolved); the constant
+     * modes (one per displacement component) tell AMG the near null space
+     * of elasticity.
      */
     static std::unique_ptr<Factorization>
-    create(const std::string                    &solver,
+    create(const SolverParameters::LinearSolver  solver,
            const TrilinosWrappers::SparseMatrix &K,
            const std::vector<std::vector<bool>> &constant_modes = {});
   };

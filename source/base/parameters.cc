@@ -27,22 +27,22 @@ namespace Contact
   }
 
 
+  // The one form of a user error about a single entry: it names the entry
+  // (with its subsection), the value read and what is allowed.
+  void check_entry(const bool         condition,
+                   const std::string &entry,
+                   const double       value,
+                   const std::string &allowed)
+  {
+    AssertThrow(condition,
+                ExcMessage("Invalid value " + number_text(value) +
+                           " for the entry '" + entry + "': allowed is " +
+                           allowed + "."));
+  }
+
+
   namespace
   {
-    // The one place where a user error about a single entry is raised: it
-    // names the entry (with its subsection), the value read and what is
-    // allowed.
-    void check_entry(const bool         condition,
-                     const std::string &entry,
-                     const double       value,
-                     const std::string &allowed)
-    {
-      AssertThrow(condition,
-                  ExcMessage("Invalid value " + number_text(value) +
-                             " for the entry '" + entry + "': allowed is " +
-                             allowed + "."));
-    }
-
     std::vector<types::boundary_id> parse_boundary_ids(const std::string &text)
     {
       std::vector<types::boundary_id> ids;
@@ -87,11 +87,64 @@ namespace Contact
 
   // @sect3{Geometry}
 
+  const ChoiceTable<GeometryParameters::Domain> &GeometryParameters::domains()
+  {
+    static const ChoiceTable<Domain> table(Entry::domain,
+                                           {{"box", Domain::box},
+                                            {"shell", Domain::shell}});
+    return table;
+  }
+
+  const ChoiceTable<GeometryParameters::CellShape> &
+  GeometryParameters::cell_shapes()
+  {
+    static const ChoiceTable<CellShape> table(
+      Entry::cell_shape,
+      {{"hypercube", CellShape::hypercube}, {"simplex", CellShape::simplex}});
+    return table;
+  }
+
+  const ChoiceTable<GeometryParameters::MassMatrix> &
+  GeometryParameters::mass_matrices()
+  {
+    static const ChoiceTable<MassMatrix> table(
+      "Geometry/Mass matrix",
+      {{"consistent", MassMatrix::consistent}, {"lumped", MassMatrix::lumped}});
+    return table;
+  }
+
+  // A function-local static: the geometries register their entries while
+  // the library is loaded, in an order that is not defined.
+  std::map<std::string, GeometryParameters::Entries> &
+  GeometryParameters::registered_entries()
+  {
+    static std::map<std::string, Entries> entries;
+    return entries;
+  }
+
+  bool GeometryParameters::register_entries(const std::string &name,
+                                            const Entries     &entries)
+  {
+    registered_entries()[name] = entries;
+    return true;
+  }
+
+  // The entries of every geometry; after each, those of the geometries
+  // that follow it (source/geometry/).
   void GeometryParameters::declare_parameters(ParameterHandler &prm)
   {
+    const auto declare_entry = [&prm](const std::string           &name,
+                                      const std::string           &value,
+                                      const Patterns::PatternBase &pattern,
+                                      const std::string           &help) {
+      prm.declare_entry(name, value, pattern, help);
+      for (const auto &[geometry, entries] : registered_entries())
+        if (entries.after == name)
+          entries.declare(prm);
+    };
     prm.enter_subsection("Geometry");
     {
-      prm.declare_entry(
+      declare_entry(
         "Mesh file",
         "",
         Patterns::Anything(),
@@ -99,40 +152,22 @@ namespace Contact
         "boundary ids of 'Boundary conditions'; a relative path is taken "
         "relative to the .prm file that sets it. Empty: the box of Lower and "
         "Upper corner with the Cell size.");
-      prm.declare_entry("Mesh refinements",
-                        "0",
-                        Patterns::Integer(0, 10),
-                        "Global refinements of the mesh read from the Mesh "
-                        "file, or of the shell's coarse mesh.");
-      prm.declare_entry(
+      declare_entry("Mesh refinements",
+                    "0",
+                    Patterns::Integer(0, 10),
+                    "Global refinements of the mesh read from the Mesh "
+                    "file, or of the shell's coarse mesh.");
+      declare_entry(
         "Domain",
-        "box",
-        Patterns::Selection("box|shell"),
+        domains().name(Domain::box),
+        domains().pattern(),
         "box: Lower and Upper corner, divided by the Cell size; shell: the "
         "annulus (2D) or the tube along z from z = 0 to the Shell length "
         "(3D) between the Inner and the Outer radius around the origin, "
         "Cells around the circle, refined Mesh refinements times along "
         "the circles (boundary ids 0 inner, 1 outer, 2 z = 0, 3 z = "
         "length). A Mesh file replaces both.");
-      prm.declare_entry("Inner radius",
-                        "0.5",
-                        Patterns::Double(0),
-                        "Inner radius of the shell [m].");
-      prm.declare_entry("Outer radius",
-                        "1",
-                        Patterns::Double(0),
-                        "Outer radius of the shell [m].");
-      prm.declare_entry("Shell length",
-                        "0.25",
-                        Patterns::Double(0),
-                        "Length of the tube along z in 3D [m].");
-      prm.declare_entry("Cells around",
-                        "8",
-                        Patterns::Integer(3, 1000),
-                        "Cells of the shell's coarse mesh around the circle "
-                        "(one layer across the wall; in 3D as many along z "
-                        "as keep the cells about as long as wide).");
-      prm.declare_entry(
+      declare_entry(
         "Mapping degree",
         "1",
         Patterns::Integer(1, 4),
@@ -145,37 +180,23 @@ namespace Contact
         "slip onset most accurately, but balances the moments only to "
         "O(h^2); below it Q2 loses an order on Gamma_3 "
         "(doc/verification.md).");
-      prm.declare_entry("Lower corner",
-                        "0, 0",
-                        Patterns::List(Patterns::Double(), 2, 3),
-                        "Lower corner of the box Omega [m], dim numbers.");
-      prm.declare_entry("Upper corner",
-                        "1, 0.5",
-                        Patterns::List(Patterns::Double(), 2, 3),
-                        "Upper corner of the box Omega [m], dim numbers.");
-      prm.declare_entry(
-        "Cell size",
-        "0.0078125",
-        Patterns::Double(0),
-        "Edge length h of the cells [m]; every edge of the box is divided "
-        "into round(length/h) equal parts (the paper's h).");
-      prm.declare_entry(
+      declare_entry(
         "Cell shape",
-        "hypercube",
-        Patterns::Selection("hypercube|simplex"),
+        cell_shapes().name(CellShape::hypercube),
+        cell_shapes().pattern(),
         "hypercube: quadrilaterals/hexahedra with Q_p elements; simplex: "
         "every box cell split into triangles (2) or tetrahedra (5), with "
         "P_p elements (FE_SimplexP).");
-      prm.declare_entry("Finite element degree",
-                        "1",
-                        Patterns::Integer(1, 4),
-                        "Polynomial degree of the Lagrange elements Q_p.");
-      prm.declare_entry("Mass matrix",
-                        "consistent",
-                        Patterns::Selection("consistent|lumped"),
-                        "consistent: Gauss quadrature; lumped: Gauss-Lobatto "
-                        "quadrature at the nodes, a diagonal M.");
-      prm.declare_entry(
+      declare_entry("Finite element degree",
+                    "1",
+                    Patterns::Integer(1, 4),
+                    "Polynomial degree of the Lagrange elements Q_p.");
+      declare_entry("Mass matrix",
+                    mass_matrices().name(MassMatrix::consistent),
+                    mass_matrices().pattern(),
+                    "consistent: Gauss quadrature; lumped: Gauss-Lobatto "
+                    "quadrature at the nodes, a diagonal M.");
+      declare_entry(
         "Refinement points",
         "",
         Patterns::Anything(),
@@ -184,17 +205,17 @@ namespace Contact
         "a point are refined until their size is at most h (r/R)^gamma, r the "
         "distance of their center to the point. The refinement must stay away "
         "from Gamma_3.");
-      prm.declare_entry("Refinement radius",
-                        "0",
-                        Patterns::Double(0),
-                        "R [m] of the grading; 0 switches it off.");
-      prm.declare_entry(
+      declare_entry("Refinement radius",
+                    "0",
+                    Patterns::Double(0),
+                    "R [m] of the grading; 0 switches it off.");
+      declare_entry(
         "Refinement grading",
         "0.3333333333",
         Patterns::Double(0.05, 1),
         "gamma of the grading: for a singularity u ~ r^lambda, gamma = "
         "1 - lambda restores the rate of smooth solutions.");
-      prm.declare_entry(
+      declare_entry(
         "Rotation angle",
         "0",
         Patterns::Double(-360, 360),
@@ -202,11 +223,11 @@ namespace Contact
         "the z axis in 2D, about the Rotation axis in 3D): an inclined "
         "Gamma_3. Loads, refinement and probe points are given in the "
         "rotated frame.");
-      prm.declare_entry("Rotation axis",
-                        "0, 0, 1",
-                        Patterns::List(Patterns::Double(), 3, 3),
-                        "Axis of the rotation in 3D, three numbers, not all "
-                        "zero.");
+      declare_entry("Rotation axis",
+                    "0, 0, 1",
+                    Patterns::List(Patterns::Double(), 3, 3),
+                    "Axis of the rotation in 3D, three numbers, not all "
+                    "zero.");
     }
     prm.leave_subsection();
   }
@@ -216,22 +237,13 @@ namespace Contact
   {
     prm.enter_subsection("Geometry");
     {
-      mesh_file        = Utilities::trim(prm.get("Mesh file"));
-      mesh_refinements = prm.get_integer("Mesh refinements");
-      shell            = (prm.get("Domain") == "shell");
-      inner_radius     = prm.get_double("Inner radius");
-      outer_radius     = prm.get_double("Outer radius");
-      shell_length     = prm.get_double("Shell length");
-      cells_around     = prm.get_integer("Cells around");
-      mapping_degree   = prm.get_integer("Mapping degree");
-      lower_corner     = Utilities::string_to_double(
-        Utilities::split_string_list(prm.get("Lower corner")));
-      upper_corner = Utilities::string_to_double(
-        Utilities::split_string_list(prm.get("Upper corner")));
-      cell_size          = prm.get_double("Cell size");
-      simplex_cells      = (prm.get("Cell shape") == "simplex");
+      mesh_file          = Utilities::trim(prm.get("Mesh file"));
+      mesh_refinements   = prm.get_integer("Mesh refinements");
+      domain             = domains().parse(prm.get("Domain"));
+      mapping_degree     = prm.get_integer("Mapping degree");
+      cell_shape         = cell_shapes().parse(prm.get("Cell shape"));
       fe_degree          = prm.get_integer("Finite element degree");
-      lumped_mass        = (prm.get("Mass matrix") == "lumped");
+      mass_matrix        = mass_matrices().parse(prm.get("Mass matrix"));
       refinement_points  = parse_points(prm.get("Refinement points"),
                                        dim,
                                        "Geometry/Refinement points");
@@ -240,86 +252,33 @@ namespace Contact
       rotation_angle     = prm.get_double("Rotation angle");
       rotation_axis      = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Rotation axis")));
+      check_entry(dim == 2 || rotation_angle == 0 || rotation_axis[0] != 0 ||
+                    rotation_axis[1] != 0 || rotation_axis[2] != 0,
+                  "Geometry/Rotation axis",
+                  0.,
+                  "a nonzero vector");
+      for (const auto &[name, entries] : registered_entries())
+        entries.parse(prm, *this, dim);
     }
     prm.leave_subsection();
 
-    check_entry(dim == 2 || rotation_angle == 0 || rotation_axis[0] != 0 ||
-                  rotation_axis[1] != 0 || rotation_axis[2] != 0,
-                "Geometry/Rotation axis",
-                0.,
-                "a nonzero vector");
-
-    // The corners and the cell size describe the box only.
-    if (is_box())
-      {
-        check_entry(lower_corner.size() == dim,
-                    "Geometry/Lower corner",
-                    lower_corner.size(),
-                    "exactly Dimension numbers");
-        check_entry(upper_corner.size() == dim,
-                    "Geometry/Upper corner",
-                    upper_corner.size(),
-                    "exactly Dimension numbers");
-        for (unsigned int d = 0; d < dim; ++d)
-          check_entry(upper_corner[d] > lower_corner[d],
-                      "Geometry/Upper corner",
-                      upper_corner[d],
-                      "a value above the matching Geometry/Lower corner in "
-                      "every coordinate");
-        check_entry(cell_size > 0, "Geometry/Cell size", cell_size, "h > 0");
-        double shortest_edge = std::numeric_limits<double>::max();
-        for (unsigned int d = 0; d < dim; ++d)
-          shortest_edge =
-            std::min(shortest_edge, upper_corner[d] - lower_corner[d]);
-        check_entry(cell_size <= shortest_edge,
-                    "Geometry/Cell size",
-                    cell_size,
-                    "h at most the shortest edge of the box, " +
-                      Utilities::to_string(shortest_edge));
-      }
+    const bool simplices = (cell_shape == CellShape::simplex);
     // FE_SimplexP of deal.II 9.4 has degrees 1 and 2 only.
-    check_entry(!simplex_cells || fe_degree <= 2,
+    check_entry(!simplices || fe_degree <= 2,
                 "Geometry/Finite element degree",
                 fe_degree,
                 "1 or 2 with 'Cell shape = simplex'");
     // Gauss-Lobatto nodes and local refinement exist for hypercubes only
     // in deal.II 9.4.
-    AssertThrow(!(simplex_cells && lumped_mass),
+    AssertThrow(!(simplices && mass_matrix == MassMatrix::lumped),
                 ExcMessage("Entry 'Geometry/Mass matrix': lumped is "
                            "available for 'Cell shape = hypercube' only; "
                            "allowed with simplices is consistent."));
-    AssertThrow(!shell || mesh_file.empty(),
-                ExcMessage("Entry 'Geometry/Domain': shell does not go "
-                           "with a 'Geometry/Mesh file' (the file is the "
-                           "domain); allowed with a mesh file is box."));
-    check_entry(!shell || outer_radius > inner_radius,
-                "Geometry/Outer radius",
-                outer_radius,
-                "a radius above the Inner radius, " +
-                  Utilities::to_string(inner_radius));
-    check_entry(!shell || inner_radius > 0,
-                "Geometry/Inner radius",
-                inner_radius,
-                "r > 0 with 'Geometry/Domain = shell'");
-    check_entry(!shell || dim == 2 || shell_length > 0,
-                "Geometry/Shell length",
-                shell_length,
-                "a length > 0 with 'Geometry/Domain = shell' in 3D");
-    // The shell's circles are a manifold about the origin (about the z
-    // axis in 3D): a rotated mesh would leave it.
-    check_entry(!shell || rotation_angle == 0,
-                "Geometry/Rotation angle",
-                rotation_angle,
-                "0 with 'Geometry/Domain = shell'");
-    AssertThrow(!shell || !simplex_cells,
-                ExcMessage("Entry 'Geometry/Domain': shell is built of "
-                           "quadrilaterals/hexahedra; allowed with 'Cell "
-                           "shape = simplex' is box."));
-    check_entry(!simplex_cells || mapping_degree == 1,
+    check_entry(!simplices || mapping_degree == 1,
                 "Geometry/Mapping degree",
                 mapping_degree,
                 "1 with 'Cell shape = simplex'");
-    check_entry(!simplex_cells || refinement_radius == 0.,
+    check_entry(!simplices || refinement_radius == 0.,
                 "Geometry/Refinement radius",
                 refinement_radius,
                 "0 with 'Cell shape = simplex' (local refinement of "
@@ -404,6 +363,16 @@ namespace Contact
 
   // @sect3{Material}
 
+  const ChoiceTable<MaterialParameters::PlaneModel> &
+  MaterialParameters::plane_models()
+  {
+    static const ChoiceTable<PlaneModel> table(
+      "Material/Plane model",
+      {{"plane strain", PlaneModel::plane_strain},
+       {"plane stress", PlaneModel::plane_stress}});
+    return table;
+  }
+
   void MaterialParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
@@ -432,8 +401,8 @@ namespace Contact
                         "mu_2 [N s/m^2] in A tau = mu_1 tr(tau) I + mu_2 tau.");
       prm.declare_entry(
         "Plane model",
-        "plane strain",
-        Patterns::Selection("plane strain|plane stress"),
+        plane_models().name(PlaneModel::plane_strain),
+        plane_models().pattern(),
         "2D only: the paper's formula for B (plane strain) or plane stress, "
         "lambda* = 2 lambda G / (lambda + 2 G).");
     }
@@ -449,7 +418,7 @@ namespace Contact
       poisson_ratio  = prm.get_double("Poisson ratio");
       viscosity_mu1  = prm.get_double("Viscosity mu1");
       viscosity_mu2  = prm.get_double("Viscosity mu2");
-      plane_stress   = (prm.get("Plane model") == "plane stress");
+      plane_model    = plane_models().parse(prm.get("Plane model"));
     }
     prm.leave_subsection();
 
@@ -474,7 +443,7 @@ namespace Contact
     const double kappa = poisson_ratio;
     const double lambda_3d =
       youngs_modulus * kappa / ((1. + kappa) * (1. - 2. * kappa));
-    if (dim == 2 && plane_stress)
+    if (dim == 2 && plane_model == PlaneModel::plane_stress)
       return 2. * lambda_3d * (two_G() / 2.) / (lambda_3d + two_G());
     return lambda_3d;
   }
@@ -611,6 +580,41 @@ namespace Contact
 
   // @sect3{Solver}
 
+  const ChoiceTable<SolverParameters::LinearSolver> &
+  SolverParameters::linear_solvers()
+  {
+    static const ChoiceTable<LinearSolver> table(
+      Entry::linear_solver,
+      {{"auto", LinearSolver::automatic},
+       {"CHOLMOD", LinearSolver::cholmod},
+       {"Amesos_Klu", LinearSolver::amesos_klu},
+       {"Amesos_Mumps", LinearSolver::amesos_mumps},
+       {"Amesos_Lapack", LinearSolver::amesos_lapack},
+       {"CG-AMG", LinearSolver::cg_amg}});
+    return table;
+  }
+
+  const ChoiceTable<SolverParameters::ContactSolver> &
+  SolverParameters::contact_solvers()
+  {
+    static const ChoiceTable<ContactSolver> table(
+      Entry::contact_solver,
+      {{"auto", ContactSolver::automatic},
+       {"Delassus", ContactSolver::delassus},
+       {"constraints", ContactSolver::constraints}});
+    return table;
+  }
+
+  const ChoiceTable<SolverParameters::FrictionMethod> &
+  SolverParameters::friction_methods()
+  {
+    static const ChoiceTable<FrictionMethod> table(
+      "Solver/Friction method",
+      {{"Newton", FrictionMethod::newton},
+       {"convexification", FrictionMethod::convexification}});
+    return table;
+  }
+
   void SolverParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
@@ -624,8 +628,8 @@ namespace Contact
         "slip set does not change.");
       prm.declare_entry(
         "Friction method",
-        "convexification",
-        Patterns::Selection("Newton|convexification"),
+        friction_methods().name(FrictionMethod::convexification),
+        friction_methods().pattern(),
         "How the nonmonotone friction problem of a step is solved. Newton: "
         "a semismooth Newton method on the full law, with the derivative of "
         "the friction coefficient in its Jacobian, a line search on the "
@@ -675,9 +679,8 @@ namespace Contact
         "rejected.");
       prm.declare_entry(
         "Linear solver",
-        "auto",
-        Patterns::Selection(
-          "auto|CHOLMOD|Amesos_Klu|Amesos_Mumps|Amesos_Lapack|CG-AMG"),
+        linear_solvers().name(LinearSolver::automatic),
+        linear_solvers().pattern(),
         "How systems with K = (rho/k) M + A + k B are solved. CHOLMOD "
         "(SuiteSparse's supernodal Cholesky, one process) or a Trilinos "
         "Amesos solver (Amesos_Mumps: MUMPS, distributed over the processes) "
@@ -698,8 +701,8 @@ namespace Contact
         "time_series.csv counts them (column step_cuts).");
       prm.declare_entry(
         "Contact solver",
-        "auto",
-        Patterns::Selection("auto|Delassus|constraints"),
+        contact_solvers().name(ContactSolver::automatic),
+        contact_solvers().pattern(),
         "How the friction problem of a step is solved. Delassus: on the "
         "tangential unknowns of Gamma_3 alone, with the dense Delassus "
         "operator D = C K^{-1} C^T built once per run: from "
@@ -731,23 +734,20 @@ namespace Contact
       max_active_set_iterations = prm.get_integer("Max active set iterations");
       active_set_parameter      = prm.get_double("Active set parameter");
       anderson_depth            = prm.get_integer("Anderson depth");
-      linear_solver             = prm.get("Linear solver");
-      if (linear_solver == "auto")
-        linear_solver = (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ?
-                           "CHOLMOD" :
-                           "Amesos_Mumps");
-      iterative_linear_solver   = (linear_solver == "CG-AMG");
-      const std::string contact = prm.get("Contact solver");
-      contact_solver        = (contact == "Delassus" ? ContactSolver::delassus :
-                               contact == "constraints" ? ContactSolver::constraints :
-                                                          ContactSolver::automatic);
-      friction_method       = (prm.get("Friction method") == "Newton" ?
-                                 FrictionMethod::newton :
-                                 FrictionMethod::convexification);
+      linear_solver   = linear_solvers().parse(prm.get("Linear solver"));
+      contact_solver  = contact_solvers().parse(prm.get("Contact solver"));
+      friction_method = friction_methods().parse(prm.get("Friction method"));
       max_newton_iterations = prm.get_integer("Max Newton iterations");
       step_cuts             = prm.get_integer("Step cuts");
     }
     prm.leave_subsection();
+
+    const unsigned int n_processes =
+      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    if (linear_solver == LinearSolver::automatic)
+      linear_solver =
+        (n_processes == 1 ? LinearSolver::cholmod : LinearSolver::amesos_mumps);
+    iterative_linear_solver = (linear_solver == LinearSolver::cg_amg);
 
     check_entry(convexification_tolerance > 0,
                 "Solver/Convexification tolerance",
@@ -757,12 +757,10 @@ namespace Contact
                 "Solver/Active set parameter",
                 active_set_parameter,
                 "a value > 0");
-    AssertThrow(linear_solver != "CHOLMOD" ||
-                  Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
+    AssertThrow(linear_solver != LinearSolver::cholmod || n_processes == 1,
                 ExcMessage("'Solver/Linear solver = CHOLMOD' runs on one MPI "
                            "process; on " +
-                           std::to_string(
-                             Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)) +
+                           std::to_string(n_processes) +
                            " processes choose auto or an Amesos solver "
                            "(Amesos_Mumps distributes the factor)."));
   }
@@ -770,14 +768,23 @@ namespace Contact
 
   // @sect3{Verification}
 
+  const ChoiceTable<VerificationParameters::Solution> &
+  VerificationParameters::solutions()
+  {
+    static const ChoiceTable<Solution> table(
+      Entry::manufactured_solution,
+      {{"none", Solution::none}, {"slip front", Solution::slip_front}});
+    return table;
+  }
+
   void VerificationParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Verification");
     {
       prm.declare_entry(
         "Manufactured solution",
-        "none",
-        Patterns::Selection("none|slip front"),
+        solutions().name(Solution::none),
+        solutions().pattern(),
         "slip front: solve for the exact solution of ManufacturedSolution "
         "(a stick zone x < 1/2 and a slip zone x > 1/2 on Gamma_3 = {y = 0}, "
         "Gamma_1 = {x = 0}); body force, tractions of all sides but Gamma_1 "
@@ -797,14 +804,26 @@ namespace Contact
   {
     prm.enter_subsection("Verification");
     {
-      manufactured_solution = (prm.get("Manufactured solution") != "none");
-      amplitude             = prm.get_double("Amplitude");
+      manufactured_solution =
+        solutions().parse(prm.get("Manufactured solution"));
+      amplitude = prm.get_double("Amplitude");
     }
     prm.leave_subsection();
   }
 
 
   // @sect3{Convergence study}
+
+  const ChoiceTable<ConvergenceStudyParameters::Refine> &
+  ConvergenceStudyParameters::refinements()
+  {
+    static const ChoiceTable<Refine> table("Convergence study/Refine",
+                                           {{"space and time",
+                                             Refine::space_and_time},
+                                            {"space", Refine::space},
+                                            {"time", Refine::time}});
+    return table;
+  }
 
   void ConvergenceStudyParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -821,8 +840,8 @@ namespace Contact
         "the errors (against a manufactured solution, or else against the "
         "finest level) and their rates is printed at the end.");
       prm.declare_entry("Refine",
-                        "space and time",
-                        Patterns::Selection("space and time|space|time"),
+                        refinements().name(Refine::space_and_time),
+                        refinements().pattern(),
                         "What is halved from one level to the next.");
       prm.declare_entry(
         "Reference degree",
@@ -840,18 +859,35 @@ namespace Contact
   {
     prm.enter_subsection("Convergence study");
     {
-      levels                   = prm.get_integer("Levels");
-      reference_degree         = prm.get_integer("Reference degree");
-      const std::string choice = prm.get("Refine");
-      refine                   = (choice == "space" ? Refine::space :
-                                  choice == "time"  ? Refine::time :
-                                                      Refine::space_and_time);
+      levels           = prm.get_integer("Levels");
+      reference_degree = prm.get_integer("Reference degree");
+      refine           = refinements().parse(prm.get("Refine"));
     }
     prm.leave_subsection();
   }
 
 
   // @sect3{Accuracy}
+
+  const ChoiceTable<AccuracyParameters::TargetErrorType> &
+  AccuracyParameters::target_error_types()
+  {
+    static const ChoiceTable<TargetErrorType> table(
+      Entry::target_error_type,
+      {{"relative", TargetErrorType::relative},
+       {"absolute", TargetErrorType::absolute}});
+    return table;
+  }
+
+  const ChoiceTable<AccuracyParameters::CostModel> &
+  AccuracyParameters::cost_models()
+  {
+    static const ChoiceTable<CostModel> table(
+      Entry::cost_model,
+      {{"measured", CostModel::measured},
+       {"unknowns times steps", CostModel::unknowns_times_steps}});
+    return table;
+  }
 
   void AccuracyParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -892,8 +928,8 @@ namespace Contact
         "The choice and the predicted and estimated errors are printed and "
         "written to <Output directory>/target.txt.");
       prm.declare_entry("Target error type",
-                        "relative",
-                        Patterns::Selection("relative|absolute"),
+                        target_error_types().name(TargetErrorType::relative),
+                        target_error_types().pattern(),
                         "relative: 'Target error' times the size of the "
                         "quantity on the first pilot (for the V-norm "
                         "||eps(u_h)||, at T or its largest over time); "
@@ -906,10 +942,11 @@ namespace Contact
           "' (the largest V-error ||eps(u - u_h)|| over the times t = 4Kj), "
           "or at T: 'V-norm of u', 'friction dissipation', 'probe <i> u_x' "
           "(u_y, u_z) of the i-th 'Output/Probe points' entry, 'slipping "
-          "share of Gamma_3' or 'slip zone starts at x'.");
+          "share of Gamma_3' or 'slip zone starts at x'; or the 'time of the "
+          "first slip'.");
       prm.declare_entry("Cost model",
-                        "measured",
-                        Patterns::Selection("measured|unknowns times steps"),
+                        cost_models().name(CostModel::measured),
+                        cost_models().pattern(),
                         "How the target predicts what a run costs: from "
                         "the pilots' measured wall times (a + b unknowns "
                         "steps, per degree), or unknowns times steps "
@@ -925,9 +962,10 @@ namespace Contact
       estimate_error          = prm.get_bool("Estimate error");
       separate_space_and_time = prm.get_bool("Separate space and time");
       target_error            = prm.get_double("Target error");
-      target_is_relative      = prm.get("Target error type") == "relative";
-      target_quantity         = prm.get("Target quantity");
-      measured_cost           = prm.get("Cost model") == "measured";
+      target_error_type =
+        target_error_types().parse(prm.get("Target error type"));
+      target_quantity = Quantity::parse(prm.get("Target quantity"));
+      cost_model      = cost_models().parse(prm.get("Cost model"));
     }
     prm.leave_subsection();
   }
@@ -935,76 +973,95 @@ namespace Contact
 
   // @sect3{Output}
 
-  void OutputParameters::declare_parameters(ParameterHandler &prm)
+  std::vector<OutputParameters::OwnEntry> &
+  OutputParameters::registered_entries()
+  {
+    static std::vector<OwnEntry> entries;
+    return entries;
+  }
+
+  bool OutputParameters::register_entry(const OwnEntry &entry)
+  {
+    registered_entries().push_back(entry);
+    return true;
+  }
+
+  void OutputParameters::parse_own_entries(ParameterHandler &prm,
+                                           const Parameters &parameters)
   {
     prm.enter_subsection("Output");
+    for (const OwnEntry &own : registered_entries())
+      own_values[own.entry] = own.parse(prm, parameters);
+    prm.leave_subsection();
+  }
+
+  // An entry of a postprocessor may follow another one's.
+  void OutputParameters::declare_entries_after(ParameterHandler  &prm,
+                                               const std::string &name)
+  {
+    for (const OwnEntry &own : registered_entries())
+      if (own.after == name)
+        {
+          own.declare(prm);
+          declare_entries_after(prm, own.entry);
+        }
+  }
+
+  void OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    // After each entry, those of the postprocessors that follow it.
+    const auto declare_entry = [&prm](const std::string           &name,
+                                      const std::string           &value,
+                                      const Patterns::PatternBase &pattern,
+                                      const std::string           &help) {
+      prm.declare_entry(name, value, pattern, help);
+      declare_entries_after(prm, name);
+    };
+    prm.enter_subsection("Output");
     {
-      prm.declare_entry("Output directory",
-                        "results-barboteu2015",
-                        Patterns::Anything(),
-                        "Directory for VTU/PVD, time_series.csv and "
-                        "parameters.prm, relative to where the program runs. "
-                        "A run that is not resumed replaces the results of "
-                        "an earlier run there (its VTU/PVD, time series, "
-                        "Gamma_3 history, parameters, checkpoints, error "
-                        "estimate with its coarse-* runs and a study's table "
-                        "with its level-N); one run at a time "
-                        "may use it (the lock file .lock names the run).");
-      prm.declare_entry("VTU interval",
-                        "8",
-                        Patterns::Integer(0),
-                        "Write a VTU file every this many steps, at the "
-                        "initial and final time and at the step nearest to "
-                        "each of the Report times; 0 writes none.");
-      prm.declare_entry("Time series",
-                        "true",
-                        Patterns::Bool(),
-                        "Write time_series.csv, one row per time step.");
-      prm.declare_entry("Gamma3 history",
-                        "true",
-                        Patterns::Bool(),
-                        "Write gamma3_history.csv: for every time step one "
-                        "row per node of Gamma_3 (its position, stick or "
-                        "slip, slip rate, friction traction and bound), the "
-                        "data of a space-time diagram of the slip front "
-                        "(doc/plot_run.py).");
-      prm.declare_entry("Report times",
-                        "0.3, 1.1",
-                        Patterns::List(Patterns::Double(0)),
-                        "Times [s] at which the stick/slip state of Gamma_3 "
-                        "is printed (at the nearest step).");
-      prm.declare_entry("Probe points",
-                        "",
-                        Patterns::Anything(),
-                        "Points 'x, y[, z]' separated by ';' whose "
-                        "displacement is written to time_series.csv "
-                        "(columns probe<i>_u_x, ...). On a shell a point "
-                        "between its radii that the cells miss by the "
-                        "geometry error of their curved boundary is taken "
-                        "at the nearest point of the cell around it.");
-      prm.declare_entry("Progress interval",
-                        "1",
-                        Patterns::Integer(0),
-                        "Print a progress line every this many steps; 0: "
-                        "none.");
-      prm.declare_entry("Print timings",
-                        "true",
-                        Patterns::Bool(),
-                        "Print the wall time summary at the end (switch off "
-                        "for tests).");
-      prm.declare_entry("Checkpoint interval",
-                        "0",
-                        Patterns::Integer(0),
-                        "Write a checkpoint (output directory/checkpoint) "
-                        "every this many steps, and at the end; 0: by steps "
-                        "never.");
-      prm.declare_entry("Checkpoint minutes",
-                        "0",
-                        Patterns::Double(0),
-                        "Write a checkpoint when this many minutes of wall "
-                        "time have passed since the last one, and at the "
-                        "end; 0: by time never.");
-      prm.declare_entry(
+      declare_entry("Output directory",
+                    "results-barboteu2015",
+                    Patterns::Anything(),
+                    "Directory for VTU/PVD, time_series.csv and "
+                    "parameters.prm, relative to where the program runs. "
+                    "A run that is not resumed replaces the results of "
+                    "an earlier run there (its VTU/PVD, time series, "
+                    "Gamma_3 history, parameters, checkpoints, error "
+                    "estimate with its coarse-* runs and a study's table "
+                    "with its level-N); one run at a time "
+                    "may use it (the lock file .lock names the run).");
+      declare_entry("Report times",
+                    "0.3, 1.1",
+                    Patterns::List(Patterns::Double(0)),
+                    "Times [s] at which the stick/slip state of Gamma_3 "
+                    "is printed (at the nearest step).");
+      declare_entry("Probe points",
+                    "",
+                    Patterns::Anything(),
+                    "Points 'x, y[, z]' separated by ';' whose "
+                    "displacement is written to time_series.csv "
+                    "(columns probe<i>_u_x, ...). On a shell a point "
+                    "between its radii that the cells miss by the "
+                    "geometry error of their curved boundary is taken "
+                    "at the nearest point of the cell around it.");
+      declare_entry("Print timings",
+                    "true",
+                    Patterns::Bool(),
+                    "Print the wall time summary at the end (switch off "
+                    "for tests).");
+      declare_entry("Checkpoint interval",
+                    "0",
+                    Patterns::Integer(0),
+                    "Write a checkpoint (output directory/checkpoint) "
+                    "every this many steps, and at the end; 0: by steps "
+                    "never.");
+      declare_entry("Checkpoint minutes",
+                    "0",
+                    Patterns::Double(0),
+                    "Write a checkpoint when this many minutes of wall "
+                    "time have passed since the last one, and at the "
+                    "end; 0: by time never.");
+      declare_entry(
         "Resume",
         "false",
         Patterns::Bool(),
@@ -1022,15 +1079,11 @@ namespace Contact
   {
     prm.enter_subsection("Output");
     {
-      directory            = Utilities::trim(prm.get("Output directory"));
-      vtu_interval         = prm.get_integer("VTU interval");
-      write_time_series    = prm.get_bool("Time series");
-      write_gamma3_history = prm.get_bool("Gamma3 history");
-      report_times         = Utilities::string_to_double(
+      directory    = Utilities::trim(prm.get("Output directory"));
+      report_times = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Report times")));
       probe_points =
         parse_points(prm.get("Probe points"), dim, "Output/Probe points");
-      progress_interval   = prm.get_integer("Progress interval");
       print_timings       = prm.get_bool("Print timings");
       checkpoint_interval = prm.get_integer("Checkpoint interval");
       checkpoint_minutes  = prm.get_double("Checkpoint minutes");
@@ -1154,27 +1207,23 @@ namespace Contact
       }
   }
 
-  // The names of the quantities at T that final_quantities() gives.
+  // A probe's quantity needs the probe: the target must be one of this
+  // scene's quantities.
   void Parameters::check_target_quantity() const
   {
-    std::vector<std::string> names = {worst_V_error,
-                                      "V-norm of u",
-                                      "friction dissipation",
-                                      "slipping share of Gamma_3",
-                                      "slip zone starts at x"};
-    for (unsigned int i = 0; i < output.probe_points.size(); ++i)
-      for (unsigned int d = 0; d < dimension; ++d)
-        names.push_back("probe " + std::to_string(i + 1) + " u_" +
-                        std::string(1, "xyz"[d]));
-    std::string list;
-    for (const std::string &name : names)
-      list += (list.empty() ? "'" : ", '") + name + "'";
-    AssertThrow(
-      std::find(names.begin(), names.end(), accuracy.target_quantity) !=
-        names.end(),
-      ExcMessage("Entry '" + Entry::target_quantity + "' = '" +
-                 accuracy.target_quantity +
-                 "' is not a quantity of this scene; allowed: " + list + "."));
+    const std::string target = accuracy.target_quantity.name();
+    bool              found  = false;
+    std::string       list;
+    for (const Quantity &quantity :
+         Quantity::of_scene(output.probe_points.size(), dimension))
+      {
+        found = found || quantity.name() == target;
+        list += (list.empty() ? "'" : ", '") + quantity.name() + "'";
+      }
+    AssertThrow(found,
+                ExcMessage(
+                  "Entry '" + Entry::target_quantity + "' = '" + target +
+                  "' is not a quantity of this scene; allowed: " + list + "."));
   }
 
   void Parameters::parse_parameters(ParameterHandler &prm)
@@ -1194,7 +1243,9 @@ namespace Contact
 
     // On a P2 triangle the integral of a vertex basis function is zero:
     // the nodal friction weights m_p of Gamma_3 would vanish at the vertices.
-    AssertThrow(!(dimension == 3 && geometry.simplex_cells &&
+    AssertThrow(!(dimension == 3 &&
+                  geometry.cell_shape ==
+                    GeometryParameters::CellShape::simplex &&
                   geometry.fe_degree > 1 && !friction.law->is_frictionless()),
                 ExcMessage("Entry 'Geometry/Finite element degree': P" +
                            std::to_string(geometry.fe_degree) +
@@ -1212,17 +1263,7 @@ namespace Contact
                            "that holds the body against rigid motions. "
                            "Allowed: at least one clamped boundary id, or a "
                            "density > 0."));
-    // A VTU file per step of a long run fills a disk without a word.
-    const unsigned int max_vtu_files = 10000;
-    check_entry(output.vtu_interval == 0 ||
-                  time.n_steps() / output.vtu_interval <= max_vtu_files,
-                "Output/VTU interval",
-                output.vtu_interval,
-                "0 (none) or at least N / " + std::to_string(max_vtu_files) +
-                  " = " + std::to_string(time.n_steps() / max_vtu_files + 1) +
-                  " for the N = " + std::to_string(time.n_steps()) +
-                  " steps of this run (at most " +
-                  std::to_string(max_vtu_files) + " VTU files)");
+    output.parse_own_entries(prm, *this);
     AssertThrow(!(output.resume && convergence_study.levels > 0),
                 ExcMessage("Entry 'Output/Resume' (--resume): a convergence "
                            "study ('Convergence study/Levels' > 0) cannot be "

@@ -91,10 +91,11 @@ namespace Contact
         bool_text(!quiet && accuracy.separate_space_and_time);
       entries[Entry::target_error] =
         quiet ? "0" : exact_text(accuracy.target_error);
-      entries[Entry::vtu_interval] =
-        quiet ? "0" : std::to_string(output.vtu_interval);
-      entries[Entry::gamma3_history] =
-        bool_text(!quiet && output.write_gamma3_history);
+      if (quiet)
+        {
+          entries[Entry::vtu_interval]   = "0";
+          entries[Entry::gamma3_history] = "false";
+        }
       entries[Entry::checkpoint_interval] =
         quiet ? "0" : std::to_string(output.checkpoint_interval);
       entries[Entry::checkpoint_minutes] =

@@ -46,7 +46,7 @@ namespace Contact
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , sabotage(injected)
-    , exact_solution(parameters.verification.manufactured_solution ?
+    , exact_solution(parameters.verification.manufactured() ?
                        std::make_unique<ManufacturedSolution<dim>>(parameters) :
                        nullptr)
     , space(parameters.geometry, mpi_communicator)

@@ -29,11 +29,11 @@ namespace Contact
     make_triangulation(const GeometryParameters &geometry,
                        const MPI_Comm            communicator)
     {
-      if (geometry.simplex_cells &&
+      if ((geometry.cell_shape == GeometryParameters::CellShape::simplex) &&
           Utilities::MPI::n_mpi_processes(communicator) > 1)
         return std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
           communicator);
-      if (geometry.simplex_cells)
+      if ((geometry.cell_shape == GeometryParameters::CellShape::simplex))
         return std::make_unique<Triangulation<dim>>();
       return std::make_unique<parallel::distributed::Triangulation<dim>>(
         communicator);
@@ -43,7 +43,7 @@ namespace Contact
     std::unique_ptr<const FiniteElement<dim>>
     make_scalar_element(const GeometryParameters &geometry)
     {
-      if (geometry.simplex_cells)
+      if ((geometry.cell_shape == GeometryParameters::CellShape::simplex))
         return std::make_unique<FE_SimplexP<dim>>(geometry.fe_degree);
       return std::make_unique<FE_Q<dim>>(geometry.fe_degree);
     }
@@ -56,7 +56,7 @@ namespace Contact
     std::unique_ptr<const Mapping<dim>>
     make_mapping(const GeometryParameters &geometry)
     {
-      if (geometry.simplex_cells)
+      if ((geometry.cell_shape == GeometryParameters::CellShape::simplex))
         return std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
       return std::make_unique<MappingQ<dim>>(geometry.mapping_degree);
     }
@@ -80,16 +80,18 @@ namespace Contact
   template <int dim>
   DiscreteSpace<dim>::DiscreteSpace(const GeometryParameters &geometry,
                                     const MPI_Comm            communicator)
-    : simplex_cells(geometry.simplex_cells)
+    : simplex_cells(
+        (geometry.cell_shape == GeometryParameters::CellShape::simplex))
     , mpi_communicator(communicator)
     , triangulation(make_triangulation<dim>(geometry, communicator))
     , scalar_fe(make_scalar_element<dim>(geometry))
     , fe(*scalar_fe, dim)
     , mapping(make_mapping<dim>(geometry))
     , quadrature(gauss_rule(geometry.fe_degree + 1))
-    , mass_quadrature(geometry.lumped_mass ? Quadrature<dim>(QGaussLobatto<dim>(
-                                               geometry.fe_degree + 1)) :
-                                             quadrature)
+    , mass_quadrature(
+        (geometry.mass_matrix == GeometryParameters::MassMatrix::lumped) ?
+          Quadrature<dim>(QGaussLobatto<dim>(geometry.fe_degree + 1)) :
+          quadrature)
     , face_quadrature(face_gauss_rule(geometry.fe_degree + 1))
     , dof_handler(*triangulation)
     , scalar_dof_handler(*triangulation)

@@ -72,17 +72,18 @@ namespace Contact
       // still held.
       lock = std::shared_ptr<const int>(
         new int(fd), [directory, name, created](const int *owned) {
-          std::error_code error;
+          std::error_code listing_error;
           if (created)
             {
               unsigned int entries = 0;
               for (const auto &entry :
-                   std::filesystem::directory_iterator(directory, error))
+                   std::filesystem::directory_iterator(directory,
+                                                       listing_error))
                 entries += (entry.path().filename() == ".lock" ? 0 : 1);
-              if (!error && entries == 0)
+              if (!listing_error && entries == 0)
                 {
-                  std::filesystem::remove(name, error);
-                  std::filesystem::remove(directory, error);
+                  std::filesystem::remove(name, listing_error);
+                  std::filesystem::remove(directory, listing_error);
                 }
             }
           close(*owned);

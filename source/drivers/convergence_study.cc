@@ -71,7 +71,7 @@ namespace Contact
       const ConvergenceStudyParameters &study     = scene.convergence_study;
       const bool                        reference = level == study.levels &&
                              study.reference_degree > 0 &&
-                             !scene.verification.manufactured_solution;
+                             !scene.verification.manufactured();
       return {study.refine == Refine::time ? 0 : static_cast<int>(level),
               scene.time.n_steps()
                 << (study.refine == Refine::space ? 0 : level),
@@ -113,10 +113,10 @@ namespace Contact
     run_levels(const std::vector<Parameters>        &levels,
                std::unique_ptr<ContactProblem<dim>> &reference)
     {
-      const unsigned int L      = levels.size() - 1;
-      const bool         exact  = levels[0].verification.manufactured_solution;
-      const Refine       refine = levels[0].convergence_study.refine;
-      std::vector<LevelResult>                     results(L + 1);
+      const unsigned int       L      = levels.size() - 1;
+      const bool               exact  = levels[0].verification.manufactured();
+      const Refine             refine = levels[0].convergence_study.refine;
+      std::vector<LevelResult> results(L + 1);
       std::unique_ptr<ReferenceInterpolation<dim>> interpolate;
       using NodesInCells =
         std::vector<typename ReferenceInterpolation<dim>::NodeInCell>;
@@ -253,7 +253,7 @@ namespace Contact
                      const std::vector<LevelResult> &results,
                      const TableHandler             &table)
     {
-      const bool        exact  = scene.verification.manufactured_solution;
+      const bool        exact  = scene.verification.manufactured();
       const Refine      refine = scene.convergence_study.refine;
       const RunSummary &finest = results.back().run;
       console() << std::endl
@@ -301,7 +301,7 @@ namespace Contact
   void run_convergence_study(const Parameters &scene)
   {
     const unsigned int L     = scene.convergence_study.levels;
-    const bool         exact = scene.verification.manufactured_solution;
+    const bool         exact = scene.verification.manufactured();
     // Every level's entries are checked before the first level runs, so
     // that a study does not fail at its finest level (e.g. over 'Time/Max
     // steps' or the number of VTU files).

@@ -437,7 +437,7 @@ namespace Contact
       };
       const bool               separate = runs.size() == 5;
       std::vector<EstimateRow> rows;
-      EstimateRow              v{"V-norm of u",
+      EstimateRow              v{V_norm,
                     runs[0].summary.displacement_V_norm,
                     distance(0, 1),
                     distance(1, 2),
@@ -548,7 +548,7 @@ namespace Contact
                        const std::vector<EstimateRow> &rows,
                        const KnownOrders              &orders)
     {
-      const bool         exact = parameters.verification.manufactured_solution;
+      const bool         exact    = parameters.verification.manufactured();
       const bool         separate = runs.size() == 5;
       std::ostringstream out;
       out << "Error estimate of this run at T = " << parameters.time.end_time

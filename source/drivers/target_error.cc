@@ -75,7 +75,7 @@ namespace Contact
 
     double quantity_of(const RunSummary &summary, const std::string &name)
     {
-      if (name == "V-norm of u")
+      if (name == V_norm)
         return summary.displacement_V_norm;
       for (const auto &[quantity, value] : summary.final_quantities)
         if (quantity == name)
@@ -112,8 +112,7 @@ namespace Contact
       // (the orders at earlier times come from fewer steps).
       if (quantity == worst_V_error)
         {
-          DirectionFit fit =
-            fit_direction(base, f, m, c, "V-norm of u", max_order);
+          DirectionFit fit = fit_direction(base, f, m, c, V_norm, max_order);
           const double at_T =
             difference(f.run.displacement, m.run.displacement);
           const auto ratio = static_cast<std::size_t>(
@@ -132,7 +131,7 @@ namespace Contact
       const auto value = [&](const Pilot &pilot) {
         return quantity_of(pilot.run.summary, quantity);
       };
-      const bool               field = quantity == "V-norm of u";
+      const bool               field = quantity == V_norm;
       const RichardsonEstimate V =
         field_error_estimate(difference(f.run.displacement, m.run.displacement),
                              difference(m.run.displacement, c.run.displacement),
@@ -287,9 +286,8 @@ namespace Contact
                             const std::string        &quantity,
                             const bool                timings)
     {
-      const std::string shown =
-        quantity == worst_V_error ? "V-norm of u" : quantity;
-      TableHandler table;
+      const std::string shown = quantity == worst_V_error ? V_norm : quantity;
+      TableHandler      table;
       for (const Pilot &pilot : pilots)
         {
           const RunSummary &run = pilot.run.summary;
@@ -299,14 +297,14 @@ namespace Contact
           table.add_value("k", run.time_step);
           table.add_value("unknowns", run.n_dofs);
           table.add_value("steps", run.n_steps);
-          table.add_value("V-norm of u at T", run.displacement_V_norm);
-          if (shown != "V-norm of u")
+          table.add_value(V_norm + " at T", run.displacement_V_norm);
+          if (shown != V_norm)
             table.add_value(shown + " at T", quantity_of(run, shown));
           if (timings)
             table.add_value("wall time [s]", run.wall_time);
         }
       for (const std::string &column : std::vector<std::string>{
-             "h", "k", "V-norm of u at T", shown + " at T"})
+             "h", "k", V_norm + " at T", shown + " at T"})
         {
           table.set_scientific(column, true);
           table.set_precision(column, 4);
@@ -359,8 +357,7 @@ namespace Contact
                                pilots[first + b].run.displacement);
       };
       const double s = norm(0, 1), t = norm(0, 3), across = norm(3, 1);
-      if ((quantity == "V-norm of u" || quantity == worst_V_error) && s > 0 &&
-          t > 0)
+      if ((quantity == V_norm || quantity == worst_V_error) && s > 0 && t > 0)
         results.cosine =
           std::clamp((s * s + t * t - across * across) / (2 * s * t), 0., 1.);
     }
@@ -375,7 +372,7 @@ namespace Contact
                          PilotResults      &results,
                          const std::function<void(const std::string &)> &print)
     {
-      const std::string  &quantity = parameters.accuracy.target_quantity;
+      const std::string   quantity = parameters.accuracy.target_quantity.name();
       const unsigned int  N0       = parameters.time.n_steps();
       std::vector<Pilot> &pilots   = results.pilots;
       const std::size_t   first    = pilots.size();
@@ -426,17 +423,16 @@ namespace Contact
       // The V-norm converges with order `degree` in h at best, a value at a
       // point or an integral with one more; the scheme is of first order in
       // time ((5.26)).
-      const std::string V     = "V-norm of u";
-      const bool        field = quantity == V || quantity == worst_V_error;
+      const bool field = quantity == V_norm || quantity == worst_V_error;
       results.models.push_back({degree,
-                                fit(1, 2, V, degree),
+                                fit(1, 2, V_norm, degree),
                                 fit(1, 2, quantity, degree + (field ? 0 : 1)),
                                 pilots[first].run.summary.n_dofs});
       if (!with_time)
         return;
       run(1, 2);
       run(1, 4);
-      results.time_V = fit(3, 4, V, 1.);
+      results.time_V = fit(3, 4, V_norm, 1.);
       results.time   = fit(3, 4, quantity, 1.);
       measure_size_and_cosine(*base, pilots, first, quantity, results);
     }
@@ -450,7 +446,9 @@ namespace Contact
       // Quadratic elements on tetrahedra have no nodal friction weights
       // (parameters.cc): there only degree 1.
       std::vector<unsigned int> degrees = {2, 1};
-      if (dim == 3 && parameters.geometry.simplex_cells &&
+      if (dim == 3 &&
+          (parameters.geometry.cell_shape ==
+           GeometryParameters::CellShape::simplex) &&
           !parameters.friction.law->is_frictionless())
         degrees = {1};
       PilotResults results;
@@ -458,7 +456,10 @@ namespace Contact
         run_pilots_of_degree<dim>(
           parameters, degree, degree == degrees.front(), results, print);
       for (DegreeModel &model : results.models)
-        fit_cost(model, results.pilots, parameters.accuracy.measured_cost);
+        fit_cost(model,
+                 results.pilots,
+                 parameters.accuracy.cost_model ==
+                   AccuracyParameters::CostModel::measured);
       results.wall_time = timer.wall_time();
       return results;
     }
@@ -474,8 +475,9 @@ namespace Contact
                                     const double        target,
                                     std::ostream       &out)
     {
-      const bool   measured = parameters.accuracy.measured_cost;
-      const bool   timings  = parameters.output.print_timings;
+      const bool measured = parameters.accuracy.cost_model ==
+                            AccuracyParameters::CostModel::measured;
+      const bool   timings = parameters.output.print_timings;
       const double K = parameters.time.end_time / parameters.time.n_steps();
       const double allowed = target_safety * target;
       std::optional<Candidate> chosen;
@@ -530,13 +532,14 @@ namespace Contact
                               const Parameters   &parameters,
                               const double        target)
     {
-      const auto        &accuracy = parameters.accuracy;
-      const std::string &quantity = accuracy.target_quantity;
+      const auto       &accuracy = parameters.accuracy;
+      const std::string quantity = accuracy.target_quantity.name();
       const double K = parameters.time.end_time / parameters.time.n_steps();
       std::ostringstream out;
       out << std::setprecision(3) << "Target error: " << quantity << " within "
           << target;
-      if (accuracy.target_is_relative)
+      if ((accuracy.target_error_type ==
+           AccuracyParameters::TargetErrorType::relative))
         out << " (" << accuracy.target_error << " times its size "
             << results.size << ")";
       out << "; pilots on H = " << results.pilots.front().run.summary.cell_size
@@ -557,8 +560,8 @@ namespace Contact
                               const EstimatedRun &result,
                               const double        target)
     {
-      const std::string &quantity  = parameters.accuracy.target_quantity;
-      double             estimated = std::numeric_limits<double>::quiet_NaN();
+      const std::string quantity  = parameters.accuracy.target_quantity.name();
+      double            estimated = std::numeric_limits<double>::quiet_NaN();
       for (const EstimateRow &row : result.rows)
         if (row.name == quantity)
           estimated = row.estimate.error;
@@ -577,7 +580,7 @@ namespace Contact
             << "warnings of the estimate); run with a smaller '"
             << Entry::cell_size << "' and '" << Entry::time_step << "'."
             << std::endl;
-      if (parameters.verification.manufactured_solution)
+      if (parameters.verification.manufactured())
         out << std::setprecision(4) << "Exact max V-error of the chosen run: "
             << run.max_errors.displacement_V
             << " (at T: " << run.final_errors.displacement_V << ")"
@@ -593,17 +596,19 @@ namespace Contact
       AssertThrow(std::isfinite(pilots.size) &&
                     std::isfinite(pilots.time.error),
                   ExcMessage("Entry '" + Entry::target_quantity + "' = '" +
-                             accuracy.target_quantity +
+                             accuracy.target_quantity.name() +
                              "' is not defined on the pilots (e.g. no slip "
                              "zone, or no node on Gamma_3): choose a quantity "
                              "that this scene has."));
-      AssertThrow(pilots.size > 0 || !accuracy.target_is_relative,
+      const bool relative = (accuracy.target_error_type ==
+                             AccuracyParameters::TargetErrorType::relative);
+      AssertThrow(pilots.size > 0 || !relative,
                   ExcMessage("Entry '" + Entry::target_error_type +
                              "' = relative: the size of '" +
-                             accuracy.target_quantity +
+                             accuracy.target_quantity.name() +
                              "' is 0 on the pilots; give an absolute target."));
-      return accuracy.target_is_relative ? accuracy.target_error * pilots.size :
-                                           accuracy.target_error;
+      return relative ? accuracy.target_error * pilots.size :
+                        accuracy.target_error;
     }
 
     // The orders that the pilots of `degree` measured, with which the
@@ -616,12 +621,12 @@ namespace Contact
       for (const DegreeModel &model : pilots.models)
         if (model.degree == degree)
           {
-            orders[quantity]      = {model.space.order,
-                                     pilots.time.order,
+            orders[quantity] = {model.space.order,
+                                pilots.time.order,
                                 quantity == worst_V_error ? pilots.cosine : 1.};
-            orders["V-norm of u"] = {model.space_V.order,
-                                     pilots.time_V.order,
-                                     pilots.cosine};
+            orders[V_norm]   = {model.space_V.order,
+                                pilots.time_V.order,
+                                pilots.cosine};
           }
       return orders;
     }
@@ -686,7 +691,7 @@ namespace Contact
                      false}),
       known_orders(pilots,
                    chosen->degree,
-                   parameters.accuracy.target_quantity));
+                   parameters.accuracy.target_quantity.name()));
     print("\n" + chosen_report(parameters, *chosen, result, target));
     if (parameters.output.print_timings)
       {

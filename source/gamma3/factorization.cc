@@ -465,15 +465,30 @@ namespace Contact
   } // namespace
 
 
+  // Amesos takes its solvers by the names that the .prm file uses.
   std::unique_ptr<Factorization>
-  Factorization::create(const std::string                    &solver,
+  Factorization::create(const SolverParameters::LinearSolver  solver,
                         const TrilinosWrappers::SparseMatrix &K,
                         const std::vector<std::vector<bool>> &constant_modes)
   {
-    if (solver == "CHOLMOD")
-      return std::make_unique<CholmodFactorization>(K);
-    if (solver == "CG-AMG")
-      return std::make_unique<CgAmgSolver>(K, constant_modes);
-    return std::make_unique<AmesosFactorization>(solver, K);
+    using LinearSolver = SolverParameters::LinearSolver;
+    switch (solver)
+      {
+        case LinearSolver::cholmod:
+          return std::make_unique<CholmodFactorization>(K);
+        case LinearSolver::cg_amg:
+          return std::make_unique<CgAmgSolver>(K, constant_modes);
+        case LinearSolver::amesos_klu:
+        case LinearSolver::amesos_mumps:
+        case LinearSolver::amesos_lapack:
+          return std::make_unique<AmesosFactorization>(
+            SolverParameters::linear_solvers().name(solver), K);
+        case LinearSolver::automatic:
+          break;
+      }
+    AssertThrow(false,
+                ExcInternalError("'auto' is resolved when '" +
+                                 Entry::linear_solver + "' is parsed."));
+    return nullptr;
   }
 } // namespace Contact

@@ -16,6 +16,28 @@
 
 namespace Contact
 {
+  namespace
+  {
+    // @sect4{The entry 'Progress interval'}
+
+    const std::string progress_entry = "Progress interval";
+
+    [[maybe_unused]] const bool registered = OutputParameters::register_entry(
+      {progress_entry,
+       "Probe points",
+       [](ParameterHandler &prm) {
+         prm.declare_entry(progress_entry,
+                           "1",
+                           Patterns::Integer(0),
+                           "Print a progress line every this many steps; 0: "
+                           "none.");
+       },
+       [](ParameterHandler &prm, const Parameters &) -> std::any {
+         return static_cast<unsigned int>(prm.get_integer(progress_entry));
+       }});
+  } // namespace
+
+
   template <int dim>
   class Console : public Postprocessor<dim>
   {
@@ -76,10 +98,11 @@ namespace Contact
   template <int dim>
   void Console<dim>::print_progress(const StepStatistics &statistics) const
   {
-    const unsigned int step     = this->state().step_number,
-                       n_steps  = this->n_time_steps();
-    const double       now      = this->state().time;
-    const unsigned int interval = this->parameters().output.progress_interval;
+    const unsigned int step    = this->state().step_number,
+                       n_steps = this->n_time_steps();
+    const double       now     = this->state().time;
+    const unsigned int interval =
+      this->parameters().output.template entry<unsigned int>(progress_entry);
     if (interval == 0 || (step % interval != 0 && step != n_steps))
       return;
     const double elapsed = run_timer.wall_time();
@@ -125,8 +148,9 @@ namespace Contact
       this->friction_solver().boundary().nodes;
     const Vector<double> &friction_force =
       this->friction_solver().state().friction_force;
-    const bool     shell = this->parameters().geometry.shell;
-    const SlipZone zone  = slip_zone(contact_nodes,
+    const bool shell =
+      this->parameters().geometry.domain == GeometryParameters::Domain::shell;
+    const SlipZone zone = slip_zone(contact_nodes,
                                     this->friction_solver().state().node_state,
                                     shell);
     for (const double t : due)

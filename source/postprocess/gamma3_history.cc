@@ -12,7 +12,28 @@ namespace Contact
   namespace
   {
     const ResultFiles history_files("gamma3_history\\.csv(\\.tmp)?");
-  }
+
+    // @sect4{The entry 'Gamma3 history'}
+
+    const std::string history_entry = "Gamma3 history";
+
+    [[maybe_unused]] const bool registered = OutputParameters::register_entry(
+      {history_entry,
+       "Time series",
+       [](ParameterHandler &prm) {
+         prm.declare_entry(
+           history_entry,
+           "true",
+           Patterns::Bool(),
+           "Write gamma3_history.csv: for every time step one row per node "
+           "of Gamma_3 (its position, stick or slip, slip rate, friction "
+           "traction and bound), the data of a space-time diagram of the "
+           "slip front (doc/plot_run.py).");
+       },
+       [](ParameterHandler &prm, const Parameters &) -> std::any {
+         return prm.get_bool(history_entry);
+       }});
+  } // namespace
 
 
   template <int dim>
@@ -40,7 +61,7 @@ namespace Contact
   template <int dim>
   void Gamma3History<dim>::start(const bool resumed)
   {
-    if (!this->parameters().output.write_gamma3_history ||
+    if (!this->parameters().output.template entry<bool>(history_entry) ||
         Utilities::MPI::this_mpi_process(this->mpi_communicator()) != 0)
       return;
     file.open(this->parameters().output.directory + "/gamma3_history.csv",

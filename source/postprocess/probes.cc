@@ -78,7 +78,8 @@ namespace Contact
         std::ostringstream text;
         text << point;
         if (evaluating_process == n_processes &&
-            this->parameters().geometry.shell)
+            this->parameters().geometry.domain ==
+              GeometryParameters::Domain::shell)
           evaluating_process = probe_near_curved_boundary(point, probe);
         AssertThrow(evaluating_process < n_processes,
                     ExcMessage("Entry '" + Entry::probe_points +
@@ -209,9 +210,9 @@ namespace Contact
       {
         const Tensor<1, dim> value = probe_displacement(i, u);
         for (unsigned int d = 0; d < dim; ++d)
-          quantities.emplace_back("probe " + std::to_string(i + 1) + " u_" +
-                                    std::string(1, "xyz"[d]),
-                                  value[d]);
+          quantities.emplace_back(
+            Quantity{Quantity::Kind::probe_displacement, i, d}.name(),
+            value[d]);
       }
     summary.final_quantities.insert(summary.final_quantities.begin(),
                                     quantities.begin(),

@@ -224,7 +224,8 @@ namespace Contact
              deviator_factor * (eps * eps);
     };
 
-    const bool         lumped = this->parameters().geometry.lumped_mass;
+    const bool lumped = this->parameters().geometry.mass_matrix ==
+                        GeometryParameters::MassMatrix::lumped;
     FEValues<dim>      strain_values(*space.mapping,
                                 space.fe,
                                 space.quadrature,
@@ -320,7 +321,8 @@ namespace Contact
     rotation_defect      = constrained.linfty_norm() / r.linfty_norm();
     moment_balance_is_checked =
       rotation_defect <= 1e-12 &&
-      (geometry.simplex_cells || geometry.mapping_degree <= space.fe.degree);
+      ((geometry.cell_shape == GeometryParameters::CellShape::simplex) ||
+       geometry.mapping_degree <= space.fe.degree);
     rotation = space.fast_ghosted(r);
     rotation_on_gamma3 =
       this->friction_solver().boundary().tangential_velocities(r);
@@ -497,7 +499,8 @@ namespace Contact
       line("balance of moments about the z-axis",
            c.moment_balance,
            c.moment_balance);
-    else if (this->parameters().geometry.shell)
+    else if (this->parameters().geometry.domain ==
+             GeometryParameters::Domain::shell)
       print_why_moments_are_not_checked();
   }
 

@@ -187,23 +187,26 @@ namespace Contact
   template <int dim>
   void SlipDiagnostics<dim>::add_to_summary(RunSummary &summary) const
   {
+    using Kind       = Quantity::Kind;
     auto &quantities = summary.final_quantities;
-    quantities.emplace_back("friction dissipation",
+    quantities.emplace_back(Quantity{Kind::friction_dissipation}.name(),
                             this->state().energy.friction_dissipation);
-    const bool     shell = this->parameters().geometry.shell;
-    const SlipZone zone  = slip_zone(this->friction_solver().boundary().nodes,
+    const bool shell =
+      this->parameters().geometry.domain == GeometryParameters::Domain::shell;
+    const SlipZone zone = slip_zone(this->friction_solver().boundary().nodes,
                                     this->friction_solver().state().node_state,
                                     shell);
     const unsigned int n_nodes = zone.n_stick + zone.n_slip;
     if (n_nodes > 0)
-      quantities.emplace_back("slipping share of Gamma_3",
+      quantities.emplace_back(Quantity{Kind::slipping_share}.name(),
                               double(zone.n_slip) / n_nodes);
     if (!shell)
-      quantities.emplace_back("slip zone starts at x",
+      quantities.emplace_back(Quantity{Kind::slip_zone_start}.name(),
                               zone.n_slip > 0 ?
                                 zone.from :
                                 std::numeric_limits<double>::quiet_NaN());
-    quantities.emplace_back("time of the first slip", slip_onset.time);
+    quantities.emplace_back(Quantity{Kind::first_slip_time}.name(),
+                            slip_onset.time);
   }
 
 

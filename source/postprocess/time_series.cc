@@ -13,7 +13,24 @@ namespace Contact
   namespace
   {
     const ResultFiles series_files("time_series\\.csv(\\.tmp)?");
-  }
+
+    // @sect4{The entry 'Time series'}
+
+    const std::string series_entry = "Time series";
+
+    [[maybe_unused]] const bool registered = OutputParameters::register_entry(
+      {series_entry,
+       "VTU interval",
+       [](ParameterHandler &prm) {
+         prm.declare_entry(series_entry,
+                           "true",
+                           Patterns::Bool(),
+                           "Write time_series.csv, one row per time step.");
+       },
+       [](ParameterHandler &prm, const Parameters &) -> std::any {
+         return prm.get_bool(series_entry);
+       }});
+  } // namespace
 
 
   template <int dim>
@@ -24,7 +41,7 @@ namespace Contact
 
     void after_step(const StepStatistics &statistics) override
     {
-      if (this->parameters().output.write_time_series)
+      if (this->parameters().output.template entry<bool>(series_entry))
         write_row(columns(), statistics);
     }
 
@@ -56,7 +73,7 @@ namespace Contact
   template <int dim>
   void TimeSeries<dim>::start(const bool resumed)
   {
-    if (!this->parameters().output.write_time_series)
+    if (!this->parameters().output.template entry<bool>(series_entry))
       return;
     const TimeSeriesRow row = columns();
     if (Utilities::MPI::this_mpi_process(this->mpi_communicator()) != 0)

@@ -32,7 +32,39 @@ namespace Contact
   {
     const ResultFiles vtu_files(
       "solution_[0-9]{5}\\.([0-9]+\\.vtu|pvtu)|solution\\.pvd(\\.tmp)?");
-  }
+
+    // @sect4{The entry 'VTU interval'}
+
+    const std::string interval_entry = "VTU interval";
+
+    [[maybe_unused]] const bool registered = OutputParameters::register_entry(
+      {interval_entry,
+       "Output directory",
+       [](ParameterHandler &prm) {
+         prm.declare_entry(interval_entry,
+                           "8",
+                           Patterns::Integer(0),
+                           "Write a VTU file every this many steps, at the "
+                           "initial and final time and at the step nearest "
+                           "to each of the Report times; 0 writes none.");
+       },
+       // A VTU file per step of a long run fills a disk without a word.
+       [](ParameterHandler &prm, const Parameters &parameters) -> std::any {
+         const unsigned int interval      = prm.get_integer(interval_entry);
+         const unsigned int n_steps       = parameters.time.n_steps();
+         const unsigned int max_vtu_files = 10000;
+         check_entry(interval == 0 || n_steps / interval <= max_vtu_files,
+                     "Output/" + interval_entry,
+                     interval,
+                     "0 (none) or at least N / " +
+                       std::to_string(max_vtu_files) + " = " +
+                       std::to_string(n_steps / max_vtu_files + 1) +
+                       " for the N = " + std::to_string(n_steps) +
+                       " steps of this run (at most " +
+                       std::to_string(max_vtu_files) + " VTU files)");
+         return interval;
+       }});
+  } // namespace
 
 
   // @sect4{VtuOutput}
@@ -137,7 +169,8 @@ namespace Contact
   {
     if (resumed)
       write_pvd();
-    else if (this->parameters().output.vtu_interval > 0)
+    else if (this->parameters().output.template entry<unsigned int>(
+               interval_entry) > 0)
       write_vtu();
   }
 
@@ -149,10 +182,11 @@ namespace Contact
   template <int dim>
   void VtuOutput<dim>::after_step(const StepStatistics &)
   {
-    const unsigned int interval = this->parameters().output.vtu_interval,
-                       step     = this->state().step_number;
-    const bool last             = (step == this->n_time_steps());
-    const bool reported =
+    const unsigned int interval =
+      this->parameters().output.template entry<unsigned int>(interval_entry);
+    const unsigned int step = this->state().step_number;
+    const bool         last = (step == this->n_time_steps());
+    const bool         reported =
       !report_times.take_due(this->state().time, this->time_step(), last)
          .empty();
     if (interval > 0 && (step % interval == 0 || last || reported))
@@ -250,7 +284,9 @@ namespace Contact
     const auto               &material = this->parameters().material;
     const double              two_G    = material.two_G();
     const double              lambda   = material.lambda(dim);
-    const bool plane_strain            = (dim == 2 && !material.plane_stress);
+    const bool                plane_strain =
+      (dim == 2 &&
+       material.plane_model == MaterialParameters::PlaneModel::plane_strain);
 
     const unsigned int n_cells = space.triangulation->n_active_cells();
     output.stress.assign(dim * (dim + 1) / 2, Vector<double>(n_cells));

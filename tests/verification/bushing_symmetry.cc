@@ -39,6 +39,7 @@
 #include <app/run.h>
 
 #include <array>
+#include <filesystem>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -229,7 +230,8 @@ Ring run(const std::string &scene, const std::vector<std::string> &sets)
   if (root())
     {
       ring.series = read_csv(parameters.output.directory + "/time_series.csv");
-      if (parameters.output.write_gamma3_history)
+      if (std::filesystem::exists(parameters.output.directory +
+                                  "/gamma3_history.csv"))
         ring.gamma3 =
           read_csv(parameters.output.directory + "/gamma3_history.csv");
     }

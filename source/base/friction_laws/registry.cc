@@ -203,10 +203,7 @@ namespace Contact
                      const double       value,
                      const std::string &allowed)
     {
-      AssertThrow(condition,
-                  ExcMessage("Invalid value " + number_text(value) +
-                             " for the entry '" + entry_path(entry) +
-                             "': allowed is " + allowed + "."));
+      Contact::check_entry(condition, entry_path(entry), value, allowed);
     }
   } // namespace FrictionLaws
 } // namespace Contact

@@ -1,0 +1,152 @@
+/* The shell: its entries and its mesh. */
+
+#include <deal.II/base/exceptions.h>
+
+#include <deal.II/grid/grid_generator.h>
+
+#include <geometry/shell.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace Contact
+{
+  namespace
+  {
+    // @sect4{The entries of the shell}
+
+    void declare_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry("Inner radius",
+                        "0.5",
+                        Patterns::Double(0),
+                        "Inner radius of the shell [m].");
+      prm.declare_entry("Outer radius",
+                        "1",
+                        Patterns::Double(0),
+                        "Outer radius of the shell [m].");
+      prm.declare_entry("Shell length",
+                        "0.25",
+                        Patterns::Double(0),
+                        "Length of the tube along z in 3D [m].");
+      prm.declare_entry("Cells around",
+                        "8",
+                        Patterns::Integer(3, 1000),
+                        "Cells of the shell's coarse mesh around the circle "
+                        "(one layer across the wall; in 3D as many along z "
+                        "as keep the cells about as long as wide).");
+    }
+
+    // Checked where the shell is the domain. Its circles are a manifold
+    // about the origin (about the z axis in 3D): a rotated mesh would
+    // leave it.
+    void parse_entries(ParameterHandler   &prm,
+                       GeometryParameters &geometry,
+                       const unsigned int  dim)
+    {
+      geometry.inner_radius = prm.get_double("Inner radius");
+      geometry.outer_radius = prm.get_double("Outer radius");
+      geometry.shell_length = prm.get_double("Shell length");
+      geometry.cells_around = prm.get_integer("Cells around");
+      if (geometry.domain != GeometryParameters::Domain::shell)
+        return;
+      const std::string with_shell = " with '" + Entry::domain + " = shell'";
+      AssertThrow(geometry.mesh_file.empty(),
+                  ExcMessage("Entry '" + Entry::domain +
+                             "': shell does not go with a '" +
+                             Entry::mesh_file +
+                             "' (the file is the domain); allowed with a "
+                             "mesh file is box."));
+      check_entry(geometry.outer_radius > geometry.inner_radius,
+                  Entry::outer_radius,
+                  geometry.outer_radius,
+                  "a radius above the Inner radius, " +
+                    Utilities::to_string(geometry.inner_radius));
+      check_entry(geometry.inner_radius > 0,
+                  Entry::inner_radius,
+                  geometry.inner_radius,
+                  "r > 0" + with_shell);
+      check_entry(dim == 2 || geometry.shell_length > 0,
+                  Entry::shell_length,
+                  geometry.shell_length,
+                  "a length > 0" + with_shell + " in 3D");
+      check_entry(geometry.rotation_angle == 0,
+                  Entry::rotation_angle,
+                  geometry.rotation_angle,
+                  "0" + with_shell);
+      AssertThrow(geometry.cell_shape ==
+                    GeometryParameters::CellShape::hypercube,
+                  ExcMessage("Entry '" + Entry::domain +
+                             "': shell is built of quadrilaterals/hexahedra; "
+                             "allowed with 'Cell shape = simplex' is box."));
+    }
+
+    // Declared after 'Domain': their place in doc/parameters.prm.
+    [[maybe_unused]] const bool registered =
+      GeometryParameters::register_entries("shell",
+                                           {"Domain",
+                                            declare_entries,
+                                            parse_entries});
+  } // namespace
+
+
+  // @sect4{Shell::create_coarse_mesh}
+
+  // deal.II's shell with its spherical (2D) or cylindrical (3D) manifold,
+  // so that refinement puts new vertices on the circles and a mapping of
+  // degree 2 or more curves the cells' edges along them.
+  template <int dim>
+  unsigned int Shell<dim>::create_coarse_mesh(Triangulation<dim> &mesh) const
+  {
+    const auto  &geometry = this->parameters.geometry;
+    const double inner = geometry.inner_radius, outer = geometry.outer_radius;
+    // In 3D as many cells along z as keep them about as long as wide.
+    const unsigned int n_axial =
+      dim == 2 ? 1 :
+                 std::max(1u,
+                          static_cast<unsigned int>(std::round(
+                            geometry.shell_length / (2 * numbers::PI * inner /
+                                                     geometry.cells_around))));
+    const double cells = std::pow(2., dim * geometry.mesh_refinements) *
+                         geometry.cells_around * n_axial;
+    this->check_memory(cells,
+                       dim * cells * std::pow(geometry.fe_degree, dim),
+                       Entry::mesh_refinements);
+    if constexpr (dim == 2)
+      GridGenerator::hyper_shell(
+        mesh, Point<dim>(), inner, outer, geometry.cells_around, true);
+    else
+      {
+        GridGenerator::cylinder_shell(mesh,
+                                      geometry.shell_length,
+                                      inner,
+                                      outer,
+                                      geometry.cells_around,
+                                      n_axial);
+        // By the faces' vertices, which lie on the circles (a face's center
+        // lies inside its circle, for few cells around below the middle
+        // radius even on the outer one).
+        const double length = geometry.shell_length;
+        for (const auto &face : mesh.active_face_iterators())
+          if (face->at_boundary())
+            {
+              const Point<dim> center = face->center();
+              double           radius = 0;
+              for (const unsigned int v : face->vertex_indices())
+                radius =
+                  std::max(radius,
+                           std::hypot(face->vertex(v)[0], face->vertex(v)[1]));
+              face->set_boundary_id(
+                std::abs(center[2]) < 1e-10 * length          ? 2 :
+                std::abs(center[2] - length) < 1e-10 * length ? 3 :
+                radius < (inner + outer) / 2                  ? 0 :
+                                                                1);
+            }
+      }
+    return geometry.mesh_refinements;
+  }
+
+
+  template class Shell<2>;
+  template class Shell<3>;
+} // namespace Contact
