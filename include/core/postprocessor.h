@@ -41,6 +41,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
+#include <base/dimensions.h>
 #include <core/contact_problem.h>
 
 #include <functional>
@@ -224,12 +225,12 @@ namespace Contact
   {
     explicit PostprocessorRegistration(const unsigned int rank)
     {
-      postprocessor_registry<2>().emplace(rank, []() {
-        return std::make_unique<Class<2>>();
-      });
-      postprocessor_registry<3>().emplace(rank, []() {
-        return std::make_unique<Class<3>>();
-      });
+#define INSTANTIATE(dim)                             \
+  postprocessor_registry<dim>().emplace(rank, []() { \
+    return std::make_unique<Class<dim>>();           \
+  });
+      CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
     }
   };
 } // namespace Contact

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <base/dimensions.h>
 #include <app/prm_reader.h>
 #include <app/run.h>
 #include <core/contact_problem.h>
@@ -119,10 +120,11 @@ namespace Contact
       }
     const Parameters parameters =
       read_scene(prm, command_line.parameter_file, command_line.overrides);
-    if (parameters.dimension == 2)
-      run_driver<2>(parameters);
-    else
-      run_driver<3>(parameters);
+#define INSTANTIATE(dim)           \
+  if (parameters.dimension == dim) \
+    run_driver<dim>(parameters);
+    CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
   }
 
 

@@ -6,6 +6,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <base/dimensions.h>
 #include <base/parameters.h>
 
 #include <algorithm>
@@ -1229,6 +1230,18 @@ namespace Contact
   void Parameters::parse_parameters(ParameterHandler &prm)
   {
     dimension = prm.get_integer("Dimension");
+    // A build for one dimension (the CMake option CONTACT_DIMENSIONS) has
+    // no ContactProblem of the other.
+    AssertThrow(is_compiled_dimension(dimension),
+                ExcMessage("Entry 'Dimension' = " + std::to_string(dimension) +
+                           ": this build of the program is compiled for "
+                           "the dimensions '" +
+                           compiled_dimensions() +
+                           "' only (CMake option CONTACT_DIMENSIONS); "
+                           "allowed here is " +
+                           compiled_dimensions() +
+                           ", or a build configured with "
+                           "-DCONTACT_DIMENSIONS=\"2;3\" (the default)."));
     geometry.parse_parameters(prm, dimension);
     boundary.parse_parameters(prm);
     material.parse_parameters(prm);
@@ -1356,12 +1369,9 @@ namespace Contact
     return function;
   }
 
-  template std::unique_ptr<FunctionParser<2>>
-  parse_vector_function<2>(const std::string &,
-                           const std::string &,
-                           const bool);
-  template std::unique_ptr<FunctionParser<3>>
-  parse_vector_function<3>(const std::string &,
-                           const std::string &,
-                           const bool);
+#define INSTANTIATE(dim)                                                    \
+  template std::unique_ptr<FunctionParser<dim>> parse_vector_function<dim>( \
+    const std::string &, const std::string &, const bool);
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
 } // namespace Contact

@@ -15,6 +15,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <base/dimensions.h>
 #include <core/discrete_space.h>
 
 #include <algorithm>
@@ -198,6 +199,7 @@ namespace Contact
   }
 
 
-  template class DiscreteSpace<2>;
-  template class DiscreteSpace<3>;
+#define INSTANTIATE(dim) template class DiscreteSpace<dim>;
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
 } // namespace Contact

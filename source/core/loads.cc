@@ -6,6 +6,7 @@
 
 #include <deal.II/fe/fe_values.h>
 
+#include <base/dimensions.h>
 #include <core/loads.h>
 
 #include <algorithm>
@@ -333,6 +334,7 @@ namespace Contact
 
 
 
-  template class Loads<2>;
-  template class Loads<3>;
+#define INSTANTIATE(dim) template class Loads<dim>;
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
 } // namespace Contact

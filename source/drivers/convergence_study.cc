@@ -18,6 +18,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/table_handler.h>
 
+#include <base/dimensions.h>
 #include <base/scene_variant.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
@@ -331,6 +332,8 @@ namespace Contact
   }
 
 
-  template void run_convergence_study<2>(const Parameters &);
-  template void run_convergence_study<3>(const Parameters &);
+#define INSTANTIATE(dim) \
+  template void run_convergence_study<dim>(const Parameters &);
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
 } // namespace Contact

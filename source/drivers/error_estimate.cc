@@ -22,6 +22,7 @@
 #include <deal.II/base/table_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <base/dimensions.h>
 #include <base/scene_variant.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
@@ -667,14 +668,12 @@ namespace Contact
   }
 
 
-  template RunAtTimes   run_onto<2>(ContactProblem<2> &,
-                                  const ReferenceInterpolation<2> *,
-                                  const unsigned int);
-  template RunAtTimes   run_onto<3>(ContactProblem<3> &,
-                                  const ReferenceInterpolation<3> *,
-                                  const unsigned int);
-  template EstimatedRun run_with_error_estimate<2>(const Parameters &,
-                                                   const KnownOrders &);
-  template EstimatedRun run_with_error_estimate<3>(const Parameters &,
-                                                   const KnownOrders &);
+#define INSTANTIATE(dim)                                                   \
+  template RunAtTimes   run_onto<dim>(ContactProblem<dim> &,               \
+                                    const ReferenceInterpolation<dim> *, \
+                                    const unsigned int);                 \
+  template EstimatedRun run_with_error_estimate<dim>(const Parameters &,   \
+                                                     const KnownOrders &);
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
 } // namespace Contact

@@ -11,6 +11,7 @@
 
 #include <deal.II/numerics/rtree.h>
 
+#include <base/dimensions.h>
 #include <drivers/reference_interpolation.h>
 
 #include <limits>
@@ -248,6 +249,7 @@ namespace Contact
   }
 
 
-  template class ReferenceInterpolation<2>;
-  template class ReferenceInterpolation<3>;
+#define INSTANTIATE(dim) template class ReferenceInterpolation<dim>;
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
 } // namespace Contact

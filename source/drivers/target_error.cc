@@ -21,6 +21,7 @@
 #include <deal.II/base/table_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <base/dimensions.h>
 #include <base/scene_variant.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
@@ -712,6 +713,7 @@ namespace Contact
   }
 
 
-  template void run_to_target<2>(const Parameters &);
-  template void run_to_target<3>(const Parameters &);
+#define INSTANTIATE(dim) template void run_to_target<dim>(const Parameters &);
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
 } // namespace Contact

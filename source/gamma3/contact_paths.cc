@@ -11,6 +11,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
+#include <base/dimensions.h>
 #include <gamma3/delassus_operator.h>
 #include <gamma3/friction_solver.h>
 
@@ -674,7 +675,6 @@ namespace Contact
     const bool,                                                 \
     TimerOutput &);
 
-  INSTANTIATE(2)
-  INSTANTIATE(3)
+  CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
 } // namespace Contact

@@ -8,6 +8,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 
+#include <base/dimensions.h>
 #include <gamma3/friction_solver.h>
 
 #include <algorithm>
@@ -700,6 +701,7 @@ namespace Contact
   }
 
 
-  template class FrictionSolver<2>;
-  template class FrictionSolver<3>;
+#define INSTANTIATE(dim) template class FrictionSolver<dim>;
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
 } // namespace Contact

@@ -4,6 +4,7 @@
 
 #include <deal.II/grid/grid_generator.h>
 
+#include <base/dimensions.h>
 #include <geometry/box.h>
 
 #include <algorithm>
@@ -156,6 +157,7 @@ namespace Contact
   }
 
 
-  template class Box<2>;
-  template class Box<3>;
+#define INSTANTIATE(dim) template class Box<dim>;
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
 } // namespace Contact

@@ -6,6 +6,7 @@
 
 #include <deal.II/grid/grid_tools.h>
 
+#include <base/dimensions.h>
 #include <geometry/box.h>
 #include <geometry/geometry.h>
 #include <geometry/mesh_file.h>
@@ -259,10 +260,10 @@ namespace Contact
   }
 
 
-  template class Geometry<2>;
-  template class Geometry<3>;
-  template std::unique_ptr<const Geometry<2>>
-  create_geometry<2>(const Parameters &, const MPI_Comm);
-  template std::unique_ptr<const Geometry<3>>
-  create_geometry<3>(const Parameters &, const MPI_Comm);
+#define INSTANTIATE(dim)                                              \
+  template class Geometry<dim>;                                       \
+  template std::unique_ptr<const Geometry<dim>> create_geometry<dim>( \
+    const Parameters &, const MPI_Comm);
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
 } // namespace Contact

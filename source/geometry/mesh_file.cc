@@ -4,6 +4,7 @@
 
 #include <deal.II/grid/grid_in.h>
 
+#include <base/dimensions.h>
 #include <geometry/mesh_file.h>
 
 #include <cmath>
@@ -79,6 +80,7 @@ namespace Contact
   }
 
 
-  template class MeshFile<2>;
-  template class MeshFile<3>;
+#define INSTANTIATE(dim) template class MeshFile<dim>;
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
 } // namespace Contact

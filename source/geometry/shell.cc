@@ -4,6 +4,7 @@
 
 #include <deal.II/grid/grid_generator.h>
 
+#include <base/dimensions.h>
 #include <geometry/shell.h>
 
 #include <algorithm>
@@ -147,6 +148,7 @@ namespace Contact
   }
 
 
-  template class Shell<2>;
-  template class Shell<3>;
+#define INSTANTIATE(dim) template class Shell<dim>;
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
 } // namespace Contact
