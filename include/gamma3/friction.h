@@ -219,6 +219,12 @@ namespace Contact
      *  true slope throughout). Below the convexity limit of the step's
      *  problem it keeps the model convex. */
     double weakening_cap = std::numeric_limits<double>::infinity();
+    /** Keep the cap throughout, also near the solution: the Newton matrix
+     *  then stays positive definite (the constraints path, whose solver
+     *  needs that), at the price of a linear rather than quadratic
+     *  convergence where the true weakening is steeper than the cap. The
+     *  fixed point is the same: the residual uses the true law. */
+    bool cap_throughout = false;
 
     double bound(const unsigned int p, const double s) const;
     double slope(const unsigned int p, const double s) const;
@@ -263,16 +269,15 @@ namespace Contact
    * the true slope, a node just entering slip is pulled back towards
    * stick); once the sets repeat after a full step and max |F_p| is below
    * a tenth of max_p g_p(0), the true slope takes over for the quadratic
-   * convergence. A step that does not lower E is halved up to three times; if
+   * convergence (never with law.cap_throughout). A step that does not lower E is halved up to three times; if
    * that fails, the other model (capped or true slope) is tried from the same
    * iterate (a failed true step also halves the residual below which the
    * true slope is taken again), and if both fail a convexification step
    * is taken instead (the Tresca problem with the
    * bounds of the current slip rates), which lowers E because j is concave
    * along |v| (a majorisation).
-   * So the method cannot end on a maximum or saddle of E, and where the step
-   * problem has several solutions it ends on a local minimum reached by
-   * descent from the previous step's state: (eta, v) on entry are the
+   * Every step after the first does not raise E; a saddle of E is not
+   * excluded (doc/algorithm.md). (eta, v) on entry are the
    * previous step's forces and slip velocities, and the first Newton step
    * is taken from their linearisation (the previous step's active set),
    * without a solve to make v consistent with eta. It stops when the sets

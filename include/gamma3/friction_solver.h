@@ -236,6 +236,13 @@ namespace Contact
     virtual void apply_delassus(const Vector<double> &x, Vector<double> &y) = 0;
     /** What the summary prints about the path. */
     virtual std::string description() const = 0;
+    /** Whether newton_step() hands its matrix to a solver that needs it
+     *  positive definite (CHOLMOD, CG): then the Newton model keeps the
+     *  weakening below the convexity limit throughout (NodalLaw). */
+    virtual bool needs_definite_newton_matrix() const
+    {
+      return false;
+    }
 
     /** Solves with K (or a variant) since the step began, and the wall time
      *  of the step's first solve (or its substitutions). */

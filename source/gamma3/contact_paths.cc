@@ -500,6 +500,14 @@ namespace Contact
         return "active set as constraints, one solve with K per Newton step";
       }
 
+      // K plus the springs of the slopes goes to CHOLMOD or CG: with the
+      // true slope of a weakening law it is indefinite wherever the step
+      // problem is not convex (CHOLMOD refuses it; CG would run on it).
+      bool needs_definite_newton_matrix() const override
+      {
+        return true;
+      }
+
     private:
       // w = K'^{-1} load for K or a variant K', counted, and timed if it is
       // the step's first solve.

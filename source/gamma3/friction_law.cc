@@ -465,6 +465,8 @@ namespace Contact
     const double tolerance = friction_residual_tolerance * largest_bound;
     const bool   has_cap   = std::isfinite(law.weakening_cap);
     bool         capped    = has_cap;
+    // Whether the model may switch to the true slope.
+    const bool may_uncap = has_cap && !law.cap_throughout;
 
     // The first step is taken from the previous step's state, which belongs
     // to another v_free: its energy is not compared. The energy of the
@@ -498,7 +500,7 @@ namespace Contact
         if (length == 0.)
           {
             (capped ? capped_failed : uncapped_failed) = true;
-            if (has_cap &&
+            if (may_uncap &&
                 (capped ? !uncapped_failed && residual < uncap_below :
                           !capped_failed))
               {
@@ -554,7 +556,8 @@ namespace Contact
             result.converged = true;
             break;
           }
-        if (capped && sets_repeat && length == 1. && residual < uncap_below)
+        if (may_uncap && capped && sets_repeat && length == 1. &&
+            residual < uncap_below)
           {
             capped        = false;
             linearisation = linearise_law(m, eta, v, law, c, capped);
