@@ -42,7 +42,7 @@ def build_time(dimensions, jobs):
     start = time.perf_counter()
     subprocess.run(["cmake", "--build", tree, "-j%d" % jobs, "--target",
                     "contact"], check=True, stdout=subprocess.DEVNULL,
-                   env=environment)
+                   stderr=subprocess.DEVNULL, env=environment)
     return time.perf_counter() - start
 
 

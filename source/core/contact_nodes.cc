@@ -30,8 +30,10 @@ namespace Contact
   // of basis, only the components that represent it do.
   namespace
   {
-    std::array<Tensor<1, 2>, 1> tangent_basis(const Tensor<1, 2> &normal,
-                                              const unsigned int = 0)
+    // Both overloads are [[maybe_unused]]: a build of one dimension
+    // (CONTACT_DIMENSIONS) calls one of them.
+    [[maybe_unused]] std::array<Tensor<1, 2>, 1>
+    tangent_basis(const Tensor<1, 2> &normal, const unsigned int = 0)
     {
       return {{Tensor<1, 2>({-normal[1], normal[0]})}};
     }
@@ -39,8 +41,8 @@ namespace Contact
     // `preferred`: the axis least aligned with all of Gamma_3's normals,
     // so that t_1 is the same direction along a curved Gamma_3 (the axis
     // of a tube), where it is not too close to this node's normal.
-    std::array<Tensor<1, 3>, 2> tangent_basis(const Tensor<1, 3> &normal,
-                                              const unsigned int  preferred = 3)
+    [[maybe_unused]] std::array<Tensor<1, 3>, 2>
+    tangent_basis(const Tensor<1, 3> &normal, const unsigned int preferred = 3)
     {
       unsigned int axis = 0;
       for (unsigned int d = 1; d < 3; ++d)
