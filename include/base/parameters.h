@@ -254,7 +254,8 @@ namespace Contact
      * fields above (in the subsection, after the shared entries) and
      * checks them. Each geometry registers its own from its file
      * (register_entries(), while the shared library is loaded), so that
-     * the parameters do not depend on the geometries.
+     * the parameters declare and check no entry of a geometry; only the
+     * fields that hold their values are here.
      */
     struct Entries
     {

@@ -203,7 +203,7 @@ namespace Contact
 
   /**
    * The postprocessors of every run, by rank: a postprocessor's file
-   * registers it for both dimensions with a static
+   * registers it for every compiled dimension with a static
    *   const PostprocessorRegistration<Class> registration(rank);
    * and ContactProblem::run() creates one of each (a class that is not
    * wanted by the parameters is created all the same and does nothing).

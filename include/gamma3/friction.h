@@ -269,19 +269,18 @@ namespace Contact
    * the true slope, a node just entering slip is pulled back towards
    * stick); once the sets repeat after a full step and max |F_p| is below
    * a tenth of max_p g_p(0), the true slope takes over for the quadratic
-   * convergence (never with law.cap_throughout). A step that does not lower E is halved up to three times; if
-   * that fails, the other model (capped or true slope) is tried from the same
-   * iterate (a failed true step also halves the residual below which the
-   * true slope is taken again), and if both fail a convexification step
-   * is taken instead (the Tresca problem with the
-   * bounds of the current slip rates), which lowers E because j is concave
-   * along |v| (a majorisation).
-   * Every step after the first does not raise E; a saddle of E is not
-   * excluded (doc/algorithm.md). (eta, v) on entry are the
-   * previous step's forces and slip velocities, and the first Newton step
-   * is taken from their linearisation (the previous step's active set),
-   * without a solve to make v consistent with eta. It stops when the sets
-   * repeat and max |F_p| <= friction_residual_tolerance max_p g_p(0).
+   * convergence (never with law.cap_throughout). A step that does not lower E
+   * is halved up to three times; if that fails, the other model (capped or true
+   * slope; not with law.cap_throughout) is tried from the same iterate (a
+   * failed true step also halves the residual below which the true slope is
+   * taken again), and if both fail a convexification step is taken instead (the
+   * Tresca problem with the bounds of the current slip rates), which lowers E
+   * because j is concave along |v| (a majorisation). Every step after the first
+   * does not raise E; a saddle of E is not excluded (doc/algorithm.md). (eta,
+   * v) on entry are the previous step's forces and slip velocities, and the
+   * first Newton step is taken from their linearisation (the previous step's
+   * active set), without a solve to make v consistent with eta. It stops when
+   * the sets repeat and max |F_p| <= friction_residual_tolerance max_p g_p(0).
    */
   FrictionNewtonResult
   solve_friction_newton(const TrescaVelocity   &velocity,

@@ -8,7 +8,7 @@
  * file'.
  *
  * A new geometry: its class (a header and a .cc file here, with its
- * entries; the .cc file in the library's list in CMakeLists.txt), its
+ * entries; CMakeLists.txt compiles every .cc file of source/geometry/), its
  * enumerator and name in GeometryParameters::Domain and
  * GeometryParameters::domains(), its line in create_geometry(), and, if it
  * has entries of its own, their fields in GeometryParameters (where the

@@ -633,7 +633,9 @@ namespace Contact
         friction_methods().pattern(),
         "How the nonmonotone friction problem of a step is solved. Newton: "
         "a semismooth Newton method on the full law, with the derivative of "
-        "the friction coefficient in its Jacobian, a line search on the "
+        "the friction coefficient in its Jacobian (on the constraints path "
+        "capped below the convexity limit, so that its matrix stays "
+        "positive definite), a line search on the "
         "step's energy, and a convexification step (a Tresca problem) where "
         "the Newton step does not lower it (the step problem is not convex "
         "there); it starts from the previous step's forces and stick/slip "

@@ -312,7 +312,8 @@ namespace Contact
   // velocities and sets. It returns false, with the state of the step
   // untouched, if it does not converge. Far from the solution its model
   // caps the weakening at 0.9 times the convexity limit, where the model is
-  // still convex (friction.h).
+  // still convex (friction.h); on a path whose solver needs a positive
+  // definite matrix (the constraints path) it keeps the cap throughout.
   template <int dim>
   bool FrictionSolver<dim>::solve_by_newton(StepStatistics &statistics)
   {

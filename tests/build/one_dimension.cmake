@@ -8,7 +8,9 @@
 # What it prints is compared with one_dimension.output.
 #
 # Called as  cmake -DSOURCE_DIR=... -DBINARY_DIR=... -DDIMENSION=2
-#                  -DEXPECTED=... -P one_dimension.cmake
+#                  -DEXPECTED=... -DGENERATOR=... -DDEAL_II_DIR=...
+#                  -DCXX_COMPILER=... -P one_dimension.cmake
+# (the generator, deal.II and the compiler of the build that runs it).
 
 if(DIMENSION STREQUAL "2")
   set(other 3)
@@ -18,8 +20,9 @@ endif()
 set(tree ${BINARY_DIR}/one-dimension-${DIMENSION})
 
 execute_process(
-  COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${tree}
+  COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${tree} -G "${GENERATOR}"
     -DCMAKE_BUILD_TYPE=Release -DCONTACT_DIMENSIONS=${DIMENSION}
+    -Ddeal.II_DIR=${DEAL_II_DIR} -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
   RESULT_VARIABLE status OUTPUT_VARIABLE log ERROR_VARIABLE log)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "Configuring for dimension ${DIMENSION} failed:\n${log}")
