@@ -11,23 +11,13 @@ default's.
 """
 import argparse
 import os
-import platform
 import shutil
 import subprocess
 import time
 
+from compare_revisions import machine
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-
-
-def machine():
-    cpu = "unknown CPU"
-    with open("/proc/cpuinfo") as info:
-        for line in info:
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
-    return "%s, %d cores, Linux %s, load average %.2f at the start" % (
-        cpu, os.cpu_count(), platform.release(), os.getloadavg()[0])
 
 
 def build_time(dimensions, jobs):
@@ -50,7 +40,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--jobs", type=int, default=2)
     arguments = parser.parse_args()
-    print("Machine: " + machine())
+    print(machine())
     print("Build of `contact` (Release, -j%d, no ccache), wall time:"
           % arguments.jobs)
     times = {}
