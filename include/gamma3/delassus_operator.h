@@ -75,6 +75,12 @@ namespace Contact
                      Vector<double>                       &v,
                      const Form form = Form::smaller) const;
 
+    /** The curvature test of friction.h: whether the Hessian of E on the
+     *  slip set of this linearisation (with the true slopes) is positive
+     *  definite. */
+    Curvature curvature_on_slip_set(
+      const std::vector<NodeLinearisation> &linearisation) const;
+
     /** How many Newton steps' blocks were solved by GMRES preconditioned
      *  with the factor of an earlier block. */
     unsigned int preconditioned_solves() const;

@@ -27,8 +27,13 @@ namespace Contact
   constexpr double energy_round_off = 1e-13;
   /** While the stick/slip sets still change, Newton's model caps the
    *  weakening at this fraction of the convexity limit, where the model is
-   *  convex. */
+   *  convex; below the same fraction a solution is a local minimum without
+   *  a test (the 10 % cover the error of the limit's Lanczos estimate). */
   constexpr double weakening_cap_fraction = 0.9;
+  /** The Armijo constant of the line search on E: a step of length t along
+   *  a direction with the directional derivative E' < 0 is accepted when E
+   *  decreases by at least sufficient_decrease t |E'|. */
+  constexpr double sufficient_decrease = 1e-4;
 
   /**
    * The slip threshold mu(s) S of (3.6) of the slip rate s = |w_tau|, for
@@ -64,6 +69,10 @@ namespace Contact
 
     /** lambda in H(mu)(c): the rate at which mu may decrease. */
     double one_sided_lipschitz_constant() const;
+
+    /** S lambda: the steepest weakening of the bound, max_s -d/ds S mu(s)
+     *  (0 without friction or for a rate independent law). */
+    double steepest_weakening() const;
 
   private:
     /** Shared with the parameters it was read from; immutable. */
@@ -185,6 +194,19 @@ namespace Contact
                        Vector<double>                       &eta,
                        Vector<double>                       &v)>;
 
+  /** Whether the Hessian of E on the slip set at a solution is positive
+   *  definite: the matrix of a Newton step for the linearisation with the
+   *  true slopes (stick nodes held at v_p = 0) is that Hessian, rotated.
+   *  `unknown` where the path cannot tell at a reasonable cost. */
+  enum class Curvature
+  {
+    positive,
+    not_positive,
+    unknown
+  };
+  using CurvatureTest =
+    std::function<Curvature(const std::vector<NodeLinearisation> &)>;
+
   /** v_free, formed when first asked for: on the constraints path it costs
    *  a solve with K that a step converging in one Newton step never needs
    *  (every sticking step). */
@@ -225,7 +247,15 @@ namespace Contact
      *  convergence where the true weakening is steeper than the cap. The
      *  fixed point is the same: the residual uses the true law. */
     bool cap_throughout = false;
+    /** 1 / lambda_max(M^{1/2} D M^{1/2}): E is convex while the weakening
+     *  per unit weight stays below it (friction_solver.cc); 0 where it is
+     *  not known, and nothing is then certified without the curvature
+     *  test. */
+    double convexity_limit = 0;
 
+    /** Whether E may be nonconvex: the steepest weakening of the law is not
+     *  below weakening_cap_fraction times the convexity limit. */
+    bool   may_be_nonconvex() const;
     double bound(const unsigned int p, const double s) const;
     double slope(const unsigned int p, const double s) const;
     /** E, and in scale the sum of its terms' sizes (for round-off). */
@@ -246,7 +276,17 @@ namespace Contact
      *  the active set iterations they took. */
     unsigned int convexification_steps = 0;
     unsigned int active_set_iterations = 0;
-    bool         converged             = false;
+    /** Converged to a solution of the law that is a local minimum of E:
+     *  below the convexity limit, or certified by the curvature test. */
+    bool converged = false;
+    /** At the solution some slip node weakens faster than
+     *  weakening_cap_fraction times the convexity limit: E is not convex
+     *  there, and the curvature test decided. */
+    bool beyond_convexity_limit = false;
+    /** The law holds, but the curvature test did not find a local minimum
+     *  (a saddle, or a path that cannot tell): converged is false, and the
+     *  caller takes another method. */
+    bool minimum_not_certified = false;
   };
 
   /**
@@ -263,28 +303,42 @@ namespace Contact
    * symmetric; it is indefinite where the step problem is not convex
    * (g_p' < 0 is the weakening). The solutions of the law are the
    * stationary points of the step's energy E (NodalLaw), and the
-   * globalisation keeps the iterates going down E. While the sets change,
-   * the model caps the weakening at law.weakening_cap (below the convexity
-   * limit the model is convex and its step a direction of descent; with
-   * the true slope, a node just entering slip is pulled back towards
-   * stick); once the sets repeat after a full step and max |F_p| is below
-   * a tenth of max_p g_p(0), the true slope takes over for the quadratic
-   * convergence (never with law.cap_throughout). A step that does not lower E
-   * is halved up to three times; if that fails, the other model (capped or true
-   * slope; not with law.cap_throughout) is tried from the same iterate (a
-   * failed true step also halves the residual below which the true slope is
-   * taken again), and if both fail a convexification step is taken instead (the
-   * Tresca problem with the bounds of the current slip rates), which lowers E
-   * because j is concave along |v| (a majorisation). Every step after the first
-   * does not raise E; a saddle of E is not excluded (doc/algorithm.md). (eta,
-   * v) on entry are the previous step's forces and slip velocities, and the
-   * first Newton step is taken from their linearisation (the previous step's
-   * active set), without a solve to make v consistent with eta. It stops when
-   * the sets repeat and max |F_p| <= friction_residual_tolerance max_p g_p(0).
+   * globalisation makes the method a descent method on E that ends on a
+   * local minimum:
+   * - While the sets change, the model caps the weakening at
+   *   law.weakening_cap (below the convexity limit the model is convex and
+   *   its step a direction of descent; with the true slope, a node just
+   *   entering slip is pulled back towards stick); once the sets repeat
+   *   after a full step and max |F_p| is below a tenth of max_p g_p(0), the
+   *   true slope takes over for the quadratic convergence (never with
+   *   law.cap_throughout).
+   * - A step is accepted on sufficient decrease of E (Armijo, with the
+   *   directional derivative of E, which is nonsmooth at stick nodes); it
+   *   is halved up to three times; if that fails, the other model (capped
+   *   or true slope; not with law.cap_throughout) is tried from the same
+   *   iterate (a failed true step also halves the residual below which the
+   *   true slope is taken again), and if both fail a convexification step
+   *   is taken instead (the Tresca problem with the bounds of the current
+   *   slip rates), which lowers E because j is concave along |v| (a
+   *   majorisation).
+   * - The first step starts from the previous step's forces, slip
+   *   velocities and sets (eta, v on entry). Where E may be nonconvex
+   *   (law.may_be_nonconvex()) it is compared, like every other step,
+   *   against E at the previous forces, whose velocity v_free - D eta costs
+   *   one application of D; where E is convex its one stationary point is
+   *   the minimiser whichever way it is reached, and a step that converges
+   *   at once never asks for v_free.
+   * - At a solution (the sets repeat and max |F_p| <=
+   *   friction_residual_tolerance max_p g_p(0)) where some slip node weakens
+   *   faster than weakening_cap_fraction times the convexity limit, the
+   *   curvature test decides whether it is a local minimum; if it is not
+   *   certified one, the result says so (minimum_not_certified) and is not
+   *   converged.
    */
   FrictionNewtonResult
   solve_friction_newton(const TrescaVelocity   &velocity,
                         const TrescaNewtonStep &newton_step,
+                        const CurvatureTest    &curvature,
                         const unsigned int      n_components,
                         const NodalLaw         &law,
                         const FreeVelocity     &v_free,

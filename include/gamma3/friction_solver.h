@@ -121,9 +121,14 @@ namespace Contact
     unsigned int cycles_cured               = 0;
     unsigned int step_cuts                  = 0;
     // The Newton method on the full law ('Solver/Friction method'): its
-    // iterations, and 1 where it failed and the convexification took over.
-    unsigned int newton_iterations = 0;
-    unsigned int newton_fallbacks  = 0;
+    // iterations; 1 where it ended with a slip node weakening beyond the
+    // convexity limit (E not convex there: the curvature test decided);
+    // 1 where the convexification took over, and of these 1 where Newton's
+    // end point was not certified as a local minimum of E.
+    unsigned int newton_iterations      = 0;
+    unsigned int beyond_convexity_limit = 0;
+    unsigned int newton_fallbacks       = 0;
+    unsigned int minima_not_certified   = 0;
     // Solves with K or a variant of it (a forward and a backward
     // substitution with the factor count as one), and CG iterations.
     unsigned int       solves_with_K  = 0;
@@ -142,7 +147,9 @@ namespace Contact
       cycles_cured += other.cycles_cured;
       step_cuts += other.step_cuts;
       newton_iterations += other.newton_iterations;
+      beyond_convexity_limit += other.beyond_convexity_limit;
       newton_fallbacks += other.newton_fallbacks;
+      minima_not_certified += other.minima_not_certified;
       solves_with_K += other.solves_with_K;
       cg_iterations += other.cg_iterations;
     }
@@ -243,6 +250,11 @@ namespace Contact
     {
       return false;
     }
+    /** The curvature test of friction.h: whether the matrix of a Newton
+     *  step for this linearisation (the Hessian of E on the slip set) is
+     *  positive definite. */
+    virtual Curvature curvature_on_slip_set(
+      const std::vector<NodeLinearisation> &linearisation) const = 0;
 
     /** Solves with K (or a variant) since the step began, and the wall time
      *  of the step's first solve (or its substitutions). */

@@ -136,6 +136,12 @@ namespace Contact
         delassus.vmult(y, x);
       }
 
+      Curvature curvature_on_slip_set(
+        const std::vector<NodeLinearisation> &linearisation) const override
+      {
+        return delassus.curvature_on_slip_set(linearisation);
+      }
+
       // Formed by begin_step(): every Newton step on D needs it.
       const Vector<double> &free_slip_velocity() override
       {
@@ -437,6 +443,16 @@ namespace Contact
       void begin_step(const VectorType &step_rhs,
                       const VectorType &last_velocity) override
       {
+        // D eta = v_free - v for the last step's final forces, if it
+        // formed its v_free (K does not change while the path lives).
+        if (v_free.size() > 0 && last_force.size() > 0)
+          {
+            last_step_force        = last_force;
+            delassus_of_last_force = v_free;
+            delassus_of_last_force -= last_slip_velocity;
+          }
+        else
+          last_step_force.reinit(0);
         recent_newton_solves.clear();
         rhs                        = step_rhs;
         start                      = last_velocity;
@@ -458,9 +474,18 @@ namespace Contact
         return v_free;
       }
 
+      // The last step's final forces (the start of Newton's method, whose
+      // energy it compares with where E may be nonconvex) cost no solve
+      // beyond v_free: D eta is known from that step.
       void velocity_of_force(const Vector<double> &eta,
                              Vector<double>       &v) override
       {
+        if (last_step_force.size() > 0 && eta == last_step_force)
+          {
+            v = free_slip_velocity();
+            v -= delassus_of_last_force;
+            return;
+          }
         VectorType w;
         velocity(eta, w);
         v = gamma3.tangential_velocities(w);
@@ -472,19 +497,24 @@ namespace Contact
 
       // (5.2) with the friction term C^T eta moved to the right-hand side,
       //   K w = step_rhs - C^T eta,
-      // or the velocity a recent Newton step found for these forces.
+      // or the velocity a recent Newton step found for these forces. The
+      // step's last call is for its final forces: they and their slip
+      // velocity are kept for the next step.
       void velocity(const Vector<double> &eta, VectorType &w) override
       {
+        last_force = eta;
         for (const auto &[newton_force, newton_velocity] : recent_newton_solves)
           if (newton_force == eta)
             {
-              w = newton_velocity;
+              w                  = newton_velocity;
+              last_slip_velocity = gamma3.tangential_velocities(w);
               return;
             }
         VectorType load(rhs);
         load.add(-1., gamma3.friction_load(eta));
         w = start;
         solve(factorization, w, load);
+        last_slip_velocity = gamma3.tangential_velocities(w);
       }
 
       void apply_delassus(const Vector<double> &x, Vector<double> &y) override
@@ -508,7 +538,38 @@ namespace Contact
         return true;
       }
 
+      // CHOLMOD factorises the Newton matrix only if it is positive
+      // definite, so a factorisation is the test; the other solvers (LU,
+      // CG) cannot tell.
+      Curvature curvature_on_slip_set(
+        const std::vector<NodeLinearisation> &linearisation) const override
+      {
+        if (!factorization.has_triangular_factor())
+          return Curvature::unknown;
+        MatrixType     matrix;
+        Vector<double> slip_force;
+        VectorType     load(rhs);
+        assemble_newton_system(linearisation, matrix, slip_force, load);
+        try
+          {
+            factorization.for_variant(matrix);
+          }
+        catch (const ExceptionBase &)
+          {
+            return Curvature::not_positive;
+          }
+        return Curvature::positive;
+      }
+
     private:
+      // The matrix and right-hand side of a Newton step (see newton_step())
+      // and the forces along zhat it puts on the slip nodes.
+      void assemble_newton_system(
+        const std::vector<NodeLinearisation> &linearisation,
+        MatrixType                           &matrix,
+        Vector<double>                       &slip_force,
+        VectorType                           &load) const;
+
       // w = K'^{-1} load for K or a variant K', counted, and timed if it is
       // the step's first solve.
       void solve(Factorization &solver, VectorType &w, const VectorType &load)
@@ -527,6 +588,10 @@ namespace Contact
       Vector<double>              v_free;
       // Where CG starts: w_{n-1}, then the newest Newton step's velocity.
       VectorType start;
+      // The forces of the last call of velocity() and their slip velocity;
+      // the last step's final forces and D times them.
+      Vector<double> last_force, last_slip_velocity;
+      Vector<double> last_step_force, delassus_of_last_force;
       // The forces and velocities of the step's last Newton steps: the
       // methods on Gamma_3 ask again for the velocity of forces a Newton
       // step gave (the final forces, the start of a convexification step),
@@ -553,15 +618,15 @@ namespace Contact
     // its tangents (the residual is C^T eta there and nothing else, since
     // only the node's own column of C^T has support at it).
     template <int dim>
-    void ActiveSetAsConstraints<dim>::newton_step(
+    void ActiveSetAsConstraints<dim>::assemble_newton_system(
       const std::vector<NodeLinearisation> &linearisation,
-      Vector<double>                       &eta,
-      Vector<double>                       &v)
+      MatrixType                           &matrix,
+      Vector<double>                       &slip_force,
+      VectorType                           &load) const
     {
       const unsigned int n = gamma3.nodes.size(), m = dim - 1;
-      MatrixType         matrix;
       matrix.copy_from(system_matrix);
-      Vector<double>                       slip_force(n * m);
+      slip_force.reinit(n * m);
       std::vector<bool>                    stick_dof(system_matrix.m());
       std::vector<types::global_dof_index> node_dofs(dim);
       for (unsigned int p = 0; p < n; ++p)
@@ -603,9 +668,22 @@ namespace Contact
         }
       matrix.compress(VectorOperation::add);
 
-      VectorType load(rhs);
       load.add(-1., gamma3.friction_load(slip_force));
       zero_rows_and_columns(stick_dof, matrix, load);
+    }
+
+
+    template <int dim>
+    void ActiveSetAsConstraints<dim>::newton_step(
+      const std::vector<NodeLinearisation> &linearisation,
+      Vector<double>                       &eta,
+      Vector<double>                       &v)
+    {
+      const unsigned int n = gamma3.nodes.size(), m = dim - 1;
+      MatrixType         matrix;
+      Vector<double>     slip_force;
+      VectorType         load(rhs);
+      assemble_newton_system(linearisation, matrix, slip_force, load);
 
       VectorType w(start);
       solve(*factorization.for_variant(matrix), w, load);

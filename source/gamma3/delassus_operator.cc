@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <numeric>
 
 extern "C" void dsymv_(const char   *uplo,
                        const int    *n,
@@ -386,9 +387,16 @@ namespace Contact
                         rhs,
                         FactorPreconditioner(
                           *last.factor, last.unknowns, unknowns, diagonal));
-            x = solution;
-            ++n_preconditioned_solves;
-            return;
+            // No GMRES iteration: the first guess (the current iterate)
+            // already met GMRES's absolute tolerance, which near the
+            // solution can be above what the Newton method needs; it would
+            // return the same iterate, so the block is factorised instead.
+            if (control.last_step() > 0)
+              {
+                x = solution;
+                ++n_preconditioned_solves;
+                return;
+              }
           }
         catch (const SolverControl::NoConvergence &)
           {
@@ -570,6 +578,92 @@ namespace Contact
           v[p * m + i] = 0.;
   }
 
+
+  // @sect4{The curvature test}
+
+  // The Hessian of E on the slip set, in the nodes' local bases, is the
+  // matrix of the velocity form, W'_UU + diag(sigma) with W = D^{-1}, U
+  // the unknowns whose velocity is not fixed and sigma = 0 where the force
+  // is. With T = (W'_UU)^{-1} = D'_UU - D'_UX D'_XX^{-1} D'_XU (X: the
+  // fixed velocities, the stick nodes), it is congruent to
+  // T + T diag(sigma) T, which needs D alone (W is not formed where D is
+  // ill-conditioned): one Cholesky factorisation decides.
+  Curvature DelassusOperator::curvature_on_slip_set(
+    const std::vector<NodeLinearisation> &linearisation) const
+  {
+    const unsigned int n = linearisation.size(), m = n_components;
+    AssertDimension(n * m, size());
+    std::vector<FullMatrix<double>> Q;
+    for (const NodeLinearisation &node : linearisation)
+      Q.push_back(local_basis(node));
+    std::vector<unsigned int> all(n * m);
+    std::iota(all.begin(), all.end(), 0u);
+    LAPACKFullMatrix<double> rotated(n * m, n * m);
+    fill_rotated_block(D, Q, all, rotated);
+    std::vector<double> rotated_diagonal(n * m);
+    for (unsigned int r = 0; r < n * m; ++r)
+      rotated_diagonal[r] = rotated(r, r);
+    const std::vector<LocalCondition> conditions =
+      local_conditions(linearisation, rotated_diagonal);
+    std::vector<unsigned int> U, X;
+    for (unsigned int r = 0; r < n * m; ++r)
+      (conditions[r].kind == LocalCondition::fixed_velocity ? X : U)
+        .push_back(r);
+    if (U.empty())
+      return Curvature::positive;
+
+    LAPACKFullMatrix<double> T(U.size(), U.size());
+    for (unsigned int a = 0; a < U.size(); ++a)
+      for (unsigned int b = 0; b < U.size(); ++b)
+        T(a, b) = rotated(U[a], U[b]);
+    if (!X.empty())
+      {
+        LAPACKFullMatrix<double> fixed(X.size(), X.size());
+        for (unsigned int i = 0; i < X.size(); ++i)
+          for (unsigned int j = 0; j < X.size(); ++j)
+            fixed(i, j) = rotated(X[i], X[j]);
+        fixed.set_property(LAPACKSupport::symmetric);
+        try
+          {
+            fixed.compute_cholesky_factorization();
+          }
+        catch (const ExceptionBase &)
+          {
+            return Curvature::unknown;
+          }
+        Vector<double> column(X.size());
+        for (unsigned int b = 0; b < U.size(); ++b)
+          {
+            for (unsigned int i = 0; i < X.size(); ++i)
+              column[i] = rotated(X[i], U[b]);
+            fixed.solve(column);
+            for (unsigned int a = 0; a < U.size(); ++a)
+              for (unsigned int i = 0; i < X.size(); ++i)
+                T(a, b) -= rotated(U[a], X[i]) * column[i];
+          }
+      }
+
+    LAPACKFullMatrix<double> T_sigma(U.size(), U.size()),
+      hessian(U.size(), U.size());
+    for (unsigned int a = 0; a < U.size(); ++a)
+      for (unsigned int b = 0; b < U.size(); ++b)
+        T_sigma(a, b) = T(a, b) * conditions[U[b]].sigma;
+    T_sigma.mmult(hessian, T);
+    for (unsigned int a = 0; a < U.size(); ++a)
+      for (unsigned int b = 0; b <= a; ++b)
+        hessian(a, b) = hessian(b, a) =
+          0.5 * (T(a, b) + T(b, a) + hessian(a, b) + hessian(b, a));
+    hessian.set_property(LAPACKSupport::symmetric);
+    try
+      {
+        hessian.compute_cholesky_factorization();
+      }
+    catch (const ExceptionBase &)
+      {
+        return Curvature::not_positive;
+      }
+    return Curvature::positive;
+  }
 
   TrescaResult solve_tresca(const DelassusOperator &D,
                             const Vector<double>   &v_free,

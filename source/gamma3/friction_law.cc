@@ -72,6 +72,11 @@ namespace Contact
     return rate_independent ? 0. : law->one_sided_lipschitz_constant();
   }
 
+  double FrictionLaw::steepest_weakening() const
+  {
+    return frictionless ? 0. : S * one_sided_lipschitz_constant();
+  }
+
 
   // @sect3{Anderson acceleration}
 
@@ -378,6 +383,12 @@ namespace Contact
   } // namespace
 
 
+  bool NodalLaw::may_be_nonconvex() const
+  {
+    return !(law.steepest_weakening() <
+             weakening_cap_fraction * convexity_limit);
+  }
+
   double NodalLaw::bound(const unsigned int p, const double s) const
   {
     return weights[p] * law.bound(s);
@@ -406,12 +417,39 @@ namespace Contact
 
   namespace
   {
+    // The directional derivative E'(v; dv) of E at an iterate (eta, v) with
+    // v = v_free - D eta, whose quadratic term has the gradient
+    // D^{-1} (v - v_free) = -eta: where v_p != 0 the potential contributes
+    // g_p(|v_p|) v_p / |v_p| . dv_p, where v_p = 0 its kink g_p(0) |dv_p|.
+    double directional_derivative(const unsigned int    m,
+                                  const NodalLaw       &law,
+                                  const Vector<double> &eta,
+                                  const Vector<double> &v,
+                                  const Vector<double> &dv)
+    {
+      double derivative = 0;
+      for (unsigned int p = 0; p < law.weights.size(); ++p)
+        {
+          const double s = node_norm(v, p, m);
+          for (unsigned int i = 0; i < m; ++i)
+            derivative -= eta[p * m + i] * dv[p * m + i];
+          if (s > 0)
+            for (unsigned int i = 0; i < m; ++i)
+              derivative += law.bound(p, s) * v[p * m + i] / s * dv[p * m + i];
+          else
+            derivative += law.bound(p, 0.) * node_norm(dv, p, m);
+        }
+      return derivative;
+    }
+
     // Backtracking on E from (eta, v) towards the Newton iterate
     // (new_eta, new_v), which (eta, v) move to together, v = v_free - D eta
     // being affine in eta, so that a shorter step costs no solve: halved at
     // most three times (a third halving saves convexification steps, a
-    // fourth was never taken in the 3D scenes). Returns the step length, 0
-    // if E did not decrease.
+    // fourth was never taken in the 3D scenes). A length t is accepted on
+    // sufficient decrease, E(t) <= E(0) + sufficient_decrease t min(E', 0)
+    // up to the round-off of E (near the solution the decrease is below
+    // it). Returns the step length, 0 if none was accepted.
     double backtrack(const NodalLaw       &law,
                      const Vector<double> &v_free,
                      const Vector<double> &eta,
@@ -421,13 +459,19 @@ namespace Contact
                      Vector<double>       &new_v,
                      double               &new_energy)
     {
+      const unsigned int m = v.size() / law.weights.size();
+      Vector<double>     dv(new_v);
+      dv -= v;
+      const double descent =
+        std::min(directional_derivative(m, law, eta, v, dv), 0.);
       double     scale = 0;
       const auto full_eta(new_eta), full_v(new_v);
-      const auto lowered = [&]() {
+      const auto sufficient = [&](const double length) {
         new_energy = law.energy(v_free, new_eta, new_v, scale);
-        return new_energy <= energy + energy_round_off * scale;
+        return new_energy <= energy + sufficient_decrease * length * descent +
+                               energy_round_off * scale;
       };
-      if (lowered())
+      if (sufficient(1.))
         return 1.;
       for (double length = 0.5; length > 0.1; length /= 2)
         {
@@ -435,10 +479,36 @@ namespace Contact
           new_eta.add(length, full_eta, -length, eta);
           new_v = v;
           new_v.add(length, full_v, -length, v);
-          if (lowered())
+          if (sufficient(length))
             return length;
         }
       return 0.;
+    }
+
+    // Whether a solution is a local minimum of E: certified without a test
+    // where every slip node weakens slower than weakening_cap_fraction
+    // times the convexity limit (friction_solver.cc), by the curvature test
+    // on the Hessian otherwise.
+    void test_second_order(const unsigned int    m,
+                           const NodalLaw       &law,
+                           const CurvatureTest  &curvature,
+                           const Vector<double> &c,
+                           const Vector<double> &eta,
+                           const Vector<double> &v,
+                           FrictionNewtonResult &result)
+    {
+      const auto linearisation = linearise_law(m, eta, v, law, c, false);
+      for (unsigned int p = 0; p < linearisation.size(); ++p)
+        {
+          const double weakening = -linearisation[p].slope;
+          if (linearisation[p].state == NodeState::slip && weakening > 0 &&
+              !(weakening <
+                weakening_cap_fraction * law.convexity_limit * law.weights[p]))
+            result.beyond_convexity_limit = true;
+        }
+      result.converged = !result.beyond_convexity_limit ||
+                         curvature(linearisation) == Curvature::positive;
+      result.minimum_not_certified = !result.converged;
     }
   } // namespace
 
@@ -446,6 +516,7 @@ namespace Contact
   FrictionNewtonResult
   solve_friction_newton(const TrescaVelocity   &velocity,
                         const TrescaNewtonStep &newton_step,
+                        const CurvatureTest    &curvature,
                         const unsigned int      m,
                         const NodalLaw         &law,
                         const FreeVelocity     &v_free,
@@ -468,12 +539,16 @@ namespace Contact
     // Whether the model may switch to the true slope.
     const bool may_uncap = has_cap && !law.cap_throughout;
 
-    // The first step is taken from the previous step's state, which belongs
-    // to another v_free: its energy is not compared. The energy of the
-    // first iterate is only formed if a second step needs it, so that a
-    // step converging at once never asks for v_free.
-    auto           linearisation = linearise_law(m, eta, v, law, c, capped);
-    double         energy        = std::numeric_limits<double>::quiet_NaN();
+    // The first step is taken from the linearisation at the previous
+    // step's state. Where E may be nonconvex it is also compared against E
+    // at the previous forces with this step's v_free; elsewhere the energy
+    // is only formed if a second step needs it, so that a step converging
+    // at once never asks for v_free.
+    auto       linearisation = linearise_law(m, eta, v, law, c, capped);
+    double     energy        = std::numeric_limits<double>::quiet_NaN();
+    const bool compare_first = law.may_be_nonconvex();
+    if (compare_first)
+      velocity(eta, v);
     Vector<double> new_eta(eta), new_v(v);
     // The model switches to the true slope once the sets repeat after a
     // full step and the residual is below uncap_below. Where neither model
@@ -490,7 +565,7 @@ namespace Contact
         new_v   = v;
         newton_step(linearisation, new_eta, new_v);
         double scale = 0, new_energy = energy, length = 1.;
-        if (result.iterations > 1)
+        if (result.iterations > 1 || compare_first)
           {
             if (std::isnan(energy))
               energy = law.energy(v_free(), eta, v, scale);
@@ -553,7 +628,7 @@ namespace Contact
         const bool sets_repeat = set_signature(linearisation) == previous_sets;
         if (sets_repeat && residual <= tolerance)
           {
-            result.converged = true;
+            test_second_order(m, law, curvature, c, eta, v, result);
             break;
           }
         if (may_uncap && capped && sets_repeat && length == 1. &&

@@ -310,25 +310,32 @@ namespace Contact
 
   // Newton's method on the full law from the previous step's forces, slip
   // velocities and sets. It returns false, with the state of the step
-  // untouched, if it does not converge. Far from the solution its model
-  // caps the weakening at 0.9 times the convexity limit, where the model is
-  // still convex (friction.h); on a path whose solver needs a positive
-  // definite matrix (the constraints path) it keeps the cap throughout.
+  // untouched, if it does not converge or ends on a point that its
+  // curvature test does not certify as a local minimum of E (friction.h).
+  // Far from the solution its model caps the weakening at 0.9 times the
+  // convexity limit, where the model is still convex; on a path whose
+  // solver needs a positive definite matrix (the constraints path) it keeps
+  // the cap throughout.
   template <int dim>
   bool FrictionSolver<dim>::solve_by_newton(StepStatistics &statistics)
   {
     Vector<double> eta(current.friction_force), v(current.slip_velocity);
     std::vector<NodeState> state;
     const auto [velocity_of_force, newton_step] = path_operators();
-    const FrictionNewtonResult result           = solve_friction_newton(
+    NodalLaw law{friction_law,
+                 solver_weights,
+                 weakening_cap_fraction * convexity_limit,
+                 path->needs_definite_newton_matrix()};
+    law.convexity_limit               = convexity_limit;
+    const FrictionNewtonResult result = solve_friction_newton(
       velocity_of_force,
       newton_step,
+      [this](const std::vector<NodeLinearisation> &linearisation) {
+        return path->curvature_on_slip_set(linearisation);
+      },
       dim - 1,
-      NodalLaw{friction_law,
-               solver_weights,
-               weakening_cap_fraction * convexity_limit,
-               path->needs_definite_newton_matrix()},
-      [this]() -> const Vector<double>           &{ return path->free_slip_velocity(); },
+      law,
+      [this]() -> const Vector<double> & { return path->free_slip_velocity(); },
       active_set_parameter,
       parameters.solver.max_newton_iterations,
       parameters.solver.max_active_set_iterations,
@@ -338,9 +345,11 @@ namespace Contact
     statistics.convexification_iterations += result.convexification_steps;
     statistics.active_set_iterations += result.active_set_iterations;
     statistics.newton_iterations += result.iterations;
+    statistics.beyond_convexity_limit += result.beyond_convexity_limit;
     if (!all_processes(result.converged))
       {
         ++statistics.newton_fallbacks;
+        statistics.minima_not_certified += result.minimum_not_certified;
         return false;
       }
     current.friction_force = eta;

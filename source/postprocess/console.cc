@@ -221,8 +221,12 @@ namespace Contact
                     << totals.newton_iterations << " iterations, "
                     << std::setprecision(3)
                     << static_cast<double>(totals.newton_iterations) / n_steps
-                    << " per step; the convexification took over in "
-                    << totals.newton_fallbacks << " steps." << std::endl;
+                    << " per step; " << totals.beyond_convexity_limit
+                    << " steps ended beyond the convexity limit (the "
+                    << "curvature test decided); the convexification took "
+                    << "over in " << totals.newton_fallbacks << " steps ("
+                    << totals.minima_not_certified
+                    << " not certified a local minimum)." << std::endl;
     this->pcout() << "Solves with K per step: " << std::setprecision(3)
                   << static_cast<double>(totals.solves_with_K) / n_steps
                   << std::endl;
@@ -250,7 +254,8 @@ namespace Contact
     archive &totals.convexification_iterations &totals.active_set_iterations;
     archive &totals.rejected_accelerations &totals.cycles_cured;
     archive &totals.step_cuts &totals.newton_iterations;
-    archive &totals.newton_fallbacks &totals.solves_with_K;
+    archive &totals.beyond_convexity_limit &totals.newton_fallbacks;
+    archive &totals.minima_not_certified &totals.solves_with_K;
     archive &totals.cg_iterations &report_times;
   }
 

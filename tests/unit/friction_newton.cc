@@ -102,8 +102,9 @@ FrictionLaw make_friction_law(const Law &law)
 }
 
 // Newton's method on the full law from eta = 0, v = v_free, with unit
-// weights and the given Newton step.
-FrictionNewtonResult solve_from_rest(const FullMatrix<double> &D,
+// weights, the given Newton step and the curvature test on D.
+FrictionNewtonResult solve_from_rest(const DelassusOperator   &delassus,
+                                     const FullMatrix<double> &D,
                                      const unsigned int        m,
                                      const Vector<double>     &v_free,
                                      const FrictionLaw        &friction_law,
@@ -119,14 +120,27 @@ FrictionNewtonResult solve_from_rest(const FullMatrix<double> &D,
   };
   Vector<double> weights(c.size());
   weights = 1.;
+  // The convexity limit 1 / lambda_max(D) (unit weights), as the program
+  // gives it to the method.
+  LAPACKFullMatrix<double> eigen(D.m(), D.n());
+  eigen = D;
+  eigen.compute_eigenvalues();
+  double largest = 0;
+  for (unsigned int r = 0; r < D.m(); ++r)
+    largest = std::max(largest, eigen.eigenvalue(r).real());
+  NodalLaw law{friction_law, weights};
+  law.convexity_limit = 1. / largest;
   eta.reinit(v_free.size());
   v = v_free;
   std::vector<NodeState> state;
   return solve_friction_newton(
     velocity,
     step,
+    [&](const std::vector<NodeLinearisation> &linearisation) {
+      return delassus.curvature_on_slip_set(linearisation);
+    },
     m,
-    NodalLaw{friction_law, weights},
+    law,
     [&]() -> const Vector<double> & { return v_free; },
     c,
     200,
@@ -166,7 +180,8 @@ void check(const std::string    &name,
               }
           delassus.newton_step(used, v_free, eta, v);
         };
-      return solve_from_rest(D, m, v_free, friction_law, c, step, eta, v);
+      return solve_from_rest(
+        delassus, D, m, v_free, friction_law, c, step, eta, v);
     };
 
   Vector<double>             eta, v;
@@ -289,7 +304,8 @@ void check_factor_reuse()
   const FrictionLaw friction_law = make_friction_law(law);
   const auto        solve =
     [&](const TrescaNewtonStep &step, Vector<double> &eta, Vector<double> &v) {
-      return solve_from_rest(D, m, v_free, friction_law, c, step, eta, v);
+      return solve_from_rest(
+        delassus, D, m, v_free, friction_law, c, step, eta, v);
     };
 
   Vector<double>             eta, v, eta_factorised, v_factorised;

@@ -1,0 +1,230 @@
+/* Newton's method on the full law must end on a local minimum of the step
+   energy E, not on a saddle. A 3-node chain (the Delassus operator of
+   make_delassus.h, one tangential component per node) with the slip rate
+   weakening law well beyond the convexity limit has stationary points of E
+   with a node slipping slowly and negative curvature of E along its slip.
+   From 2000 random starts (forces and velocities of a previous step, a
+   random v_free) per case, an independent check (the smallest eigenvalue of
+   the reduced Hessian W_SS + diag(g'(s_p)) on the slip set S, W = D^{-1})
+   looks at every end point:
+   - with the curvature test replaced by one that certifies every point,
+     some starts end on a saddle (what the test must catch);
+   - with the curvature test of DelassusOperator none does: every start
+     either converges to a local minimum or is handed back unconverged, and
+     few are handed back;
+   - the convexification (the program's fallback) from a handed-back start
+     ends on a local minimum. */
+
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <gamma3/delassus_operator.h>
+#include <gamma3/friction.h>
+#include <base/parameters.h>
+
+#include "make_delassus.h"
+
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+
+using namespace Contact;
+
+namespace
+{
+  // A deterministic uniform number in [lower, upper): a linear congruential
+  // generator written out, so that the starts are the same with every
+  // standard library.
+  struct Random
+  {
+    std::uint64_t state = 12345;
+    double        operator()(const double lower, const double upper)
+    {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      return lower + (upper - lower) * static_cast<double>(state >> 11) /
+                       9007199254740992.;
+    }
+  };
+
+  FrictionLaw make_law(const double alpha)
+  {
+    ParameterHandler prm;
+    FrictionParameters::declare_parameters(prm);
+    prm.enter_subsection(FrictionLaws::subsection);
+    prm.set("Friction law", "slip rate weakening");
+    prm.set("Friction bound S", 1.);
+    prm.set("a", 1.);
+    prm.set("b", 0.5);
+    prm.set("alpha", alpha);
+    prm.leave_subsection();
+    FrictionParameters parameters;
+    parameters.parse_parameters(prm);
+    return FrictionLaw(parameters);
+  }
+
+  // The smallest eigenvalue of W_SS + diag(g'(|v_p|)) on the slip set: the
+  // Hessian of E restricted to the stick nodes' v_p = 0 (m = 1).
+  double smallest_curvature(const LAPACKFullMatrix<double> &W,
+                            const FrictionLaw              &law,
+                            const Vector<double>           &v)
+  {
+    std::vector<unsigned int> slip;
+    for (unsigned int p = 0; p < v.size(); ++p)
+      if (v[p] != 0.)
+        slip.push_back(p);
+    if (slip.empty())
+      return std::numeric_limits<double>::infinity();
+    LAPACKFullMatrix<double> H(slip.size(), slip.size());
+    for (unsigned int a = 0; a < slip.size(); ++a)
+      {
+        for (unsigned int b = 0; b < slip.size(); ++b)
+          H(a, b) = W(slip[a], slip[b]);
+        H(a, a) += law.bound_derivative(std::abs(v[slip[a]]));
+      }
+    H.compute_eigenvalues();
+    double smallest = std::numeric_limits<double>::infinity();
+    for (unsigned int a = 0; a < slip.size(); ++a)
+      smallest = std::min(smallest, H.eigenvalue(a).real());
+    return smallest;
+  }
+
+  // The convexification as the program runs it after Newton hands a step
+  // back: Tresca problems with the bounds of the last slip rates, from the
+  // previous step's forces and slip rates, until the rates stop changing.
+  void convexify(const DelassusOperator &delassus,
+                 const FrictionLaw      &law,
+                 const Vector<double>   &v_free,
+                 const Vector<double>   &c,
+                 Vector<double>         &eta,
+                 Vector<double>         &v)
+  {
+    Vector<double>         bounds(v.size());
+    std::vector<NodeState> state;
+    for (unsigned int iteration = 0; iteration < 1000; ++iteration)
+      {
+        const Vector<double> old_v(v);
+        for (unsigned int p = 0; p < v.size(); ++p)
+          bounds[p] = law.bound(std::abs(v[p]));
+        solve_tresca(delassus, v_free, bounds, c, 500, eta, v, state);
+        Vector<double> change(v);
+        change -= old_v;
+        if (change.linfty_norm() <= 1e-13 * v_free.linfty_norm())
+          return;
+      }
+  }
+
+  struct Counts
+  {
+    unsigned int converged = 0, not_minimum = 0, handed_back = 0,
+                 fallback_not_minimum = 0;
+  };
+
+  Counts run_starts(const double alpha,
+                    const bool   capped,
+                    const bool   with_curvature_test)
+  {
+    const unsigned int       n = 3;
+    const FullMatrix<double> D = make_delassus(n, 1);
+    const DelassusOperator   delassus(D, 1);
+    LAPACKFullMatrix<double> W(n, n);
+    W = D;
+    W.invert();
+    // 1 / lambda_max(D) with unit weights.
+    LAPACKFullMatrix<double> eigen(n, n);
+    eigen = D;
+    eigen.compute_eigenvalues();
+    double largest = 0;
+    for (unsigned int p = 0; p < n; ++p)
+      largest = std::max(largest, eigen.eigenvalue(p).real());
+
+    const FrictionLaw law = make_law(alpha);
+    Vector<double>    weights(n), c(n);
+    weights = 1.;
+    for (unsigned int p = 0; p < n; ++p)
+      c[p] = 0.05 / D(p, p);
+    NodalLaw nodal_law{law, weights};
+    nodal_law.convexity_limit = 1. / largest;
+    if (capped)
+      nodal_law.weakening_cap = weakening_cap_fraction / largest;
+
+    Random random;
+    Counts counts;
+    for (unsigned int start = 0; start < 2000; ++start)
+      {
+        Vector<double> v_free(n), eta(n), v(n);
+        for (unsigned int p = 0; p < n; ++p)
+          {
+            v_free[p] = random(-0.5, 0.5);
+            eta[p]    = random(-1., 1.);
+            v[p]      = random(-0.1, 0.1);
+          }
+        const Vector<double>       start_eta(eta), start_v(v);
+        std::vector<NodeState>     state;
+        const FrictionNewtonResult result = solve_friction_newton(
+          [&](const Vector<double> &force, Vector<double> &velocity) {
+            delassus.vmult(velocity, force);
+            velocity.sadd(-1., 1., v_free);
+          },
+          [&](const std::vector<NodeLinearisation> &linearisation,
+              Vector<double>                       &force,
+              Vector<double>                       &velocity) {
+            delassus.newton_step(linearisation, v_free, force, velocity);
+          },
+          [&](const std::vector<NodeLinearisation> &linearisation) {
+            return with_curvature_test ?
+                     delassus.curvature_on_slip_set(linearisation) :
+                     Curvature::positive;
+          },
+          1,
+          nodal_law,
+          [&]() -> const Vector<double> & { return v_free; },
+          c,
+          200,
+          500,
+          eta,
+          v,
+          state);
+        if (result.converged)
+          {
+            ++counts.converged;
+            if (smallest_curvature(W, law, v) < 0.)
+              ++counts.not_minimum;
+          }
+        else if (result.minimum_not_certified)
+          {
+            ++counts.handed_back;
+            eta = start_eta;
+            v   = start_v;
+            convexify(delassus, law, v_free, c, eta, v);
+            if (smallest_curvature(W, law, v) < 0.)
+              ++counts.fallback_not_minimum;
+          }
+      }
+    return counts;
+  }
+
+  void run_case(const double alpha, const bool capped)
+  {
+    const Counts unchecked = run_starts(alpha, capped, false);
+    const Counts checked   = run_starts(alpha, capped, true);
+    std::cout << "alpha = " << alpha << (capped ? ", capped" : "")
+              << ": without the curvature test some starts end on a saddle: "
+              << (unchecked.not_minimum > 0 ? "yes" : "no")
+              << "; with it none does: "
+              << (checked.not_minimum == 0 ? "yes" : "no")
+              << ", every start converges or is handed back: "
+              << (checked.converged + checked.handed_back == 2000 ? "yes" :
+                                                                    "no")
+              << ", fewer than 1 % handed back: "
+              << (checked.handed_back < 20 ? "yes" : "no")
+              << ", the convexification from these ends on a minimum: "
+              << (checked.fallback_not_minimum == 0 ? "yes" : "no")
+              << std::endl;
+  }
+} // namespace
+
+int main()
+{
+  for (const double alpha : {5., 20., 50.})
+    run_case(alpha, false);
+  run_case(20., true);
+}
