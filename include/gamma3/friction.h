@@ -5,6 +5,8 @@
 #ifndef contact_friction_h
 #define contact_friction_h
 
+#include <deal.II/base/exceptions.h>
+
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -177,7 +179,18 @@ namespace Contact
      *  and force = g_p(s) - s g_p'(s) at the slip rate s of the iterate. */
     double force = 0;
     double slope = 0;
+    /** The steepest slope with which the Newton matrix is certainly
+     *  positive definite (the weakening cap of NodalLaw): a path whose
+     *  solver needs a definite matrix assembles max(slope, definite_slope)
+     *  and adds the rest as a low-rank correction. */
+    double definite_slope = -std::numeric_limits<double>::infinity();
   };
+
+  /** A Newton step's solver found its matrix not positive definite
+   *  (CHOLMOD refuses such a matrix): the Newton method on the full law
+   *  then counts the step as failed and tries another model. */
+  DeclExceptionMsg(ExcIndefiniteNewtonMatrix,
+                   "The matrix of a Newton step is not positive definite.");
 
   /** The orthonormal basis of a node's tangent plane in which the Newton
    *  step is diagonal: columns (zhat, zhat turned by 90 degrees) on slip
@@ -241,12 +254,6 @@ namespace Contact
      *  true slope throughout). Below the convexity limit of the step's
      *  problem it keeps the model convex. */
     double weakening_cap = std::numeric_limits<double>::infinity();
-    /** Keep the cap throughout, also near the solution: the Newton matrix
-     *  then stays positive definite (the constraints path, whose solver
-     *  needs that), at the price of a linear rather than quadratic
-     *  convergence where the true weakening is steeper than the cap. The
-     *  fixed point is the same: the residual uses the true law. */
-    bool cap_throughout = false;
     /** 1 / lambda_max(M^{1/2} D M^{1/2}): E is convex while the weakening
      *  per unit weight stays below it (friction_solver.cc); 0 where it is
      *  not known, and nothing is then certified without the curvature
@@ -310,17 +317,18 @@ namespace Contact
    *   its step a direction of descent; with the true slope, a node just
    *   entering slip is pulled back towards stick); once the sets repeat
    *   after a full step and max |F_p| is below a tenth of max_p g_p(0), the
-   *   true slope takes over for the quadratic convergence (never with
-   *   law.cap_throughout).
+   *   true slope takes over for the quadratic convergence.
    * - A step is accepted on sufficient decrease of E (Armijo, with the
-   *   directional derivative of E, which is nonsmooth at stick nodes); it
-   *   is halved up to three times; if that fails, the other model (capped
-   *   or true slope; not with law.cap_throughout) is tried from the same
-   *   iterate (a failed true step also halves the residual below which the
-   *   true slope is taken again), and if both fail a convexification step
-   *   is taken instead (the Tresca problem with the bounds of the current
-   *   slip rates), which lowers E because j is concave along |v| (a
-   *   majorisation).
+   *   directional derivative of E, which is nonsmooth at stick nodes;
+   *   plain decrease where that derivative is not negative); it is halved
+   *   up to three times; if that fails, the other model (capped or true
+   *   slope) is tried from the same iterate (a failed true step also halves
+   *   the residual below which the true slope is taken again), and if both
+   *   fail, or the step's solver refuses its matrix
+   *   (ExcIndefiniteNewtonMatrix: both models give it the same capped
+   *   matrix), a convexification step is taken instead (the Tresca problem
+   *   with the bounds of the current slip rates), which lowers E because j
+   *   is concave along |v| (a majorisation).
    * - The first step starts from the previous step's forces, slip
    *   velocities and sets (eta, v on entry). Where E may be nonconvex
    *   (law.may_be_nonconvex()) it is compared, like every other step,

@@ -243,18 +243,11 @@ namespace Contact
     virtual void apply_delassus(const Vector<double> &x, Vector<double> &y) = 0;
     /** What the summary prints about the path. */
     virtual std::string description() const = 0;
-    /** Whether newton_step() hands its matrix to a solver that needs it
-     *  positive definite (CHOLMOD, CG): then the Newton model keeps the
-     *  weakening below the convexity limit throughout (NodalLaw). */
-    virtual bool needs_definite_newton_matrix() const
-    {
-      return false;
-    }
     /** The curvature test of friction.h: whether the matrix of a Newton
      *  step for this linearisation (the Hessian of E on the slip set) is
      *  positive definite. */
     virtual Curvature curvature_on_slip_set(
-      const std::vector<NodeLinearisation> &linearisation) const = 0;
+      const std::vector<NodeLinearisation> &linearisation) = 0;
 
     /** Solves with K (or a variant) since the step began, and the wall time
      *  of the step's first solve (or its substitutions). */

@@ -137,7 +137,7 @@ namespace Contact
       }
 
       Curvature curvature_on_slip_set(
-        const std::vector<NodeLinearisation> &linearisation) const override
+        const std::vector<NodeLinearisation> &linearisation) override
       {
         return delassus.curvature_on_slip_set(linearisation);
       }
@@ -530,29 +530,24 @@ namespace Contact
         return "active set as constraints, one solve with K per Newton step";
       }
 
-      // K plus the springs of the slopes goes to CHOLMOD or CG: with the
-      // true slope of a weakening law it is indefinite wherever the step
-      // problem is not convex (CHOLMOD refuses it; CG would run on it).
-      bool needs_definite_newton_matrix() const override
-      {
-        return true;
-      }
-
-      // CHOLMOD factorises the Newton matrix only if it is positive
-      // definite, so a factorisation is the test; the other solvers (LU,
-      // CG) cannot tell.
+      // H is positive definite iff the capacitance matrix of its Woodbury
+      // form is (see definite_newton_system()): |B| solves with H_d.
       Curvature curvature_on_slip_set(
-        const std::vector<NodeLinearisation> &linearisation) const override
+        const std::vector<NodeLinearisation> &linearisation) override
       {
-        if (!factorization.has_triangular_factor())
-          return Curvature::unknown;
-        MatrixType     matrix;
-        Vector<double> slip_force;
-        VectorType     load(rhs);
-        assemble_newton_system(linearisation, matrix, slip_force, load);
+        const DefiniteNewtonSystem system =
+          definite_newton_system(linearisation);
+        if (system.steep.empty())
+          return Curvature::positive;
+        LAPACKFullMatrix<double> capacitance = system.capacitance;
+        for (unsigned int a = 0; a < capacitance.m(); ++a)
+          for (unsigned int b = 0; b < a; ++b)
+            capacitance(a, b) = capacitance(b, a) =
+              0.5 * (capacitance(a, b) + capacitance(b, a));
+        capacitance.set_property(LAPACKSupport::symmetric);
         try
           {
-            factorization.for_variant(matrix);
+            capacitance.compute_cholesky_factorization();
           }
         catch (const ExceptionBase &)
           {
@@ -563,12 +558,37 @@ namespace Contact
 
     private:
       // The matrix and right-hand side of a Newton step (see newton_step())
-      // and the forces along zhat it puts on the slip nodes.
+      // with every slope at least its definite_slope, the forces along
+      // zhat it puts on the slip nodes and the dofs it holds fixed.
       void assemble_newton_system(
         const std::vector<NodeLinearisation> &linearisation,
         MatrixType                           &matrix,
         Vector<double>                       &slip_force,
-        VectorType                           &load) const;
+        VectorType                           &load,
+        std::vector<bool>                    &stick_dof) const;
+
+      // The Newton matrix H_d with every slope at least definite_slope and
+      // its solver, and what the Woodbury form of the matrix H with the
+      // true slopes needs (see definite_newton_system()).
+      struct DefiniteNewtonSystem
+      {
+        // Held by address: CG's variant keeps a reference to it.
+        std::unique_ptr<MatrixType>    matrix;
+        std::unique_ptr<Factorization> solver;
+        Vector<double>                 slip_force;
+        VectorType                     load;
+        std::vector<unsigned int>      steep;
+        std::vector<VectorType>        responses;
+        LAPACKFullMatrix<double>       capacitance;
+      };
+      DefiniteNewtonSystem definite_newton_system(
+        const std::vector<NodeLinearisation> &linearisation);
+
+      // The slip velocities along zhat of the given nodes.
+      Vector<double>
+      velocity_along_slip(const std::vector<NodeLinearisation> &linearisation,
+                          const std::vector<unsigned int>      &nodes,
+                          const VectorType                     &w) const;
 
       // w = K'^{-1} load for K or a variant K', counted, and timed if it is
       // the step's first solve.
@@ -608,9 +628,11 @@ namespace Contact
     // - a slipping node carries the force (force_p + slope_p zhat.v) zhat
     //   (force_p = g_p, slope_p = 0 for the Tresca problem; the tangent of
     //   g_p(|v_p|) for the full law): a load force_p zhat and a spring
-    //   slope_p zhat zhat^T added to K at the node; in 3D also the condition
-    //   v.t = beta eta.t along the other tangent t = zhat turned by 90
-    //   degrees, i.e. eta.t = (v.t) / beta: a spring (1 / beta) t t^T.
+    //   slope_p zhat zhat^T added to K at the node (assembled with the
+    //   slope capped at definite_slope, so that the matrix stays positive
+    //   definite; definite_newton_system() adds the rest); in 3D also the
+    //   condition v.t = beta eta.t along the other tangent t = zhat turned
+    //   by 90 degrees, i.e. eta.t = (v.t) / beta: a spring (1 / beta) t t^T.
     // This is the system (D + beta)_FF eta_F = ... of the Delassus path
     // before the body's unknowns are eliminated, so both give the same
     // iterates. The friction force of a sticking node is then its reaction,
@@ -622,12 +644,13 @@ namespace Contact
       const std::vector<NodeLinearisation> &linearisation,
       MatrixType                           &matrix,
       Vector<double>                       &slip_force,
-      VectorType                           &load) const
+      VectorType                           &load,
+      std::vector<bool>                    &stick_dof) const
     {
       const unsigned int n = gamma3.nodes.size(), m = dim - 1;
       matrix.copy_from(system_matrix);
       slip_force.reinit(n * m);
-      std::vector<bool>                    stick_dof(system_matrix.m());
+      stick_dof.assign(system_matrix.m(), false);
       std::vector<types::global_dof_index> node_dofs(dim);
       for (unsigned int p = 0; p < n; ++p)
         {
@@ -656,7 +679,8 @@ namespace Contact
           for (unsigned int a = 0; a < dim; ++a)
             for (unsigned int b = 0; b < dim; ++b)
               {
-                spring(a, b) = slip.slope * directions[0][a] * directions[0][b];
+                spring(a, b) = std::max(slip.slope, slip.definite_slope) *
+                               directions[0][a] * directions[0][b];
                 if (m == 2)
                   spring(a, b) +=
                     directions[1][a] * directions[1][b] / slip.beta;
@@ -673,20 +697,125 @@ namespace Contact
     }
 
 
+    // The Newton matrix with the true slopes is H = H_d - Z Delta Z^T,
+    // where H_d (slopes capped at definite_slope) is positive definite, B
+    // are the slip nodes whose slope is steeper, Delta = diag(definite_slope
+    // - slope) on them and the column z_b of Z is the load of a unit force
+    // along zhat_b. By the Sherman-Morrison-Woodbury formula
+    //   H^{-1} load = w + Y (Delta^{-1} - Z^T Y)^{-1} Z^T w,
+    // w = H_d^{-1} load, Y = H_d^{-1} Z: |B| more solves, all with the
+    // positive definite H_d (never CG on an indefinite matrix), and Z^T w
+    // is the slip velocity along zhat. H is itself positive definite iff
+    // the capacitance matrix Delta^{-1} - Z^T Y is (Haynsworth's inertia
+    // formula for the block matrix [H_d, Z; Z^T, Delta^{-1}]); it is
+    // invertible unless H is singular. A solver that refuses H_d (CHOLMOD,
+    // if the convexity limit was overestimated by more than the cap's
+    // margin) throws ExcIndefiniteNewtonMatrix.
+    template <int dim>
+    typename ActiveSetAsConstraints<dim>::DefiniteNewtonSystem
+    ActiveSetAsConstraints<dim>::definite_newton_system(
+      const std::vector<NodeLinearisation> &linearisation)
+    {
+      const unsigned int   n = gamma3.nodes.size(), m = dim - 1;
+      DefiniteNewtonSystem system;
+      std::vector<bool>    stick_dof;
+      system.matrix = std::make_unique<MatrixType>();
+      system.load   = rhs;
+      assemble_newton_system(linearisation,
+                             *system.matrix,
+                             system.slip_force,
+                             system.load,
+                             stick_dof);
+      try
+        {
+          system.solver = factorization.for_variant(*system.matrix);
+        }
+      catch (const ExceptionBase &)
+        {
+          if (!factorization.has_triangular_factor())
+            throw;
+          throw ExcIndefiniteNewtonMatrix();
+        }
+
+      for (unsigned int p = 0; p < n; ++p)
+        if (linearisation[p].state == NodeState::slip &&
+            linearisation[p].bound > 0 &&
+            linearisation[p].slope < linearisation[p].definite_slope)
+          system.steep.push_back(p);
+      const unsigned int n_steep = system.steep.size();
+      system.responses.resize(n_steep);
+      system.capacitance.reinit(n_steep, n_steep);
+      for (unsigned int b = 0; b < n_steep; ++b)
+        {
+          const NodeLinearisation &node = linearisation[system.steep[b]];
+          Vector<double>           unit(n * m);
+          for (unsigned int i = 0; i < m; ++i)
+            unit[system.steep[b] * m + i] = node.direction[i];
+          VectorType load = gamma3.friction_load(unit);
+          for (const auto row : gamma3.locally_owned_dofs)
+            if (stick_dof[row])
+              load[row] = 0.;
+          load.compress(VectorOperation::insert);
+          system.responses[b].reinit(gamma3.locally_owned_dofs,
+                                     gamma3.mpi_communicator);
+          solve(*system.solver, system.responses[b], load);
+          const Vector<double> column =
+            velocity_along_slip(linearisation,
+                                system.steep,
+                                system.responses[b]);
+          for (unsigned int a = 0; a < n_steep; ++a)
+            system.capacitance(a, b) = -column[a];
+          system.capacitance(b, b) += 1. / (node.definite_slope - node.slope);
+        }
+      return system;
+    }
+
+
+    template <int dim>
+    Vector<double> ActiveSetAsConstraints<dim>::velocity_along_slip(
+      const std::vector<NodeLinearisation> &linearisation,
+      const std::vector<unsigned int>      &nodes,
+      const VectorType                     &w) const
+    {
+      const unsigned int   m        = dim - 1;
+      const Vector<double> velocity = gamma3.tangential_velocities(w);
+      Vector<double>       result(nodes.size());
+      for (unsigned int a = 0; a < nodes.size(); ++a)
+        for (unsigned int i = 0; i < m; ++i)
+          result[a] +=
+            linearisation[nodes[a]].direction[i] * velocity[nodes[a] * m + i];
+      return result;
+    }
+
+
     template <int dim>
     void ActiveSetAsConstraints<dim>::newton_step(
       const std::vector<NodeLinearisation> &linearisation,
       Vector<double>                       &eta,
       Vector<double>                       &v)
     {
-      const unsigned int n = gamma3.nodes.size(), m = dim - 1;
-      MatrixType         matrix;
-      Vector<double>     slip_force;
-      VectorType         load(rhs);
-      assemble_newton_system(linearisation, matrix, slip_force, load);
-
-      VectorType w(start);
-      solve(*factorization.for_variant(matrix), w, load);
+      const unsigned int    n = gamma3.nodes.size(), m = dim - 1;
+      DefiniteNewtonSystem  system     = definite_newton_system(linearisation);
+      const Vector<double> &slip_force = system.slip_force;
+      VectorType            w(start);
+      solve(*system.solver, w, system.load);
+      if (!system.steep.empty())
+        {
+          Vector<double> coefficients =
+            velocity_along_slip(linearisation, system.steep, w);
+          // Singular only where H is: no Newton step there.
+          try
+            {
+              system.capacitance.compute_lu_factorization();
+            }
+          catch (const ExceptionBase &)
+            {
+              throw ExcIndefiniteNewtonMatrix();
+            }
+          system.capacitance.solve(coefficients);
+          for (unsigned int b = 0; b < system.steep.size(); ++b)
+            w.add(coefficients[b], system.responses[b]);
+        }
       v = gamma3.tangential_velocities(w);
 
       VectorType residual(rhs);

@@ -226,6 +226,10 @@ namespace Contact
       explicit CholmodFactorization(const TrilinosWrappers::SparseMatrix &K)
       {
         cholmod_start(&common);
+        // Errors only: a matrix that is not positive definite is reported
+        // by the program (a Newton matrix of the constraints path is then
+        // refused on purpose), not by CHOLMOD's warning on stderr.
+        common.print = 0;
         try
           {
             factorise(K);

@@ -372,10 +372,11 @@ namespace Contact
             double along = 0;
             for (unsigned int i = 0; i < m; ++i)
               along += result[p].direction[i] * v[p * m + i];
-            result[p].slope = law.slope(p, node_norm(v, p, m));
+            result[p].definite_slope = -law.weakening_cap * law.weights[p];
+            result[p].slope          = law.slope(p, node_norm(v, p, m));
             if (capped)
               result[p].slope =
-                std::max(result[p].slope, -law.weakening_cap * law.weights[p]);
+                std::max(result[p].slope, result[p].definite_slope);
             result[p].force = g[p] - result[p].slope * along;
           }
       return result;
@@ -485,29 +486,122 @@ namespace Contact
       return 0.;
     }
 
+    // The curvature test from Newton steps alone, for a path whose own test
+    // cannot tell (the Delassus path where D is singular on the stick
+    // unknowns; tests/unit/friction_newton_minimum compares it with the
+    // dense test). With the true slopes the Newton matrix is
+    // H = H_c - sum_{p in B} delta_p z_p z_p^T, where H_c caps the
+    // weakening at `cap` (positive definite, below the convexity limit), B
+    // are the slip nodes weakening faster, delta_p the excess and z_p the
+    // load of a unit force along zhat_p. H is positive definite iff the
+    // capacitance matrix I - Delta^{1/2} Z^T H_c^{-1} Z Delta^{1/2} is
+    // (Sylvester's law of inertia), and Z^T H_c^{-1} Z is the response of
+    // the slip velocities along zhat to unit forces, which |B| + 1 Newton
+    // steps with the capped model give (more force along zhat_b is the
+    // load -z_b; it is scaled like the forces, so that the difference of
+    // two steps is not lost in their round-off): |B| + 1 solves.
+    Curvature capacitance_test(const TrescaNewtonStep        &newton_step,
+                               const unsigned int             m,
+                               const NodalLaw                &law,
+                               const double                   cap,
+                               std::vector<NodeLinearisation> capped,
+                               const Vector<double>          &eta,
+                               const Vector<double>          &v)
+    {
+      std::vector<unsigned int> B;
+      std::vector<double>       excess;
+      for (unsigned int p = 0; p < capped.size(); ++p)
+        if (capped[p].state == NodeState::slip &&
+            capped[p].slope < -cap * law.weights[p])
+          {
+            B.push_back(p);
+            excess.push_back(-capped[p].slope - cap * law.weights[p]);
+            capped[p].slope = -cap * law.weights[p];
+          }
+      const auto response = [&](const std::vector<NodeLinearisation> &model,
+                                Vector<double>                       &w) {
+        Vector<double> force(eta);
+        w = v;
+        newton_step(model, force, w);
+      };
+      // The perturbation of the force: the size of the forces, so that the
+      // difference of two solves is not lost in their round-off.
+      double force_scale = 0;
+      for (const NodeLinearisation &node : capped)
+        force_scale = std::max(force_scale, node.bound);
+      Vector<double> base, perturbed;
+      response(capped, base);
+      LAPACKFullMatrix<double> capacitance(B.size(), B.size());
+      for (unsigned int b = 0; b < B.size(); ++b)
+        {
+          std::vector<NodeLinearisation> model = capped;
+          model[B[b]].force += force_scale;
+          response(model, perturbed);
+          perturbed -= base;
+          perturbed /= force_scale;
+          for (unsigned int a = 0; a < B.size(); ++a)
+            {
+              double along = 0;
+              for (unsigned int i = 0; i < m; ++i)
+                along += capped[B[a]].direction[i] * perturbed[B[a] * m + i];
+              capacitance(a, b) =
+                (a == b ? 1. : 0.) + std::sqrt(excess[a] * excess[b]) * along;
+            }
+        }
+      for (unsigned int a = 0; a < B.size(); ++a)
+        for (unsigned int b = 0; b < a; ++b)
+          capacitance(a, b) = capacitance(b, a) =
+            0.5 * (capacitance(a, b) + capacitance(b, a));
+      capacitance.set_property(LAPACKSupport::symmetric);
+      try
+        {
+          capacitance.compute_cholesky_factorization();
+        }
+      catch (const ExceptionBase &)
+        {
+          return Curvature::not_positive;
+        }
+      return Curvature::positive;
+    }
+
     // Whether a solution is a local minimum of E: certified without a test
     // where every slip node weakens slower than weakening_cap_fraction
-    // times the convexity limit (friction_solver.cc), by the curvature test
-    // on the Hessian otherwise.
-    void test_second_order(const unsigned int    m,
-                           const NodalLaw       &law,
-                           const CurvatureTest  &curvature,
-                           const Vector<double> &c,
-                           const Vector<double> &eta,
-                           const Vector<double> &v,
-                           FrictionNewtonResult &result)
+    // times the convexity limit (friction_solver.cc), by the path's
+    // curvature test on the Hessian otherwise, or where that cannot tell by
+    // the capacitance test.
+    void test_second_order(const unsigned int      m,
+                           const NodalLaw         &law,
+                           const CurvatureTest    &curvature,
+                           const TrescaNewtonStep &newton_step,
+                           const Vector<double>   &c,
+                           const Vector<double>   &eta,
+                           const Vector<double>   &v,
+                           FrictionNewtonResult   &result)
     {
-      const auto linearisation = linearise_law(m, eta, v, law, c, false);
+      const double certified     = weakening_cap_fraction * law.convexity_limit;
+      const auto   linearisation = linearise_law(m, eta, v, law, c, false);
       for (unsigned int p = 0; p < linearisation.size(); ++p)
         {
           const double weakening = -linearisation[p].slope;
           if (linearisation[p].state == NodeState::slip && weakening > 0 &&
-              !(weakening <
-                weakening_cap_fraction * law.convexity_limit * law.weights[p]))
+              !(weakening < certified * law.weights[p]))
             result.beyond_convexity_limit = true;
         }
-      result.converged = !result.beyond_convexity_limit ||
-                         curvature(linearisation) == Curvature::positive;
+      Curvature verdict = Curvature::positive;
+      try
+        {
+          if (result.beyond_convexity_limit)
+            verdict = curvature(linearisation);
+          if (verdict == Curvature::unknown && certified > 0)
+            verdict = capacitance_test(
+              newton_step, m, law, certified, linearisation, eta, v);
+        }
+      catch (const ExcIndefiniteNewtonMatrix &)
+        {
+          // The capped model's matrix was refused: nothing is certified.
+          verdict = Curvature::unknown;
+        }
+      result.converged             = (verdict == Curvature::positive);
       result.minimum_not_certified = !result.converged;
     }
   } // namespace
@@ -534,10 +628,10 @@ namespace Contact
     for (unsigned int p = 0; p < n; ++p)
       largest_bound = std::max(largest_bound, law.bound(p, 0.));
     const double tolerance = friction_residual_tolerance * largest_bound;
-    const bool   has_cap   = std::isfinite(law.weakening_cap);
-    bool         capped    = has_cap;
-    // Whether the model may switch to the true slope.
-    const bool may_uncap = has_cap && !law.cap_throughout;
+    // Whether the model caps the weakening, and may switch to the true
+    // slope.
+    const bool may_uncap = std::isfinite(law.weakening_cap);
+    bool       capped    = may_uncap;
 
     // The first step is taken from the linearisation at the previous
     // step's state. Where E may be nonconvex it is also compared against E
@@ -561,18 +655,29 @@ namespace Contact
     while (result.iterations < max_iterations)
       {
         ++result.iterations;
-        new_eta = eta;
-        new_v   = v;
-        newton_step(linearisation, new_eta, new_v);
+        new_eta      = eta;
+        new_v        = v;
         double scale = 0, new_energy = energy, length = 1.;
-        if (result.iterations > 1 || compare_first)
+        bool   refused = false;
+        try
+          {
+            newton_step(linearisation, new_eta, new_v);
+          }
+        catch (const ExcIndefiniteNewtonMatrix &)
+          {
+            // Both models give the solver the same capped matrix: straight
+            // to the convexification step.
+            refused = true;
+            length  = 0.;
+          }
+        if (!refused && (result.iterations > 1 || compare_first))
           {
             if (std::isnan(energy))
               energy = law.energy(v_free(), eta, v, scale);
             length = backtrack(
               law, v_free(), eta, v, energy, new_eta, new_v, new_energy);
           }
-        if (length == 0.)
+        if (length == 0. && !refused)
           {
             (capped ? capped_failed : uncapped_failed) = true;
             if (may_uncap &&
@@ -628,7 +733,8 @@ namespace Contact
         const bool sets_repeat = set_signature(linearisation) == previous_sets;
         if (sets_repeat && residual <= tolerance)
           {
-            test_second_order(m, law, curvature, c, eta, v, result);
+            test_second_order(
+              m, law, curvature, newton_step, c, eta, v, result);
             break;
           }
         if (may_uncap && capped && sets_repeat && length == 1. &&

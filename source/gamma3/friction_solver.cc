@@ -313,9 +313,7 @@ namespace Contact
   // untouched, if it does not converge or ends on a point that its
   // curvature test does not certify as a local minimum of E (friction.h).
   // Far from the solution its model caps the weakening at 0.9 times the
-  // convexity limit, where the model is still convex; on a path whose
-  // solver needs a positive definite matrix (the constraints path) it keeps
-  // the cap throughout.
+  // convexity limit, where the model is still convex.
   template <int dim>
   bool FrictionSolver<dim>::solve_by_newton(StepStatistics &statistics)
   {
@@ -324,8 +322,7 @@ namespace Contact
     const auto [velocity_of_force, newton_step] = path_operators();
     NodalLaw law{friction_law,
                  solver_weights,
-                 weakening_cap_fraction * convexity_limit,
-                 path->needs_definite_newton_matrix()};
+                 weakening_cap_fraction * convexity_limit};
     law.convexity_limit               = convexity_limit;
     const FrictionNewtonResult result = solve_friction_newton(
       velocity_of_force,
