@@ -8,6 +8,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <base/parameters.h>
@@ -220,6 +221,10 @@ namespace Contact
   using CurvatureTest =
     std::function<Curvature(const std::vector<NodeLinearisation> &)>;
 
+  /** Whether a matrix that is symmetric up to round-off is positive
+   *  definite: one Cholesky factorisation of its symmetric part. */
+  Curvature definiteness(LAPACKFullMatrix<double> matrix);
+
   /** v_free, formed when first asked for: on the constraints path it costs
    *  a solve with K that a step converging in one Newton step never needs
    *  (every sticking step). */
@@ -329,13 +334,15 @@ namespace Contact
    *   matrix), a convexification step is taken instead (the Tresca problem
    *   with the bounds of the current slip rates), which lowers E because j
    *   is concave along |v| (a majorisation).
-   * - The first step starts from the previous step's forces, slip
-   *   velocities and sets (eta, v on entry). Where E may be nonconvex
-   *   (law.may_be_nonconvex()) it is compared, like every other step,
-   *   against E at the previous forces, whose velocity v_free - D eta costs
-   *   one application of D; where E is convex its one stationary point is
-   *   the minimiser whichever way it is reached, and a step that converges
-   *   at once never asks for v_free.
+   * - Where E is convex its one stationary point is the minimiser
+   *   whichever way it is reached: the first step starts from the previous
+   *   step's forces, slip velocities and sets (eta, v on entry), and a step
+   *   that converges at once never asks for v_free. Where E may be
+   *   nonconvex (law.may_be_nonconvex()) the start selects the solution:
+   *   the first iterate is then the convexification's, the Tresca problem
+   *   with the bounds of the previous slip rates (a descent from the
+   *   previous velocities, counted as a convexification step), and every
+   *   Newton step from it is line searched.
    * - At a solution (the sets repeat and max |F_p| <=
    *   friction_residual_tolerance max_p g_p(0)) where some slip node weakens
    *   faster than weakening_cap_fraction times the convexity limit, the

@@ -539,21 +539,7 @@ namespace Contact
           definite_newton_system(linearisation);
         if (system.steep.empty())
           return Curvature::positive;
-        LAPACKFullMatrix<double> capacitance = system.capacitance;
-        for (unsigned int a = 0; a < capacitance.m(); ++a)
-          for (unsigned int b = 0; b < a; ++b)
-            capacitance(a, b) = capacitance(b, a) =
-              0.5 * (capacitance(a, b) + capacitance(b, a));
-        capacitance.set_property(LAPACKSupport::symmetric);
-        try
-          {
-            capacitance.compute_cholesky_factorization();
-          }
-        catch (const ExceptionBase &)
-          {
-            return Curvature::not_positive;
-          }
-        return Curvature::positive;
+        return definiteness(system.capacitance);
       }
 
     private:

@@ -650,19 +650,9 @@ namespace Contact
         T_sigma(a, b) = T(a, b) * conditions[U[b]].sigma;
     T_sigma.mmult(hessian, T);
     for (unsigned int a = 0; a < U.size(); ++a)
-      for (unsigned int b = 0; b <= a; ++b)
-        hessian(a, b) = hessian(b, a) =
-          0.5 * (T(a, b) + T(b, a) + hessian(a, b) + hessian(b, a));
-    hessian.set_property(LAPACKSupport::symmetric);
-    try
-      {
-        hessian.compute_cholesky_factorization();
-      }
-    catch (const ExceptionBase &)
-      {
-        return Curvature::not_positive;
-      }
-    return Curvature::positive;
+      for (unsigned int b = 0; b < U.size(); ++b)
+        hessian(a, b) += T(a, b);
+    return definiteness(hessian);
   }
 
   TrescaResult solve_tresca(const DelassusOperator &D,

@@ -336,6 +336,23 @@ namespace Contact
 
   // @sect3{The full law by a globalised semismooth Newton method}
 
+  Curvature definiteness(LAPACKFullMatrix<double> matrix)
+  {
+    for (unsigned int a = 0; a < matrix.m(); ++a)
+      for (unsigned int b = 0; b < a; ++b)
+        matrix(a, b) = matrix(b, a) = 0.5 * (matrix(a, b) + matrix(b, a));
+    matrix.set_property(LAPACKSupport::symmetric);
+    try
+      {
+        matrix.compute_cholesky_factorization();
+      }
+    catch (const ExceptionBase &)
+      {
+        return Curvature::not_positive;
+      }
+    return Curvature::positive;
+  }
+
   namespace
   {
     double node_norm(const Vector<double> &x,
@@ -548,20 +565,7 @@ namespace Contact
                 (a == b ? 1. : 0.) + std::sqrt(excess[a] * excess[b]) * along;
             }
         }
-      for (unsigned int a = 0; a < B.size(); ++a)
-        for (unsigned int b = 0; b < a; ++b)
-          capacitance(a, b) = capacitance(b, a) =
-            0.5 * (capacitance(a, b) + capacitance(b, a));
-      capacitance.set_property(LAPACKSupport::symmetric);
-      try
-        {
-          capacitance.compute_cholesky_factorization();
-        }
-      catch (const ExceptionBase &)
-        {
-          return Curvature::not_positive;
-        }
-      return Curvature::positive;
+      return definiteness(capacitance);
     }
 
     // Whether a solution is a local minimum of E: certified without a test
@@ -633,16 +637,36 @@ namespace Contact
     const bool may_uncap = std::isfinite(law.weakening_cap);
     bool       capped    = may_uncap;
 
-    // The first step is taken from the linearisation at the previous
-    // step's state. Where E may be nonconvex it is also compared against E
-    // at the previous forces with this step's v_free; elsewhere the energy
-    // is only formed if a second step needs it, so that a step converging
-    // at once never asks for v_free.
-    auto       linearisation = linearise_law(m, eta, v, law, c, capped);
+    // Where E may be nonconvex the first iterate is the convexification's
+    // (friction.h); elsewhere the first step is taken from the
+    // linearisation at the previous step's state, and the energy is only
+    // formed if a second step needs it, so that a step converging at once
+    // never asks for v_free.
     double     energy        = std::numeric_limits<double>::quiet_NaN();
     const bool compare_first = law.may_be_nonconvex();
     if (compare_first)
-      velocity(eta, v);
+      {
+        Vector<double> bound(n);
+        for (unsigned int p = 0; p < n; ++p)
+          bound[p] = law.bound(p, node_norm(v, p, m));
+        std::vector<NodeState> tresca_state;
+        const TrescaResult     tresca = solve_tresca(velocity,
+                                                 newton_step,
+                                                 m,
+                                                 bound,
+                                                 c,
+                                                 max_active_set_iterations,
+                                                 eta,
+                                                 v,
+                                                 tresca_state);
+        ++result.convexification_steps;
+        result.active_set_iterations += tresca.iterations;
+        if (!tresca.converged)
+          return result;
+        double scale = 0;
+        energy       = law.energy(v_free(), eta, v, scale);
+      }
+    auto           linearisation = linearise_law(m, eta, v, law, c, capped);
     Vector<double> new_eta(eta), new_v(v);
     // The model switches to the true slope once the sets repeat after a
     // full step and the residual is below uncap_below. Where neither model
