@@ -608,6 +608,41 @@ namespace Contact
       result.converged             = (verdict == Curvature::positive);
       result.minimum_not_certified = !result.converged;
     }
+
+    // One convexification step from (eta, v): the Tresca problem with the
+    // bounds of the slip rates of v, which lowers E because j is concave
+    // along |v| (a majorisation), its forces and velocities in
+    // (new_eta, new_v). False if the active set method did not converge.
+    bool convexification_step(const TrescaVelocity   &velocity,
+                              const TrescaNewtonStep &newton_step,
+                              const unsigned int      m,
+                              const NodalLaw         &law,
+                              const Vector<double>   &c,
+                              const unsigned int      max_active_set_iterations,
+                              const Vector<double>   &eta,
+                              const Vector<double>   &v,
+                              Vector<double>         &new_eta,
+                              Vector<double>         &new_v,
+                              FrictionNewtonResult   &result)
+    {
+      Vector<double> bound(c.size());
+      for (unsigned int p = 0; p < c.size(); ++p)
+        bound[p] = law.bound(p, node_norm(v, p, m));
+      new_eta = eta;
+      std::vector<NodeState> state;
+      const TrescaResult     tresca = solve_tresca(velocity,
+                                               newton_step,
+                                               m,
+                                               bound,
+                                               c,
+                                               max_active_set_iterations,
+                                               new_eta,
+                                               new_v,
+                                               state);
+      ++result.convexification_steps;
+      result.active_set_iterations += tresca.iterations;
+      return tresca.converged;
+    }
   } // namespace
 
 
@@ -646,23 +681,21 @@ namespace Contact
     const bool compare_first = law.may_be_nonconvex();
     if (compare_first)
       {
-        Vector<double> bound(n);
-        for (unsigned int p = 0; p < n; ++p)
-          bound[p] = law.bound(p, node_norm(v, p, m));
-        std::vector<NodeState> tresca_state;
-        const TrescaResult     tresca = solve_tresca(velocity,
-                                                 newton_step,
-                                                 m,
-                                                 bound,
-                                                 c,
-                                                 max_active_set_iterations,
-                                                 eta,
-                                                 v,
-                                                 tresca_state);
-        ++result.convexification_steps;
-        result.active_set_iterations += tresca.iterations;
-        if (!tresca.converged)
+        Vector<double> start_eta, start_v(v);
+        if (!convexification_step(velocity,
+                                  newton_step,
+                                  m,
+                                  law,
+                                  c,
+                                  max_active_set_iterations,
+                                  eta,
+                                  v,
+                                  start_eta,
+                                  start_v,
+                                  result))
           return result;
+        eta.swap(start_eta);
+        v.swap(start_v);
         double scale = 0;
         energy       = law.energy(v_free(), eta, v, scale);
       }
@@ -719,25 +752,18 @@ namespace Contact
         if (length == 0.)
           {
             // No descent along the Newton direction: one convexification
-            // step instead, the Tresca problem with the bounds of the
-            // current slip rates, which lowers E.
-            ++result.convexification_steps;
-            Vector<double> bound(n);
-            for (unsigned int p = 0; p < n; ++p)
-              bound[p] = law.bound(p, node_norm(v, p, m));
-            new_eta = eta;
-            std::vector<NodeState> tresca_state;
-            const TrescaResult     tresca = solve_tresca(velocity,
-                                                     newton_step,
-                                                     m,
-                                                     bound,
-                                                     c,
-                                                     max_active_set_iterations,
-                                                     new_eta,
-                                                     new_v,
-                                                     tresca_state);
-            result.active_set_iterations += tresca.iterations;
-            if (!tresca.converged)
+            // step instead.
+            if (!convexification_step(velocity,
+                                      newton_step,
+                                      m,
+                                      law,
+                                      c,
+                                      max_active_set_iterations,
+                                      eta,
+                                      v,
+                                      new_eta,
+                                      new_v,
+                                      result))
               break;
             new_energy = law.energy(v_free(), new_eta, new_v, scale);
           }
