@@ -334,6 +334,10 @@ namespace Contact
    *   matrix), a convexification step is taken instead (the Tresca problem
    *   with the bounds of the current slip rates), which lowers E because j
    *   is concave along |v| (a majorisation).
+   * - After three full capped steps on repeating sets whose residual grew
+   *   (the capped model creeping towards a node's stick state), the slip
+   *   nodes weakening faster than the cap that slowed down are proposed to
+   *   stick: one Newton step with them held, taken if it lowers E.
    * - Where E is convex its one stationary point is the minimiser
    *   whichever way it is reached: the first step starts from the previous
    *   step's forces, slip velocities and sets (eta, v on entry), and a step

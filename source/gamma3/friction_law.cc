@@ -643,6 +643,53 @@ namespace Contact
       result.active_set_iterations += tresca.iterations;
       return tresca.converged;
     }
+
+    // Where the capped model creeps (solve_friction_newton()), the slip
+    // nodes that weaken faster than the cap and slowed down in the last
+    // step are proposed to stick: one Newton step with them held at
+    // v_p = 0, taken if it lowers E. Returns whether it was taken.
+    bool propose_stick(const TrescaNewtonStep        &newton_step,
+                       const unsigned int             m,
+                       const NodalLaw                &law,
+                       const Vector<double>          &v_free,
+                       const Vector<double>          &previous_v,
+                       std::vector<NodeLinearisation> proposal,
+                       double                        &energy,
+                       Vector<double>                &eta,
+                       Vector<double>                &v)
+    {
+      bool any = false;
+      for (unsigned int p = 0; p < proposal.size(); ++p)
+        {
+          const double s = node_norm(v, p, m);
+          if (proposal[p].state == NodeState::slip && proposal[p].bound > 0 &&
+              law.slope(p, s) < -law.weakening_cap * law.weights[p] &&
+              s < node_norm(previous_v, p, m))
+            {
+              proposal[p].state = NodeState::stick;
+              any               = true;
+            }
+        }
+      if (!any)
+        return false;
+      Vector<double> trial_eta(eta), trial_v(v);
+      try
+        {
+          newton_step(proposal, trial_eta, trial_v);
+        }
+      catch (const ExcIndefiniteNewtonMatrix &)
+        {
+          return false;
+        }
+      double       scale        = 0;
+      const double trial_energy = law.energy(v_free, trial_eta, trial_v, scale);
+      if (!(trial_energy < energy - energy_round_off * scale))
+        return false;
+      eta.swap(trial_eta);
+      v.swap(trial_v);
+      energy = trial_energy;
+      return true;
+    }
   } // namespace
 
 
@@ -709,6 +756,14 @@ namespace Contact
     double residual      = std::numeric_limits<double>::infinity();
     double uncap_below   = 0.1 * largest_bound;
     bool   capped_failed = false, uncapped_failed = false;
+    // Full capped steps on repeating sets whose residual grew: where a
+    // node's true weakening is much steeper than the cap, the capped model
+    // creeps towards its stick state (the residual grows by 10 to 40 % per
+    // step while E falls by little, until the node sticks), so after
+    // creep_limit such steps the nodes that slow down are proposed to
+    // stick (propose_stick()).
+    unsigned int       creeping    = 0;
+    const unsigned int creep_limit = 3;
     while (result.iterations < max_iterations)
       {
         ++result.iterations;
@@ -779,6 +834,7 @@ namespace Contact
         Vector<double> bound(n);
         for (unsigned int p = 0; p < n; ++p)
           bound[p] = linearisation[p].bound;
+        const double last_residual = residual;
         residual               = complementarity_residual(m, eta, v, bound, c);
         const bool sets_repeat = set_signature(linearisation) == previous_sets;
         if (sets_repeat && residual <= tolerance)
@@ -786,6 +842,32 @@ namespace Contact
             test_second_order(
               m, law, curvature, newton_step, c, eta, v, result);
             break;
+          }
+        creeping =
+          (capped && sets_repeat && length == 1. && residual > last_residual ?
+             creeping + 1 :
+             0);
+        if (creeping >= creep_limit)
+          {
+            // new_v holds the iterate before the last step.
+            creeping = 0;
+            ++result.iterations;
+            if (propose_stick(newton_step,
+                              m,
+                              law,
+                              v_free(),
+                              new_v,
+                              linearisation,
+                              energy,
+                              eta,
+                              v))
+              {
+                linearisation = linearise_law(m, eta, v, law, c, capped);
+                for (unsigned int p = 0; p < n; ++p)
+                  bound[p] = linearisation[p].bound;
+                residual = complementarity_residual(m, eta, v, bound, c);
+                continue;
+              }
           }
         if (may_uncap && capped && sets_repeat && length == 1. &&
             residual < uncap_below)
