@@ -353,6 +353,8 @@ namespace Contact
    *   curvature test decides whether it is a local minimum; if it is not
    *   certified one, the result says so (minimum_not_certified) and is not
    *   converged.
+   * (eta, v, state) are the solution where the result converged and are
+   * unspecified otherwise.
    */
   FrictionNewtonResult
   solve_friction_newton(const TrescaVelocity   &velocity,

@@ -847,7 +847,7 @@ namespace Contact
           (capped && sets_repeat && length == 1. && residual > last_residual ?
              creeping + 1 :
              0);
-        if (creeping >= creep_limit)
+        if (creeping >= creep_limit && result.iterations < max_iterations)
           {
             // new_v holds the iterate before the last step.
             creeping = 0;

@@ -8,7 +8,9 @@
    the reduced Hessian W_SS + diag(g'(s_p)) on the slip set S, W = D^{-1})
    looks at every end point:
    - with the curvature test replaced by one that certifies every point,
-     some starts end on a saddle (what the test must catch);
+     some starts end on a saddle in three of the four cases (what the test
+     must catch; at alpha = 5 none does since Newton's first iterate is the
+     convexification's);
    - with the curvature test of DelassusOperator none does: every start
      either converges to a local minimum or is handed back unconverged, and
      few are handed back; the same with the capacitance test from Newton
