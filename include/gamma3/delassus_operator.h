@@ -77,9 +77,11 @@ namespace Contact
 
     /** The curvature test of friction.h: whether the Hessian of E on the
      *  slip set of this linearisation (with the true slopes) is positive
-     *  definite. */
-    Curvature curvature_on_slip_set(
-      const std::vector<NodeLinearisation> &linearisation) const;
+     *  definite, from W (the velocity form, where W is formed) or from D
+     *  alone (the force form; the tests compare them). */
+    Curvature
+    curvature_on_slip_set(const std::vector<NodeLinearisation> &linearisation,
+                          const Form form = Form::smaller) const;
 
     /** How many Newton steps' blocks were solved by GMRES preconditioned
      *  with the factor of an earlier block. */

@@ -584,25 +584,28 @@ namespace Contact
   // The Hessian of E on the slip set, in the nodes' local bases, is the
   // matrix of the velocity form, W'_UU + diag(sigma) with W = D^{-1}, U
   // the unknowns whose velocity is not fixed and sigma = 0 where the force
-  // is. With T = (W'_UU)^{-1} = D'_UU - D'_UX D'_XX^{-1} D'_XU (X: the
-  // fixed velocities, the stick nodes), it is congruent to
-  // T + T diag(sigma) T, which needs D alone (W is not formed where D is
-  // ill-conditioned): one Cholesky factorisation decides.
+  // is: one Cholesky factorisation of it decides. Where W is not formed (D
+  // ill-conditioned), T = (W'_UU)^{-1} = D'_UU - D'_UX D'_XX^{-1} D'_XU
+  // (X: the fixed velocities, the stick nodes) gives the congruent
+  // T + T diag(sigma) T from D alone, at about six times the cost.
   Curvature DelassusOperator::curvature_on_slip_set(
-    const std::vector<NodeLinearisation> &linearisation) const
+    const std::vector<NodeLinearisation> &linearisation,
+    const Form                            form) const
   {
+    AssertThrow(form != Form::velocity || W.m() > 0,
+                ExcMessage("The velocity form needs W = D^{-1}."));
     const unsigned int n = linearisation.size(), m = n_components;
     AssertDimension(n * m, size());
     std::vector<FullMatrix<double>> Q;
     for (const NodeLinearisation &node : linearisation)
       Q.push_back(local_basis(node));
-    std::vector<unsigned int> all(n * m);
-    std::iota(all.begin(), all.end(), 0u);
-    LAPACKFullMatrix<double> rotated(n * m, n * m);
-    fill_rotated_block(D, Q, all, rotated);
     std::vector<double> rotated_diagonal(n * m);
     for (unsigned int r = 0; r < n * m; ++r)
-      rotated_diagonal[r] = rotated(r, r);
+      for (unsigned int i = 0; i < m; ++i)
+        for (unsigned int j = 0; j < m; ++j)
+          rotated_diagonal[r] += Q[r / m](i, r % m) *
+                                 D((r / m) * m + i, (r / m) * m + j) *
+                                 Q[r / m](j, r % m);
     const std::vector<LocalCondition> conditions =
       local_conditions(linearisation, rotated_diagonal);
     std::vector<unsigned int> U, X;
@@ -611,7 +614,19 @@ namespace Contact
         .push_back(r);
     if (U.empty())
       return Curvature::positive;
+    if (W.m() > 0 && form != Form::force)
+      {
+        LAPACKFullMatrix<double> hessian(U.size(), U.size());
+        fill_rotated_block(W, Q, U, hessian);
+        for (unsigned int a = 0; a < U.size(); ++a)
+          hessian(a, a) += conditions[U[a]].sigma;
+        return definiteness(hessian);
+      }
 
+    std::vector<unsigned int> all(n * m);
+    std::iota(all.begin(), all.end(), 0u);
+    LAPACKFullMatrix<double> rotated(n * m, n * m);
+    fill_rotated_block(D, Q, all, rotated);
     LAPACKFullMatrix<double> T(U.size(), U.size());
     for (unsigned int a = 0; a < U.size(); ++a)
       for (unsigned int b = 0; b < U.size(); ++b)

@@ -11,10 +11,11 @@
      some starts end on a saddle in three of the four cases (what the test
      must catch; at alpha = 5 none does since Newton's first iterate is the
      convexification's);
-   - with the curvature test of DelassusOperator none does: every start
-     either converges to a local minimum or is handed back unconverged, and
-     few are handed back; the same with the capacitance test from Newton
-     steps, which a path falls back on where its own test cannot tell;
+   - with the curvature test of DelassusOperator (from W, and from D alone)
+     none does: every start either converges to a local minimum or is
+     handed back unconverged, and few are handed back; the same with the
+     capacitance test from Newton steps, which a path falls back on where
+     its own test cannot tell, and all three hand back the same starts;
    - the convexification (the program's fallback) from a handed-back start
      ends on a local minimum. */
 
@@ -123,12 +124,14 @@ namespace
   };
 
   // How the end point is tested: not at all (every point certified), by
-  // DelassusOperator's dense test, or by the capacitance test from Newton
-  // steps that a path which cannot tell falls back on.
+  // DelassusOperator's dense test from W (the velocity form) or from D
+  // alone (the force form), or by the capacitance test from Newton steps
+  // that a path which cannot tell falls back on.
   enum class Test
   {
     none,
-    dense,
+    dense_velocity,
+    dense_force,
     capacitance
   };
 
@@ -182,11 +185,20 @@ namespace
             delassus.newton_step(linearisation, v_free, force, velocity);
           },
           [&](const std::vector<NodeLinearisation> &linearisation) {
-            return test == Test::none ?
-                     Curvature::positive :
-                   test == Test::dense ?
-                     delassus.curvature_on_slip_set(linearisation) :
-                     Curvature::unknown;
+            switch (test)
+              {
+                case Test::none:
+                  return Curvature::positive;
+                case Test::dense_velocity:
+                  return delassus.curvature_on_slip_set(
+                    linearisation, DelassusOperator::Form::velocity);
+                case Test::dense_force:
+                  return delassus.curvature_on_slip_set(
+                    linearisation, DelassusOperator::Form::force);
+                case Test::capacitance:
+                  break;
+              }
+            return Curvature::unknown;
           },
           1,
           nodal_law,
@@ -224,15 +236,17 @@ namespace
               << ": without the curvature test some starts end on a saddle: "
               << (unchecked.not_minimum > 0 ? "yes" : "no") << std::endl;
     std::vector<unsigned int> dense_handed_back;
-    for (const Test test : {Test::dense, Test::capacitance})
+    for (const Test test :
+         {Test::dense_velocity, Test::dense_force, Test::capacitance})
       {
         const Counts checked = run_starts(alpha, capped, test);
-        if (test == Test::dense)
+        if (test == Test::dense_velocity)
           dense_handed_back = checked.handed_back_starts;
         std::cout << "  with the "
-                  << (test == Test::dense ? "dense" : "capacitance")
-                  << " test none does: "
-                  << (checked.not_minimum == 0 ? "yes" : "no")
+                  << (test == Test::dense_velocity ? "dense test from W" :
+                      test == Test::dense_force    ? "dense test from D" :
+                                                     "capacitance test")
+                  << " none does: " << (checked.not_minimum == 0 ? "yes" : "no")
                   << ", every start converges or is handed back: "
                   << (checked.converged + checked.handed_back == 2000 ? "yes" :
                                                                         "no")
@@ -240,8 +254,8 @@ namespace
                   << (checked.handed_back < 20 ? "yes" : "no")
                   << ", the convexification from these ends on a minimum: "
                   << (checked.fallback_not_minimum == 0 ? "yes" : "no");
-        if (test == Test::capacitance)
-          std::cout << ", the same starts handed back as with the dense test: "
+        if (test != Test::dense_velocity)
+          std::cout << ", the same starts handed back as with W: "
                     << (checked.handed_back_starts == dense_handed_back ?
                           "yes" :
                           "no");
