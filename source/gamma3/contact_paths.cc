@@ -488,7 +488,7 @@ namespace Contact
           }
         VectorType w;
         velocity(eta, w);
-        v = gamma3.tangential_velocities(w);
+        v = last_slip_velocity;
       }
 
       void newton_step(const std::vector<NodeLinearisation> &linearisation,

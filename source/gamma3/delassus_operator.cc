@@ -145,13 +145,22 @@ namespace Contact
     // The conditions of the linearisation (friction.h). Along zhat of a slip
     // node the force is fixed unless the slope of the bound is above
     // round-off against D'_rr; a unit that cannot move (D'_rr = 0) takes
-    // eta' = 0.
+    // eta' = 0. D' = Q^T D Q in the nodes' local bases Q, m unknowns per
+    // node.
     std::vector<LocalCondition>
-    local_conditions(const std::vector<NodeLinearisation> &linearisation,
-                     const std::vector<double>            &rotated_diagonal)
+    local_conditions(const std::vector<NodeLinearisation>  &linearisation,
+                     const LAPACKFullMatrix<double>        &D,
+                     const std::vector<FullMatrix<double>> &Q,
+                     const unsigned int                     m)
     {
-      const unsigned int n = linearisation.size(),
-                         m = rotated_diagonal.size() / std::max(n, 1u);
+      const unsigned int  n = linearisation.size();
+      std::vector<double> rotated_diagonal(n * m);
+      for (unsigned int r = 0; r < n * m; ++r)
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int j = 0; j < m; ++j)
+            rotated_diagonal[r] += Q[r / m](i, r % m) *
+                                   D((r / m) * m + i, (r / m) * m + j) *
+                                   Q[r / m](j, r % m);
       std::vector<LocalCondition> conditions(n * m);
       for (unsigned int p = 0; p < n; ++p)
         {
@@ -470,15 +479,8 @@ namespace Contact
     std::vector<FullMatrix<double>> Q;
     for (const NodeLinearisation &node : linearisation)
       Q.push_back(local_basis(node));
-    std::vector<double> rotated_diagonal(n * m);
-    for (unsigned int r = 0; r < n * m; ++r)
-      for (unsigned int i = 0; i < m; ++i)
-        for (unsigned int j = 0; j < m; ++j)
-          rotated_diagonal[r] += Q[r / m](i, r % m) *
-                                 D((r / m) * m + i, (r / m) * m + j) *
-                                 Q[r / m](j, r % m);
     const std::vector<LocalCondition> conditions =
-      local_conditions(linearisation, rotated_diagonal);
+      local_conditions(linearisation, D, Q, m);
 
     std::vector<unsigned int> force_unknowns, velocity_unknowns;
     bool                      weakening = false;
@@ -599,15 +601,8 @@ namespace Contact
     std::vector<FullMatrix<double>> Q;
     for (const NodeLinearisation &node : linearisation)
       Q.push_back(local_basis(node));
-    std::vector<double> rotated_diagonal(n * m);
-    for (unsigned int r = 0; r < n * m; ++r)
-      for (unsigned int i = 0; i < m; ++i)
-        for (unsigned int j = 0; j < m; ++j)
-          rotated_diagonal[r] += Q[r / m](i, r % m) *
-                                 D((r / m) * m + i, (r / m) * m + j) *
-                                 Q[r / m](j, r % m);
     const std::vector<LocalCondition> conditions =
-      local_conditions(linearisation, rotated_diagonal);
+      local_conditions(linearisation, D, Q, m);
     std::vector<unsigned int> U, X;
     for (unsigned int r = 0; r < n * m; ++r)
       (conditions[r].kind == LocalCondition::fixed_velocity ? X : U)

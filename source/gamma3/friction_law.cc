@@ -663,7 +663,7 @@ namespace Contact
         {
           const double s = node_norm(v, p, m);
           if (proposal[p].state == NodeState::slip && proposal[p].bound > 0 &&
-              law.slope(p, s) < -law.weakening_cap * law.weights[p] &&
+              law.slope(p, s) < proposal[p].definite_slope &&
               s < node_norm(previous_v, p, m))
             {
               proposal[p].state = NodeState::stick;
@@ -724,9 +724,9 @@ namespace Contact
     // linearisation at the previous step's state, and the energy is only
     // formed if a second step needs it, so that a step converging at once
     // never asks for v_free.
-    double     energy        = std::numeric_limits<double>::quiet_NaN();
-    const bool compare_first = law.may_be_nonconvex();
-    if (compare_first)
+    double     energy    = std::numeric_limits<double>::quiet_NaN();
+    const bool nonconvex = law.may_be_nonconvex();
+    if (nonconvex)
       {
         Vector<double> start_eta, start_v(v);
         if (!convexification_step(velocity,
@@ -782,7 +782,7 @@ namespace Contact
             refused = true;
             length  = 0.;
           }
-        if (!refused && (result.iterations > 1 || compare_first))
+        if (!refused && (result.iterations > 1 || nonconvex))
           {
             if (std::isnan(energy))
               energy = law.energy(v_free(), eta, v, scale);

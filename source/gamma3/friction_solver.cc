@@ -122,9 +122,8 @@ namespace Contact
                             number_text(lanczos_tolerance_iterative) + ")" :
                           "")
               << "; here S (a - b) alpha = "
-              << parameters.friction.bound_S *
-                   friction_law.one_sided_lipschitz_constant()
-              << std::setprecision(6) << std::endl;
+              << friction_law.steepest_weakening() << std::setprecision(6)
+              << std::endl;
       }
   }
 
