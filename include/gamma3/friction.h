@@ -357,8 +357,7 @@ namespace Contact
    * unspecified otherwise.
    */
   FrictionNewtonResult
-  solve_friction_newton(const TrescaVelocity   &velocity,
-                        const TrescaNewtonStep &newton_step,
+  solve_friction_newton(const TrescaNewtonStep &newton_step,
                         const CurvatureTest    &curvature,
                         const unsigned int      n_components,
                         const NodalLaw         &law,

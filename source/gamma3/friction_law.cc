@@ -613,8 +613,7 @@ namespace Contact
     // bounds of the slip rates of v, which lowers E because j is concave
     // along |v| (a majorisation), its forces and velocities in
     // (new_eta, new_v). False if the active set method did not converge.
-    bool convexification_step(const TrescaVelocity   &velocity,
-                              const TrescaNewtonStep &newton_step,
+    bool convexification_step(const TrescaNewtonStep &newton_step,
                               const unsigned int      m,
                               const NodalLaw         &law,
                               const Vector<double>   &c,
@@ -629,8 +628,14 @@ namespace Contact
       for (unsigned int p = 0; p < c.size(); ++p)
         bound[p] = law.bound(p, node_norm(v, p, m));
       new_eta = eta;
+      new_v   = v;
+      // The active set method's first sets are those of (eta, v), which
+      // costs no solve even where v is not the velocity of eta this step
+      // (the previous step's state at the start of a step).
+      const auto keep_velocity = [](const Vector<double> &, Vector<double> &) {
+      };
       std::vector<NodeState> state;
-      const TrescaResult     tresca = solve_tresca(velocity,
+      const TrescaResult     tresca = solve_tresca(keep_velocity,
                                                newton_step,
                                                m,
                                                bound,
@@ -690,12 +695,25 @@ namespace Contact
       energy = trial_energy;
       return true;
     }
+
+    // The complementarity residual with the bounds of the slip rates at
+    // which the law was linearised.
+    double law_residual(const unsigned int                    m,
+                        const std::vector<NodeLinearisation> &linearisation,
+                        const Vector<double>                 &eta,
+                        const Vector<double>                 &v,
+                        const Vector<double>                 &c)
+    {
+      Vector<double> bound(c.size());
+      for (unsigned int p = 0; p < c.size(); ++p)
+        bound[p] = linearisation[p].bound;
+      return complementarity_residual(m, eta, v, bound, c);
+    }
   } // namespace
 
 
   FrictionNewtonResult
-  solve_friction_newton(const TrescaVelocity   &velocity,
-                        const TrescaNewtonStep &newton_step,
+  solve_friction_newton(const TrescaNewtonStep &newton_step,
                         const CurvatureTest    &curvature,
                         const unsigned int      m,
                         const NodalLaw         &law,
@@ -721,16 +739,15 @@ namespace Contact
 
     // Where E may be nonconvex the first iterate is the convexification's
     // (friction.h); elsewhere the first step is taken from the
-    // linearisation at the previous step's state, and the energy is only
-    // formed if a second step needs it, so that a step converging at once
-    // never asks for v_free.
+    // linearisation at the previous step's state. The energy is only
+    // formed when a line search needs it, so that a step solved by its
+    // start or its first full Newton step never asks for v_free.
     double     energy    = std::numeric_limits<double>::quiet_NaN();
     const bool nonconvex = law.may_be_nonconvex();
     if (nonconvex)
       {
         Vector<double> start_eta, start_v(v);
-        if (!convexification_step(velocity,
-                                  newton_step,
+        if (!convexification_step(newton_step,
                                   m,
                                   law,
                                   c,
@@ -743,10 +760,13 @@ namespace Contact
           return result;
         eta.swap(start_eta);
         v.swap(start_v);
-        double scale = 0;
-        energy       = law.energy(v_free(), eta, v, scale);
       }
-    auto           linearisation = linearise_law(m, eta, v, law, c, capped);
+    auto linearisation = linearise_law(m, eta, v, law, c, capped);
+    // The start may already solve the step (every sticking step does).
+    bool solved =
+      nonconvex && law_residual(m, linearisation, eta, v, c) <= tolerance;
+    if (solved)
+      test_second_order(m, law, curvature, newton_step, c, eta, v, result);
     Vector<double> new_eta(eta), new_v(v);
     // The model switches to the true slope once the sets repeat after a
     // full step and the residual is below uncap_below. Where neither model
@@ -764,7 +784,7 @@ namespace Contact
     // stick (propose_stick()).
     unsigned int       creeping    = 0;
     const unsigned int creep_limit = 3;
-    while (result.iterations < max_iterations)
+    while (!solved && result.iterations < max_iterations)
       {
         ++result.iterations;
         new_eta      = eta;
@@ -808,8 +828,7 @@ namespace Contact
           {
             // No descent along the Newton direction: one convexification
             // step instead.
-            if (!convexification_step(velocity,
-                                      newton_step,
+            if (!convexification_step(newton_step,
                                       m,
                                       law,
                                       c,
@@ -828,14 +847,10 @@ namespace Contact
         const std::vector<int> previous_sets = set_signature(linearisation);
         eta.swap(new_eta);
         v.swap(new_v);
-        energy        = new_energy;
-        linearisation = linearise_law(m, eta, v, law, c, capped);
-        // The residual with the bounds of the current slip rates.
-        Vector<double> bound(n);
-        for (unsigned int p = 0; p < n; ++p)
-          bound[p] = linearisation[p].bound;
+        energy                     = new_energy;
+        linearisation              = linearise_law(m, eta, v, law, c, capped);
         const double last_residual = residual;
-        residual               = complementarity_residual(m, eta, v, bound, c);
+        residual                   = law_residual(m, linearisation, eta, v, c);
         const bool sets_repeat = set_signature(linearisation) == previous_sets;
         if (sets_repeat && residual <= tolerance)
           {
@@ -863,9 +878,7 @@ namespace Contact
                               v))
               {
                 linearisation = linearise_law(m, eta, v, law, c, capped);
-                for (unsigned int p = 0; p < n; ++p)
-                  bound[p] = linearisation[p].bound;
-                residual = complementarity_residual(m, eta, v, bound, c);
+                residual      = law_residual(m, linearisation, eta, v, c);
                 continue;
               }
           }

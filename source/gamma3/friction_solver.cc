@@ -318,13 +318,12 @@ namespace Contact
   {
     Vector<double> eta(current.friction_force), v(current.slip_velocity);
     std::vector<NodeState> state;
-    const auto [velocity_of_force, newton_step] = path_operators();
-    NodalLaw law{friction_law,
+    const auto             newton_step = path_operators().second;
+    NodalLaw               law{friction_law,
                  solver_weights,
                  weakening_cap_fraction * convexity_limit};
     law.convexity_limit               = convexity_limit;
     const FrictionNewtonResult result = solve_friction_newton(
-      velocity_of_force,
       newton_step,
       [this](const std::vector<NodeLinearisation> &linearisation) {
         return path->curvature_on_slip_set(linearisation);

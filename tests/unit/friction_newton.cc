@@ -113,11 +113,6 @@ FrictionNewtonResult solve_from_rest(const DelassusOperator   &delassus,
                                      Vector<double>           &eta,
                                      Vector<double>           &v)
 {
-  const TrescaVelocity velocity = [&](const Vector<double> &eta,
-                                      Vector<double>       &v) {
-    D.vmult(v, eta);
-    v.sadd(-1., 1., v_free);
-  };
   Vector<double> weights(c.size());
   weights = 1.;
   // The convexity limit 1 / lambda_max(D) (unit weights), as the program
@@ -134,7 +129,6 @@ FrictionNewtonResult solve_from_rest(const DelassusOperator   &delassus,
   v = v_free;
   std::vector<NodeState> state;
   return solve_friction_newton(
-    velocity,
     step,
     [&](const std::vector<NodeLinearisation> &linearisation) {
       return delassus.curvature_on_slip_set(linearisation);

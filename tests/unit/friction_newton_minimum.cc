@@ -175,10 +175,6 @@ namespace
         const Vector<double>       start_eta(eta), start_v(v);
         std::vector<NodeState>     state;
         const FrictionNewtonResult result = solve_friction_newton(
-          [&](const Vector<double> &force, Vector<double> &velocity) {
-            delassus.vmult(velocity, force);
-            velocity.sadd(-1., 1., v_free);
-          },
           [&](const std::vector<NodeLinearisation> &linearisation,
               Vector<double>                       &force,
               Vector<double>                       &velocity) {
