@@ -2,14 +2,17 @@
 """The friction solve on Gamma_3: builds the program in Release and runs the
 2D default scene and the 3D scene (prm/barboteu2015_3d.prm at h = k = 1/16
 and 1/32) on the Delassus path, and the 3D scene at 1/16 on the
-constraints path with CG-AMG, each with both friction methods ('Solver/
-Friction method = Newton' and 'convexification'), and the Delassus runs
-once more with the reference BLAS/LAPACK instead of the optimised one.
+constraints path with the direct solver and with CG-AMG, each with the
+default friction method (no 'Solver/Friction method' set: Newton) and with
+'Solver/Friction method = convexification', and the Delassus runs once more
+with the reference BLAS/LAPACK instead of the optimised one.
 
     python3 bench/friction_solver.py [--out bench/friction_solver.md]
 
 Printed for every run: unknowns, free nodes on Gamma_3, steps, Newton and
-convexification iterations per step, active set iterations per step, solves
+convexification iterations per step, the steps that ended beyond the
+convexity limit and those the convexification took over (Newton's summary
+line), active set iterations per step, solves
 with K per step, CG iterations per step, time per step, its ratio to one
 substitution with the factor of K, wall time and peak memory. Everything is
 measured in this run; the table goes to --out as Markdown.
@@ -27,9 +30,14 @@ SCENES = [
     ("3D, h = k = 1/16", "barboteu2015_3d.prm", [], "Delassus"),
     ("3D, h = k = 1/32", "barboteu2015_3d.prm",
      ["Geometry/Cell size=0.03125", "Time/Time step=0.03125"], "Delassus"),
-    ("3D, h = k = 1/16", "barboteu2015_3d.prm",
+    ("3D, h = k = 1/16", "barboteu2015_3d.prm", [], "constraints"),
+    ("3D, h = k = 1/16, CG-AMG", "barboteu2015_3d.prm",
      ["Solver/Linear solver=CG-AMG"], "constraints"),
 ]
+
+# The program's default (nothing set) and the paper's method.
+METHODS = (("default (Newton)", []),
+           ("convexification", ["Solver/Friction method=convexification"]))
 
 # Debian's reference BLAS/LAPACK, which the generic libblas.so.3 resolves to
 # without an optimised implementation.
@@ -49,13 +57,13 @@ def optional(pattern, text, default=0.):
     return float(match.group(1)) if match else default
 
 
-def run_scene(contact, scene, sets, path, method, directory, reference_blas):
+def run_scene(contact, scene, sets, path, method_sets, directory, reference_blas):
     saved = os.environ.get("LD_LIBRARY_PATH")
     if reference_blas:
         os.environ["LD_LIBRARY_PATH"] = REFERENCE_BLAS
     try:
-        output, wall, memory = run(contact, os.path.join(ROOT, "prm", scene), sets + [
-            f"Solver/Contact solver={path}", f"Solver/Friction method={method}",
+        output, wall, memory = run(contact, os.path.join(ROOT, "prm", scene), sets + method_sets + [
+            f"Solver/Contact solver={path}",
             "Output/VTU interval=0", "Output/Progress interval=0",
             "Output/Print timings=true", f"Output/Output directory={directory}"])
     finally:
@@ -70,6 +78,8 @@ def run_scene(contact, scene, sets, path, method, directory, reference_blas):
         "steps": steps,
         "newton": optional(r"Newton on the full friction law: (\d+) iterations",
                            output) / steps,
+        "beyond": optional(r"(\d+) steps ended beyond the convexity limit", output),
+        "taken over": optional(r"the convexification took over in (\d+) steps", output),
         "convexification": number(r"(\d+) convexification iterations", output) / steps,
         "active set": number(r"(\d+) active set iterations", output) / steps,
         "solves": number(r"Solves with K per step: ([0-9.e+-]+)", output),
@@ -85,6 +95,7 @@ def main():
     contact, out, lines = start("friction_solver.md", [
         "scene", "path", "BLAS", "friction method", "unknowns",
         "free nodes on Gamma_3", "steps", "Newton it./step",
+        "steps beyond the convexity limit", "steps taken over",
         "convexification it./step", "active set it./step",
         "solves with K/step", "CG it./step", "per step [ms]",
         "step / substitution (or solve)", "wall [s]", "peak memory [MB]"])
@@ -96,13 +107,14 @@ def main():
             blas_choices = (False, True) if path == "Delassus" else (False,)
             for reference_blas in blas_choices:
                 r = {}
-                for method in ("Newton", "convexification"):
+                for method, method_sets in METHODS:
                     x = r[method] = run_scene(
-                        contact, scene, sets, path, method,
+                        contact, scene, sets, path, method_sets,
                         f"{tmp}/{len(lines)}", reference_blas)
                     line = (f"| {name} | {path} | {'reference' if reference_blas else 'optimised'} "
                             f"| {method} | {x['unknowns']:.0f} | {x['gamma3']:.0f} "
-                            f"| {x['steps']:.0f} | {x['newton']:.1f} "
+                            f"| {x['steps']:.0f} | {x['newton']:.2f} "
+                            f"| {x['beyond']:.0f} | {x['taken over']:.0f} "
                             f"| {x['convexification']:.1f} | {x['active set']:.1f} "
                             f"| {x['solves']:.1f} | {x['cg']:.0f} | {x['per step']:.1f} "
                             f"| {x['ratio']:.2f} | {x['wall']:.2f} | {x['memory']:.0f} |")
@@ -110,7 +122,8 @@ def main():
                     print(line, flush=True)
                 notes.append(
                     f"{name}, {path}, {'reference' if reference_blas else 'optimised'} "
-                    f"BLAS: Newton takes {r['Newton']['per step'] / r['convexification']['per step']:.2f} "
+                    f"BLAS: the default (Newton) takes "
+                    f"{r[METHODS[0][0]]['per step'] / r['convexification']['per step']:.2f} "
                     f"times the time per step of the convexification.")
     lines += [""] + notes
     print("\n".join([""] + notes))

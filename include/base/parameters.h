@@ -384,7 +384,7 @@ namespace Contact
       newton,
       convexification
     };
-    FrictionMethod friction_method = FrictionMethod::convexification;
+    FrictionMethod friction_method = FrictionMethod::newton;
     unsigned int   max_newton_iterations;
 
     /** The names of the choices of 'Linear solver' (Amesos takes its

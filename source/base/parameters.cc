@@ -629,7 +629,7 @@ namespace Contact
         "slip set does not change.");
       prm.declare_entry(
         "Friction method",
-        friction_methods().name(FrictionMethod::convexification),
+        friction_methods().name(FrictionMethod::newton),
         friction_methods().pattern(),
         "How the nonmonotone friction problem of a step is solved. Newton: "
         "a semismooth Newton method on the full law, with the derivative of "
@@ -645,11 +645,14 @@ namespace Contact
         "Newton iterations', the convexification solves the step. "
         "convexification: the paper's fixed point, one Tresca "
         "problem per iteration (with Anderson acceleration), solved by the "
-        "primal-dual active set method. Both find the same solution where "
-        "the step problem has one; where it has several (S (a - b) alpha "
-        "above the convexity limit printed at start-up) they may end on "
-        "different local minima (doc/algorithm.md), which is why the "
-        "convexification stays the default for now.");
+        "primal-dual active set method; it is the fallback of Newton. Both "
+        "find the same solution where the step problem has one; where it "
+        "has several (S (a - b) alpha above the convexity limit printed at "
+        "start-up) both start with the same Tresca step from the previous "
+        "step's state and may then end on different local minima: Newton "
+        "returns the one its descent on the step's energy reaches "
+        "(doc/algorithm.md), and its summary line counts the steps beyond "
+        "the convexity limit and the steps the convexification took over.");
       prm.declare_entry("Max Newton iterations",
                         "50",
                         Patterns::Integer(1),

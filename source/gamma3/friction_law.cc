@@ -217,7 +217,10 @@ namespace Contact
       return signature;
     }
 
-    // max_p |eta_p - P_{B(g_p)}(eta_p + c_p v_p)|: zero at a solution.
+    // max_p |eta_p - P_{B(g_p)}(eta_p + c_p v_p)|, with the Euclidean norm
+    // of the node's vector, not the largest component: a change of the
+    // tangent basis (a rotated scene) must not move the decisions taken on
+    // it. Zero at a solution.
     double complementarity_residual(const unsigned int    m,
                                     const Vector<double> &eta,
                                     const Vector<double> &v,
@@ -236,9 +239,10 @@ namespace Contact
             }
           z_norm             = std::sqrt(z_norm);
           const double scale = (z_norm > g[p] ? g[p] / z_norm : 1.);
+          double       defect = 0;
           for (unsigned int i = 0; i < m; ++i)
-            residual =
-              std::max(residual, std::abs(eta[p * m + i] - scale * z[i]));
+            defect += std::pow(eta[p * m + i] - scale * z[i], 2);
+          residual = std::max(residual, std::sqrt(defect));
         }
       return residual;
     }

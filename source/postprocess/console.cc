@@ -12,7 +12,10 @@
 #include <core/postprocessor.h>
 #include <postprocess/slip_zone.h>
 
+#include <array>
 #include <iomanip>
+#include <limits>
+#include <sstream>
 
 namespace Contact
 {
@@ -35,6 +38,34 @@ namespace Contact
        [](ParameterHandler &prm, const Parameters &) -> std::any {
          return static_cast<unsigned int>(prm.get_integer(progress_entry));
        }});
+
+    // A sum whose terms cancel (the friction force of a symmetric stick
+    // state, the momentum of a body at rest, the friction dissipation of
+    // a sticking body) is round-off or solver tolerance, whose digits
+    // depend on the order of the sums, the BLAS kernel and the solver's
+    // path: a value below `relative` times the size of its terms prints as
+    // "below <bound>" (an exact zero as 0).
+    std::string resolved(const double value,
+                         const double term_size,
+                         const double relative = 1e-10)
+    {
+      std::ostringstream text;
+      const double       bound = relative * term_size;
+      if (value != 0. && std::abs(value) <= bound)
+        text << "below " << std::setprecision(1) << std::scientific << bound;
+      else
+        text << std::setprecision(6) << value;
+      return text.str();
+    }
+
+    template <int dim>
+    std::string resolved(const Tensor<1, dim> &value, const double term_size)
+    {
+      std::string text;
+      for (unsigned int d = 0; d < dim; ++d)
+        text += (d > 0 ? " " : "") + resolved(value[d], term_size);
+      return text;
+    }
   } // namespace
 
 
@@ -178,8 +209,14 @@ namespace Contact
         // The sum of the nodal forces: along the tangent in 2D, as a
         // vector in 3D.
         Tensor<1, dim> friction;
+        double         nodal_forces = 0;
         for (unsigned int p = 0; p < contact_nodes.size(); ++p)
-          friction += contact_nodes[p].tangential_vector(friction_force, p);
+          {
+            const auto force =
+              contact_nodes[p].tangential_vector(friction_force, p);
+            friction += force;
+            nodal_forces += force.norm();
+          }
         // A scalar along the tangent where Gamma_3 is straight (all its
         // nodes share one tangent), the vector otherwise. (The slip zone
         // is given by its x range, which locates it on any open Gamma_3,
@@ -189,13 +226,21 @@ namespace Contact
           straight =
             straight &&
             (node.tangents[0] - contact_nodes[0].tangents[0]).norm() < 1e-12;
-        this->pcout() << "; friction force ";
-        if (straight)
-          this->pcout() << friction * contact_nodes[0].tangents[0];
-        else
-          this->pcout() << friction;
+        this->pcout() << "; friction force "
+                      << (straight ?
+                            resolved(friction * contact_nodes[0].tangents[0],
+                                     nodal_forces) :
+                            resolved(friction, nodal_forces));
+        // |sum_i a_i w_i| <= |a| |w| bounds the terms of each component.
+        double momentum_terms = 0;
+        for (const VectorType &density : this->matrices().momentum_density)
+          momentum_terms =
+            std::max(momentum_terms,
+                     density.l2_norm() * state.velocity.l2_norm());
         this->pcout() << ", momentum "
-                      << this->matrices().momentum(state.velocity) << std::endl;
+                      << resolved(this->matrices().momentum(state.velocity),
+                                  momentum_terms)
+                      << std::endl;
       }
   }
 
@@ -237,13 +282,28 @@ namespace Contact
                     << std::lround(static_cast<double>(totals.cg_iterations) /
                                    n_steps)
                     << std::endl;
+    // The terms of the energy identity balance to the solvers' tolerance
+    // (the self-checks require 1e-8): a term below 1e-9 of the largest is
+    // not resolved.
+    const std::array<double, 6> terms   = {energy.kinetic,
+                                           energy.elastic,
+                                           energy.external_work,
+                                           energy.viscous_dissipation,
+                                           energy.friction_dissipation,
+                                           energy.numerical_dissipation};
+    double                      largest = 0;
+    for (const double term : terms)
+      largest = std::max(largest, std::abs(term));
+    const auto term = [&](const double value) {
+      return resolved(value, largest, 1e-9);
+    };
     this->pcout() << "Energy at t = " << now << ": kinetic "
-                  << std::setprecision(6) << energy.kinetic << ", elastic "
-                  << energy.elastic << ", external work "
-                  << energy.external_work << ", viscous "
-                  << energy.viscous_dissipation << ", friction "
-                  << energy.friction_dissipation << ", numerical "
-                  << energy.numerical_dissipation << std::endl;
+                  << std::setprecision(6) << term(energy.kinetic)
+                  << ", elastic " << term(energy.elastic) << ", external work "
+                  << term(energy.external_work) << ", viscous "
+                  << term(energy.viscous_dissipation) << ", friction "
+                  << term(energy.friction_dissipation) << ", numerical "
+                  << term(energy.numerical_dissipation) << std::endl;
   }
 
 
