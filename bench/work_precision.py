@@ -60,6 +60,7 @@ MANUFACTURED = [
     ("Q1, k = h, tolerance 1e-6", ["Geometry/Finite element degree=1",
                                    "Geometry/Cell size=0.125", "Time/Time step=0.125",
                                    "Convergence study/Levels=4",
+                                   "Solver/Friction method=convexification",
                                    "Solver/Convexification tolerance=1e-6"]),
     ("Q1, k = h, active set parameter 1", ["Geometry/Finite element degree=1",
                                            "Geometry/Cell size=0.125",
@@ -70,6 +71,7 @@ MANUFACTURED = [
                                           "Geometry/Cell size=0.125",
                                           "Time/Time step=0.125",
                                           "Convergence study/Levels=4",
+                                          "Solver/Friction method=convexification",
                                           "Solver/Anderson depth=0"]),
 ]
 

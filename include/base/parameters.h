@@ -93,10 +93,13 @@ namespace Contact
       "Solver/Max active set iterations";
     inline const std::string active_set_parameter =
       "Solver/Active set parameter";
-    inline const std::string anderson_depth      = "Solver/Anderson depth";
-    inline const std::string linear_solver       = "Solver/Linear solver";
-    inline const std::string step_cuts           = "Solver/Step cuts";
-    inline const std::string contact_solver      = "Solver/Contact solver";
+    inline const std::string anderson_depth  = "Solver/Anderson depth";
+    inline const std::string linear_solver   = "Solver/Linear solver";
+    inline const std::string step_cuts       = "Solver/Step cuts";
+    inline const std::string contact_solver  = "Solver/Contact solver";
+    inline const std::string friction_method = "Solver/Friction method";
+    inline const std::string max_newton_iterations =
+      "Solver/Max Newton iterations";
     inline const std::string output_directory    = "Output/Output directory";
     inline const std::string time_series         = "Output/Time series";
     inline const std::string vtu_interval        = "Output/VTU interval";
@@ -157,6 +160,8 @@ namespace Contact
               linear_solver,
               step_cuts,
               contact_solver,
+              friction_method,
+              max_newton_iterations,
               output_directory,
               time_series,
               vtu_interval,

@@ -226,12 +226,15 @@ namespace Contact
   Curvature definiteness(LAPACKFullMatrix<double> matrix);
 
   /** v_free, formed when first asked for: on the constraints path it costs
-   *  a solve with K that a step converging in one Newton step never needs
-   *  (every sticking step). */
+   *  a solve with K that a step solved by its start or its first Newton
+   *  step never needs (e.g. a sticking step after a sticking one). */
   using FreeVelocity = std::function<const Vector<double> &()>;
 
   /** The method with the linear algebra supplied by the caller (e.g. on the
-   *  whole body instead of on D). */
+   *  whole body instead of on D). The first sets are those of eta and the
+   *  velocity v = velocity(eta); without a velocity function (an empty
+   *  one), those of eta and v as given, which then need not belong to each
+   *  other (a guess of the sets that costs no solve). */
   TrescaResult solve_tresca(const TrescaVelocity   &velocity,
                             const TrescaNewtonStep &newton_step,
                             const unsigned int      n_components,
@@ -299,6 +302,9 @@ namespace Contact
      *  (a saddle, or a path that cannot tell): converged is false, and the
      *  caller takes another method. */
     bool minimum_not_certified = false;
+    /** A Tresca problem (the start, or a convexification step) did not
+     *  converge within its active set iterations. */
+    bool tresca_failed = false;
   };
 
   /**
@@ -345,9 +351,13 @@ namespace Contact
    *   nonconvex (law.may_be_nonconvex()) the start selects the solution:
    *   the first iterate is then the convexification's, the Tresca problem
    *   with the bounds of the previous slip rates (a descent from the
-   *   previous velocities, counted as a convexification step), and every
-   *   Newton step from it is line searched.
-   * - At a solution (the sets repeat and max |F_p| <=
+   *   previous velocities, counted as a convexification step; its active
+   *   set method's first sets are those of eta and v on entry, no solve),
+   *   and every Newton step from it is line searched. Where that start
+   *   already satisfies the full law (max |F_p| below the tolerance), it
+   *   is the solution, with the same second-order check.
+   * - At a solution (the sets repeat and max_p |F_p| (the Euclidean norm
+   *   of the node's vector) <=
    *   friction_residual_tolerance max_p g_p(0)) where some slip node weakens
    *   faster than weakening_cap_fraction times the convexity limit, the
    *   curvature test decides whether it is a local minimum; if it is not

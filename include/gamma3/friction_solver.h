@@ -335,7 +335,7 @@ namespace Contact
          largest_weighted_delassus_eigenvalue(const double tolerance);
     void solve_friction_problem(const StepLabel &label,
                                 StepStatistics  &statistics);
-    bool solve_by_newton(StepStatistics &statistics);
+    std::string solve_by_newton(StepStatistics &statistics);
     void solve_by_convexification(const StepLabel &label,
                                   StepStatistics  &statistics);
     std::pair<TrescaVelocity, TrescaNewtonStep> path_operators();

@@ -610,7 +610,7 @@ namespace Contact
   SolverParameters::friction_methods()
   {
     static const ChoiceTable<FrictionMethod> table(
-      "Solver/Friction method",
+      Entry::friction_method,
       {{"Newton", FrictionMethod::newton},
        {"convexification", FrictionMethod::convexification}});
     return table;

@@ -237,11 +237,14 @@ namespace Contact
               z[i] = eta[p * m + i] + c[p] * v[p * m + i];
               z_norm += z[i] * z[i];
             }
-          z_norm             = std::sqrt(z_norm);
-          const double scale = (z_norm > g[p] ? g[p] / z_norm : 1.);
+          z_norm              = std::sqrt(z_norm);
+          const double scale  = (z_norm > g[p] ? g[p] / z_norm : 1.);
           double       defect = 0;
           for (unsigned int i = 0; i < m; ++i)
-            defect += std::pow(eta[p * m + i] - scale * z[i], 2);
+            {
+              const double difference = eta[p * m + i] - scale * z[i];
+              defect += difference * difference;
+            }
           residual = std::max(residual, std::sqrt(defect));
         }
       return residual;
@@ -286,7 +289,8 @@ namespace Contact
       friction_residual_tolerance *
       std::max(g.linfty_norm(), std::numeric_limits<double>::min());
 
-    velocity(eta, v);
+    if (velocity)
+      velocity(eta, v);
     auto linearisation = linearise(m, eta, v, g, c);
 
     // Progress test for m = 2, where the slip directions may keep turning
@@ -633,13 +637,12 @@ namespace Contact
         bound[p] = law.bound(p, node_norm(v, p, m));
       new_eta = eta;
       new_v   = v;
-      // The active set method's first sets are those of (eta, v), which
-      // costs no solve even where v is not the velocity of eta this step
-      // (the previous step's state at the start of a step).
-      const auto keep_velocity = [](const Vector<double> &, Vector<double> &) {
-      };
+      // No velocity function: the active set method's first sets are those
+      // of (eta, v), which costs no solve even where v is not the velocity
+      // of eta this step (the previous step's state at the start of a
+      // step).
       std::vector<NodeState> state;
-      const TrescaResult     tresca = solve_tresca(keep_velocity,
+      const TrescaResult     tresca = solve_tresca(TrescaVelocity(),
                                                newton_step,
                                                m,
                                                bound,
@@ -761,13 +764,17 @@ namespace Contact
                                   start_eta,
                                   start_v,
                                   result))
-          return result;
+          {
+            result.tresca_failed = true;
+            return result;
+          }
         eta.swap(start_eta);
         v.swap(start_v);
       }
     auto linearisation = linearise_law(m, eta, v, law, c, capped);
-    // The start may already solve the step (every sticking step does).
-    bool solved =
+    // The start may already solve the step (a sticking step after a
+    // sticking one does).
+    const bool solved =
       nonconvex && law_residual(m, linearisation, eta, v, c) <= tolerance;
     if (solved)
       test_second_order(m, law, curvature, newton_step, c, eta, v, result);
@@ -842,7 +849,10 @@ namespace Contact
                                       new_eta,
                                       new_v,
                                       result))
-              break;
+              {
+                result.tresca_failed = true;
+                break;
+              }
             new_energy = law.energy(v_free(), new_eta, new_v, scale);
           }
         else if (length < 1.)

@@ -300,21 +300,49 @@ namespace Contact
     const bool newton = parameters.solver.friction_method ==
                           SolverParameters::FrictionMethod::newton &&
                         !friction_law.is_rate_independent();
-    if (!newton || !solve_by_newton(statistics))
-      solve_by_convexification(label, statistics);
+    const std::string newton_failure =
+      newton ? solve_by_newton(statistics) : "";
+    if (newton && newton_failure.empty())
+      return;
+    try
+      {
+        solve_by_convexification(label, statistics);
+      }
+    catch (const ExcStepNotConverged &failure)
+      {
+        if (!newton)
+          throw;
+        // The user chose (or kept) Newton: say that it failed first, and
+        // why, before what stopped its fallback.
+        std::ostringstream fallback;
+        failure.print_info(fallback);
+        std::string reason = fallback.str();
+        reason.erase(0, reason.find_first_not_of(" \n"));
+        reason.erase(reason.find_last_not_of(" \n") + 1);
+        AssertThrow(false,
+                    ExcStepNotConverged(
+                      "Newton's method ('" + Entry::friction_method +
+                      "' = Newton) did not solve step " +
+                      std::to_string(label.step_number) + ": " +
+                      newton_failure +
+                      ". The convexification that took over did not "
+                      "solve it either. " +
+                      reason));
+      }
   }
 
 
   // @sect4{FrictionSolver::solve_by_newton}
 
   // Newton's method on the full law from the previous step's forces, slip
-  // velocities and sets. It returns false, with the state of the step
-  // untouched, if it does not converge or ends on a point that its
-  // curvature test does not certify as a local minimum of E (friction.h).
+  // velocities and sets. It returns why it failed (empty where it did not),
+  // with the state of the step untouched, if it does not converge or ends
+  // on a point that its curvature test does not certify as a local minimum
+  // of E (friction.h).
   // Far from the solution its model caps the weakening at 0.9 times the
   // convexity limit, where the model is still convex.
   template <int dim>
-  bool FrictionSolver<dim>::solve_by_newton(StepStatistics &statistics)
+  std::string FrictionSolver<dim>::solve_by_newton(StepStatistics &statistics)
   {
     Vector<double> eta(current.friction_force), v(current.slip_velocity);
     std::vector<NodeState> state;
@@ -345,12 +373,24 @@ namespace Contact
       {
         ++statistics.newton_fallbacks;
         statistics.minima_not_certified += result.minimum_not_certified;
-        return false;
+        // The same reason on every process.
+        if (!all_processes(!result.minimum_not_certified))
+          return "its end point was not certified a local minimum of the "
+                 "step's energy";
+        if (!all_processes(!result.tresca_failed))
+          return "a Tresca problem inside it did not converge within '" +
+                 Entry::max_active_set_iterations + "' = " +
+                 std::to_string(parameters.solver.max_active_set_iterations) +
+                 " iterations";
+        return "it did not converge within '" + Entry::max_newton_iterations +
+               "' = " +
+               std::to_string(parameters.solver.max_newton_iterations) +
+               " iterations";
       }
     current.friction_force = eta;
     current.slip_velocity  = v;
     current.node_state     = state;
-    return true;
+    return "";
   }
 
 
@@ -396,6 +436,9 @@ namespace Contact
     double                 residual        = 0;
     double                 rate_scale      = 0;
     bool                   converged       = false;
+    // Its own count: where it takes over from Newton, the Tresca steps
+    // Newton took do not use up its 'Max convexification iterations'.
+    unsigned int iterations = 0;
 
     const auto energy_on_gamma3 = [&]() {
       // E(v) with v = v_free - D eta: the quadratic term is
@@ -410,9 +453,9 @@ namespace Contact
       return value;
     };
 
-    while (!converged && statistics.convexification_iterations <
-                           solver.max_convexification_iterations)
+    while (!converged && iterations < solver.max_convexification_iterations)
       {
+        ++iterations;
         ++statistics.convexification_iterations;
         for (unsigned int p = 0; p < n; ++p)
           bound[p] = friction_law.is_frictionless() ?
@@ -427,9 +470,9 @@ namespace Contact
           ExcStepNotConverged(
             "The active set method for the Tresca problem did not converge "
             "in step " +
-            std::to_string(label.step_number) + " (t = " +
-            std::to_string(label.time) + ", convexification iteration " +
-            std::to_string(statistics.convexification_iterations) +
+            std::to_string(label.step_number) +
+            " (t = " + std::to_string(label.time) +
+            ", convexification iteration " + std::to_string(iterations) +
             ") within " + std::to_string(solver.max_active_set_iterations) +
             " iterations ('" + Entry::max_active_set_iterations +
             "'); its "

@@ -12,9 +12,8 @@
 #include <core/postprocessor.h>
 #include <postprocess/slip_zone.h>
 
-#include <array>
+#include <cmath>
 #include <iomanip>
-#include <limits>
 #include <sstream>
 
 namespace Contact
@@ -51,7 +50,7 @@ namespace Contact
     {
       std::ostringstream text;
       const double       bound = relative * term_size;
-      if (value != 0. && std::abs(value) <= bound)
+      if (value != 0. && std::isfinite(bound) && std::abs(value) <= bound)
         text << "below " << std::setprecision(1) << std::scientific << bound;
       else
         text << std::setprecision(6) << value;
@@ -261,7 +260,9 @@ namespace Contact
                   << totals.active_set_iterations << " active set iterations, "
                   << totals.rejected_accelerations << " rejected accelerations."
                   << std::endl;
-    if (totals.newton_iterations > 0)
+    // Also where Newton took no iteration (every step solved by its start)
+    // but handed steps to the convexification.
+    if (totals.newton_iterations > 0 || totals.newton_fallbacks > 0)
       this->pcout() << "Newton on the full friction law: "
                     << totals.newton_iterations << " iterations, "
                     << std::setprecision(3)
@@ -283,27 +284,31 @@ namespace Contact
                                    n_steps)
                     << std::endl;
     // The terms of the energy identity balance to the solvers' tolerance
-    // (the self-checks require 1e-8): a term below 1e-9 of the largest is
-    // not resolved.
-    const std::array<double, 6> terms   = {energy.kinetic,
-                                           energy.elastic,
-                                           energy.external_work,
-                                           energy.viscous_dissipation,
-                                           energy.friction_dissipation,
-                                           energy.numerical_dissipation};
-    double                      largest = 0;
-    for (const double term : terms)
-      largest = std::max(largest, std::abs(term));
-    const auto term = [&](const double value) {
+    // (the self-checks require 1e-8): a cancelling sum below 1e-9 of the
+    // largest term is not resolved.
+    const double terms[] = {energy.kinetic,
+                            energy.elastic,
+                            energy.external_work,
+                            energy.viscous_dissipation,
+                            energy.friction_dissipation,
+                            energy.numerical_dissipation};
+    double       largest = 0;
+    for (const double value : terms)
+      largest = std::max(largest, std::abs(value));
+    // Only the sums whose terms cancel: the external work and the friction
+    // and numerical dissipation. The energies and the viscous dissipation
+    // are sums of quadratic forms, resolved however small (a body of
+    // density 1e-6 at rest has a kinetic energy of 1e-8).
+    const auto cancelling = [&](const double value) {
       return resolved(value, largest, 1e-9);
     };
     this->pcout() << "Energy at t = " << now << ": kinetic "
-                  << std::setprecision(6) << term(energy.kinetic)
-                  << ", elastic " << term(energy.elastic) << ", external work "
-                  << term(energy.external_work) << ", viscous "
-                  << term(energy.viscous_dissipation) << ", friction "
-                  << term(energy.friction_dissipation) << ", numerical "
-                  << term(energy.numerical_dissipation) << std::endl;
+                  << std::setprecision(6) << energy.kinetic << ", elastic "
+                  << energy.elastic << ", external work "
+                  << cancelling(energy.external_work) << ", viscous "
+                  << energy.viscous_dissipation << ", friction "
+                  << cancelling(energy.friction_dissipation) << ", numerical "
+                  << cancelling(energy.numerical_dissipation) << std::endl;
   }
 
 
