@@ -332,12 +332,12 @@ namespace Contact
                      Factorization    &factorization);
     bool delassus_operator_pays(const Factorization &factorization) const;
     std::pair<double, bool>
-         largest_weighted_delassus_eigenvalue(const double tolerance);
-    void solve_friction_problem(const StepLabel &label,
-                                StepStatistics  &statistics);
+                largest_weighted_delassus_eigenvalue(const double tolerance);
+    void        solve_friction_problem(const StepLabel &label,
+                                       StepStatistics  &statistics);
     std::string solve_by_newton(StepStatistics &statistics);
-    void solve_by_convexification(const StepLabel &label,
-                                  StepStatistics  &statistics);
+    void        solve_by_convexification(const StepLabel &label,
+                                         StepStatistics  &statistics);
     std::pair<TrescaVelocity, TrescaNewtonStep> path_operators();
     TrescaResult solve_tresca_problem(const Vector<double>   &bound,
                                       Vector<double>         &eta,

@@ -300,9 +300,13 @@ namespace Contact
     const bool newton = parameters.solver.friction_method ==
                           SolverParameters::FrictionMethod::newton &&
                         !friction_law.is_rate_independent();
-    const std::string newton_failure =
-      newton ? solve_by_newton(statistics) : "";
-    if (newton && newton_failure.empty())
+    if (!newton)
+      {
+        solve_by_convexification(label, statistics);
+        return;
+      }
+    const std::string newton_failure = solve_by_newton(statistics);
+    if (newton_failure.empty())
       return;
     try
       {
@@ -310,8 +314,6 @@ namespace Contact
       }
     catch (const ExcStepNotConverged &failure)
       {
-        if (!newton)
-          throw;
         // The user chose (or kept) Newton: say that it failed first, and
         // why, before what stopped its fallback.
         std::ostringstream fallback;
