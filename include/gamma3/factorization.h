@@ -78,6 +78,23 @@ namespace Contact
     virtual std::unique_ptr<Factorization>
     for_variant(const TrilinosWrappers::SparseMatrix &variant) const = 0;
 
+    /**
+     * A solver for a symmetric variant K' that may be indefinite (the
+     * Newton matrix of the constraints path with the true weakening
+     * slopes), where this solver has one: MINRES with the preconditioner of
+     * CG-AMG's variants, which MINRES needs symmetric positive definite and
+     * which they are. Only where solves_indefinite_variants(): the direct
+     * solvers factorise without pivoting for indefiniteness (CHOLMOD refuses
+     * an indefinite matrix).
+     */
+    virtual std::unique_ptr<Factorization>
+    for_indefinite_variant(const TrilinosWrappers::SparseMatrix &variant) const;
+
+    virtual bool solves_indefinite_variants() const
+    {
+      return false;
+    }
+
     /** Iterations of the iterative solver (CG-AMG) so far, summed over
      *  this solver and its variants; 0 for direct solvers. */
     virtual unsigned long int iterations() const

@@ -302,6 +302,9 @@ namespace Contact
      *  (a saddle, or a path that cannot tell): converged is false, and the
      *  caller takes another method. */
     bool minimum_not_certified = false;
+    /** Saddles of E (solutions of the law with negative curvature on the
+     *  slip set) that the method left along their negative curvature. */
+    unsigned int saddle_exits = 0;
     /** A Tresca problem (the start, or a convexification step) did not
      *  converge within its active set iterations. */
     bool tresca_failed = false;
@@ -360,9 +363,14 @@ namespace Contact
    *   of the node's vector) <=
    *   friction_residual_tolerance max_p g_p(0)) where some slip node weakens
    *   faster than weakening_cap_fraction times the convexity limit, the
-   *   curvature test decides whether it is a local minimum; if it is not
-   *   certified one, the result says so (minimum_not_certified) and is not
-   *   converged.
+   *   curvature test decides whether it is a local minimum. Where it finds
+   *   negative curvature (a saddle), the method leaves the point along the
+   *   direction of most negative curvature on the slip set, to the lowest
+   *   E among a few lengths both ways (no solve: v and eta move together),
+   *   and goes on from there with the capped model; every later step keeps
+   *   E below the saddle's, so it is never met again. After three such
+   *   exits, or where the test cannot tell, or no length lowers E, the
+   *   result says so (minimum_not_certified) and is not converged.
    * (eta, v, state) are the solution where the result converged and are
    * unspecified otherwise.
    */

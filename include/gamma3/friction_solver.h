@@ -123,10 +123,12 @@ namespace Contact
     // The Newton method on the full law ('Solver/Friction method'): its
     // iterations; 1 where it ended with a slip node weakening beyond the
     // convexity limit (E not convex there: the curvature test decided);
-    // 1 where the convexification took over, and of these 1 where Newton's
-    // end point was not certified as a local minimum of E.
+    // the saddles of E it left along their negative curvature; 1 where the
+    // convexification took over, and of these 1 where Newton's end point
+    // was not certified as a local minimum of E.
     unsigned int newton_iterations      = 0;
     unsigned int beyond_convexity_limit = 0;
+    unsigned int saddle_exits           = 0;
     unsigned int newton_fallbacks       = 0;
     unsigned int minima_not_certified   = 0;
     // Solves with K or a variant of it (a forward and a backward
@@ -148,6 +150,7 @@ namespace Contact
       step_cuts += other.step_cuts;
       newton_iterations += other.newton_iterations;
       beyond_convexity_limit += other.beyond_convexity_limit;
+      saddle_exits += other.saddle_exits;
       newton_fallbacks += other.newton_fallbacks;
       minima_not_certified += other.minima_not_certified;
       solves_with_K += other.solves_with_K;

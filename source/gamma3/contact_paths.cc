@@ -548,6 +548,7 @@ namespace Contact
       // zhat it puts on the slip nodes and the dofs it holds fixed.
       void assemble_newton_system(
         const std::vector<NodeLinearisation> &linearisation,
+        const bool                            true_slopes,
         MatrixType                           &matrix,
         Vector<double>                       &slip_force,
         VectorType                           &load,
@@ -569,6 +570,11 @@ namespace Contact
       };
       DefiniteNewtonSystem definite_newton_system(
         const std::vector<NodeLinearisation> &linearisation);
+
+      void add_woodbury_correction(
+        const std::vector<NodeLinearisation> &linearisation,
+        DefiniteNewtonSystem                 &system,
+        VectorType                           &w) const;
 
       // The slip velocities along zhat of the given nodes.
       Vector<double>
@@ -628,6 +634,7 @@ namespace Contact
     template <int dim>
     void ActiveSetAsConstraints<dim>::assemble_newton_system(
       const std::vector<NodeLinearisation> &linearisation,
+      const bool                            true_slopes,
       MatrixType                           &matrix,
       Vector<double>                       &slip_force,
       VectorType                           &load,
@@ -665,8 +672,10 @@ namespace Contact
           for (unsigned int a = 0; a < dim; ++a)
             for (unsigned int b = 0; b < dim; ++b)
               {
-                spring(a, b) = std::max(slip.slope, slip.definite_slope) *
-                               directions[0][a] * directions[0][b];
+                spring(a, b) =
+                  (true_slopes ? slip.slope :
+                                 std::max(slip.slope, slip.definite_slope)) *
+                  directions[0][a] * directions[0][b];
                 if (m == 2)
                   spring(a, b) +=
                     directions[1][a] * directions[1][b] / slip.beta;
@@ -708,6 +717,7 @@ namespace Contact
       system.matrix = std::make_unique<MatrixType>();
       system.load   = rhs;
       assemble_newton_system(linearisation,
+                             false,
                              *system.matrix,
                              system.slip_force,
                              system.load,
@@ -774,33 +784,62 @@ namespace Contact
     }
 
 
+    // w += Y (Delta^{-1} - Z^T Y)^{-1} Z^T w: w = H_d^{-1} load becomes
+    // H^{-1} load (see definite_newton_system()).
+    template <int dim>
+    void ActiveSetAsConstraints<dim>::add_woodbury_correction(
+      const std::vector<NodeLinearisation> &linearisation,
+      DefiniteNewtonSystem                 &system,
+      VectorType                           &w) const
+    {
+      if (system.steep.empty())
+        return;
+      Vector<double> coefficients =
+        velocity_along_slip(linearisation, system.steep, w);
+      // Singular only where H is: no Newton step there.
+      try
+        {
+          system.capacitance.compute_lu_factorization();
+        }
+      catch (const ExceptionBase &)
+        {
+          throw ExcIndefiniteNewtonMatrix();
+        }
+      system.capacitance.solve(coefficients);
+      for (unsigned int b = 0; b < system.steep.size(); ++b)
+        w.add(coefficients[b], system.responses[b]);
+    }
+
+
     template <int dim>
     void ActiveSetAsConstraints<dim>::newton_step(
       const std::vector<NodeLinearisation> &linearisation,
       Vector<double>                       &eta,
       Vector<double>                       &v)
     {
-      const unsigned int    n = gamma3.nodes.size(), m = dim - 1;
-      DefiniteNewtonSystem  system     = definite_newton_system(linearisation);
-      const Vector<double> &slip_force = system.slip_force;
-      VectorType            w(start);
-      solve(*system.solver, w, system.load);
-      if (!system.steep.empty())
+      const unsigned int n = gamma3.nodes.size(), m = dim - 1;
+      bool               steep = false;
+      for (const NodeLinearisation &node : linearisation)
+        steep = steep || (node.state == NodeState::slip && node.bound > 0 &&
+                          node.slope < node.definite_slope);
+      Vector<double> slip_force;
+      VectorType     w(start);
+      if (steep && factorization.solves_indefinite_variants())
         {
-          Vector<double> coefficients =
-            velocity_along_slip(linearisation, system.steep, w);
-          // Singular only where H is: no Newton step there.
-          try
-            {
-              system.capacitance.compute_lu_factorization();
-            }
-          catch (const ExceptionBase &)
-            {
-              throw ExcIndefiniteNewtonMatrix();
-            }
-          system.capacitance.solve(coefficients);
-          for (unsigned int b = 0; b < system.steep.size(); ++b)
-            w.add(coefficients[b], system.responses[b]);
+          // H itself, solved by MINRES: one solve instead of |B| + 1.
+          MatrixType        matrix;
+          VectorType        load(rhs);
+          std::vector<bool> stick_dof;
+          assemble_newton_system(
+            linearisation, true, matrix, slip_force, load, stick_dof);
+          solve(*factorization.for_indefinite_variant(matrix), w, load);
+        }
+      else
+        {
+          DefiniteNewtonSystem system = definite_newton_system(linearisation);
+          slip_force                  = system.slip_force;
+          solve(*system.solver, w, system.load);
+          add_woodbury_correction(linearisation, system, w);
         }
       v = gamma3.tangential_velocities(w);
 

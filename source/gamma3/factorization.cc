@@ -5,9 +5,11 @@
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_minres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <gamma3/factorization.h>
+#include <gamma3/friction.h>
 #include <base/parameters.h>
 #include <suitesparse/cholmod.h>
 
@@ -35,6 +37,14 @@ namespace Contact
     AssertThrow(false,
                 ExcMessage("This factorisation does not expose its "
                            "triangular factor."));
+  }
+
+  std::unique_ptr<Factorization> Factorization::for_indefinite_variant(
+    const TrilinosWrappers::SparseMatrix &) const
+  {
+    AssertThrow(false,
+                ExcMessage("This solver needs a positive definite matrix."));
+    return nullptr;
   }
 
 
@@ -123,6 +133,8 @@ namespace Contact
             x = 0.;
             return;
           }
+        if (indefinite)
+          return solve_by_minres(x, b);
         SolverControl                           control(10000,
                               SolverParameters::cg_relative_residual * norm);
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
@@ -150,6 +162,19 @@ namespace Contact
       for_variant(const TrilinosWrappers::SparseMatrix &variant) const override
       {
         return std::unique_ptr<Factorization>(new CgAmgSolver(variant, *this));
+      }
+
+      bool solves_indefinite_variants() const override
+      {
+        return true;
+      }
+
+      std::unique_ptr<Factorization> for_indefinite_variant(
+        const TrilinosWrappers::SparseMatrix &variant) const override
+      {
+        auto solver        = new CgAmgSolver(variant, *this);
+        solver->indefinite = true;
+        return std::unique_ptr<Factorization>(solver);
       }
 
       unsigned long int iterations() const override
@@ -184,6 +209,32 @@ namespace Contact
           }
       }
 
+      // MINRES measures the residual r in the norm of the preconditioner P,
+      // (r . P r)^{1/2}; it stops at the relative residual of CG in that
+      // norm. A matrix it cannot solve (singular) is reported as not
+      // positive definite, which the Newton method answers with another
+      // model.
+      void solve_by_minres(TrilinosWrappers::MPI::Vector       &x,
+                           const TrilinosWrappers::MPI::Vector &b)
+      {
+        TrilinosWrappers::MPI::Vector preconditioned(b);
+        precondition(preconditioned, b);
+        SolverControl                               control(10000,
+                              SolverParameters::cg_relative_residual *
+                                std::sqrt(preconditioned * b));
+        SolverMinRes<TrilinosWrappers::MPI::Vector> minres(control);
+        try
+          {
+            minres.solve(matrix, x, b, PreconditionerWrapper{*this});
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            *total_iterations += control.last_step();
+            throw ExcIndefiniteNewtonMatrix();
+          }
+        *total_iterations += control.last_step();
+      }
+
       // The preconditioner of a variant: the AMG of K on the coupled
       // unknowns, the diagonal on the decoupled ones (the sticking dofs of
       // the constraints path, whose rows and columns are zeroed). It is
@@ -206,6 +257,8 @@ namespace Contact
       const TrilinosWrappers::SparseMatrix              &matrix;
       std::shared_ptr<TrilinosWrappers::PreconditionAMG> preconditioner;
       std::shared_ptr<unsigned long int>                 total_iterations;
+      // Solved by MINRES (for_indefinite_variant()).
+      bool indefinite = false;
       // Local rows without off-diagonal entries, and their diagonal.
       std::vector<std::pair<int, double>> decoupled;
     };

@@ -511,84 +511,234 @@ namespace Contact
       return 0.;
     }
 
-    // The curvature test from Newton steps alone, for a path whose own test
-    // cannot tell (the Delassus path where D is singular on the stick
-    // unknowns; tests/unit/friction_newton_minimum compares it with the
-    // dense test). With the true slopes the Newton matrix is
+    // The responses of the capped model to more force along zhat_b on the
+    // slip nodes B that weaken faster than `cap`, and the capacitance matrix
+    // they give. With the true slopes the Newton matrix is
     // H = H_c - sum_{p in B} delta_p z_p z_p^T, where H_c caps the
-    // weakening at `cap` (positive definite, below the convexity limit), B
-    // are the slip nodes weakening faster, delta_p the excess and z_p the
-    // load of a unit force along zhat_p. H is positive definite iff the
-    // capacitance matrix I - Delta^{1/2} Z^T H_c^{-1} Z Delta^{1/2} is
-    // (Sylvester's law of inertia), and Z^T H_c^{-1} Z is the response of
-    // the slip velocities along zhat to unit forces, which |B| + 1 Newton
-    // steps with the capped model give (more force along zhat_b is the
-    // load -z_b; it is scaled like the forces, so that the difference of
-    // two steps is not lost in their round-off): |B| + 1 solves.
-    Curvature capacitance_test(const TrescaNewtonStep        &newton_step,
-                               const unsigned int             m,
-                               const NodalLaw                &law,
-                               const double                   cap,
-                               std::vector<NodeLinearisation> capped,
-                               const Vector<double>          &eta,
-                               const Vector<double>          &v)
+    // weakening at `cap` (positive definite, below the convexity limit),
+    // delta_p is the excess and z_p the load of a unit force along zhat_p.
+    // H is positive definite iff the capacitance matrix
+    // I - Delta^{1/2} Z^T H_c^{-1} Z Delta^{1/2} is (Sylvester's law of
+    // inertia), and Z^T H_c^{-1} Z is the response of the slip velocities
+    // along zhat to unit forces, which |B| + 1 Newton steps with the capped
+    // model give (more force along zhat_b is the load -z_b; it is scaled
+    // like the forces, so that the difference of two steps is not lost in
+    // their round-off): |B| + 1 solves.
+    struct SteepResponses
     {
-      std::vector<unsigned int> B;
+      std::vector<unsigned int> nodes;
       std::vector<double>       excess;
+      // Forces and velocities per unit force along zhat_b.
+      std::vector<Vector<double>> eta, v;
+      LAPACKFullMatrix<double>    capacitance;
+    };
+
+    SteepResponses steep_responses(const TrescaNewtonStep        &newton_step,
+                                   const unsigned int             m,
+                                   const NodalLaw                &law,
+                                   const double                   cap,
+                                   std::vector<NodeLinearisation> capped,
+                                   const Vector<double>          &eta,
+                                   const Vector<double>          &v)
+    {
+      SteepResponses result;
       for (unsigned int p = 0; p < capped.size(); ++p)
         if (capped[p].state == NodeState::slip &&
             capped[p].slope < -cap * law.weights[p])
           {
-            B.push_back(p);
-            excess.push_back(-capped[p].slope - cap * law.weights[p]);
+            result.nodes.push_back(p);
+            result.excess.push_back(-capped[p].slope - cap * law.weights[p]);
             capped[p].slope = -cap * law.weights[p];
           }
       const auto response = [&](const std::vector<NodeLinearisation> &model,
+                                Vector<double>                       &force,
                                 Vector<double>                       &w) {
-        Vector<double> force(eta);
-        w = v;
+        force = eta;
+        w     = v;
         newton_step(model, force, w);
       };
-      // The perturbation of the force: the size of the forces, so that the
-      // difference of two solves is not lost in their round-off.
       double force_scale = 0;
       for (const NodeLinearisation &node : capped)
         force_scale = std::max(force_scale, node.bound);
-      Vector<double> base, perturbed;
-      response(capped, base);
-      LAPACKFullMatrix<double> capacitance(B.size(), B.size());
-      for (unsigned int b = 0; b < B.size(); ++b)
+      Vector<double> base_eta, base_v;
+      response(capped, base_eta, base_v);
+      const unsigned int n_steep = result.nodes.size();
+      result.eta.resize(n_steep);
+      result.v.resize(n_steep);
+      result.capacitance.reinit(n_steep, n_steep);
+      for (unsigned int b = 0; b < n_steep; ++b)
         {
           std::vector<NodeLinearisation> model = capped;
-          model[B[b]].force += force_scale;
-          response(model, perturbed);
-          perturbed -= base;
-          perturbed /= force_scale;
-          for (unsigned int a = 0; a < B.size(); ++a)
+          model[result.nodes[b]].force += force_scale;
+          response(model, result.eta[b], result.v[b]);
+          result.eta[b] -= base_eta;
+          result.eta[b] /= force_scale;
+          result.v[b] -= base_v;
+          result.v[b] /= force_scale;
+          for (unsigned int a = 0; a < n_steep; ++a)
             {
               double along = 0;
               for (unsigned int i = 0; i < m; ++i)
-                along += capped[B[a]].direction[i] * perturbed[B[a] * m + i];
-              capacitance(a, b) =
-                (a == b ? 1. : 0.) + std::sqrt(excess[a] * excess[b]) * along;
+                along += capped[result.nodes[a]].direction[i] *
+                         result.v[b][result.nodes[a] * m + i];
+              result.capacitance(a, b) =
+                (a == b ? 1. : 0.) +
+                std::sqrt(result.excess[a] * result.excess[b]) * along;
             }
         }
-      return definiteness(capacitance);
+      return result;
+    }
+
+    // The curvature test from Newton steps alone, for a path whose own test
+    // cannot tell (the Delassus path where D is singular on the stick
+    // unknowns; tests/unit/friction_newton_minimum compares it with the
+    // dense test).
+    Curvature
+    capacitance_test(const TrescaNewtonStep               &newton_step,
+                     const unsigned int                    m,
+                     const NodalLaw                       &law,
+                     const double                          cap,
+                     const std::vector<NodeLinearisation> &linearisation,
+                     const Vector<double>                 &eta,
+                     const Vector<double>                 &v)
+    {
+      return definiteness(
+        steep_responses(newton_step, m, law, cap, linearisation, eta, v)
+          .capacitance);
+    }
+
+    // The eigenvector of the symmetric part of `matrix` for its lowest
+    // eigenvalue if that is negative, else an empty vector.
+    Vector<double> most_negative_direction(LAPACKFullMatrix<double> matrix)
+    {
+      const unsigned int n    = matrix.m();
+      double             size = 1.;
+      for (unsigned int a = 0; a < n; ++a)
+        for (unsigned int b = 0; b < a; ++b)
+          matrix(a, b) = matrix(b, a) = 0.5 * (matrix(a, b) + matrix(b, a));
+      for (unsigned int a = 0; a < n; ++a)
+        for (unsigned int b = 0; b < n; ++b)
+          size += std::abs(matrix(a, b));
+      Vector<double>     eigenvalues;
+      FullMatrix<double> eigenvectors;
+      matrix.compute_eigenvalues_symmetric(
+        -size, 0., 1e-12 * size, eigenvalues, eigenvectors);
+      Vector<double> direction;
+      if (eigenvalues.size() == 0)
+        return direction;
+      unsigned int lowest = 0;
+      for (unsigned int k = 1; k < eigenvalues.size(); ++k)
+        if (eigenvalues[k] < eigenvalues[lowest])
+          lowest = k;
+      direction.reinit(n);
+      for (unsigned int a = 0; a < n; ++a)
+        direction[a] = eigenvectors(a, lowest);
+      return direction;
+    }
+
+    // The length t in +-reach 2^{-k}, k = 0, ..., 9, with the lowest
+    // E(eta + t deta, v + t dv), if that is below `energy` (then lowered to
+    // it) beyond round-off; 0 otherwise.
+    double lowest_energy_along(const NodalLaw       &law,
+                               const Vector<double> &v_free,
+                               const Vector<double> &eta,
+                               const Vector<double> &v,
+                               const Vector<double> &direction_eta,
+                               const Vector<double> &direction_v,
+                               const double          reach,
+                               double               &energy)
+    {
+      double         scale = 0, best_length = 0;
+      Vector<double> trial_eta(eta), trial_v(v);
+      for (const double sign : {1., -1.})
+        for (double length = reach; length > 1e-3 * reach; length /= 2)
+          {
+            trial_eta = eta;
+            trial_eta.add(sign * length, direction_eta);
+            trial_v = v;
+            trial_v.add(sign * length, direction_v);
+            const double trial_energy =
+              law.energy(v_free, trial_eta, trial_v, scale);
+            if (trial_energy < energy - energy_round_off * scale)
+              {
+                energy      = trial_energy;
+                best_length = sign * length;
+              }
+          }
+      return best_length;
+    }
+
+    // Leaves a stationary point of E that is not a local minimum along the
+    // direction of most negative curvature on the slip set: with y the
+    // eigenvector of the capacitance matrix for its smallest eigenvalue
+    // 1 - mu < 0, the response (deta, dv) of the capped model to the forces
+    // Delta^{1/2} y along zhat has the curvature
+    //   dv^T H dv = mu (1 - mu) |y|^2 < 0,
+    // so E falls to both sides. v and eta move together (v = v_free - D
+    // eta stays affine), so the line search costs no solve: the lengths
+    // that change a slip rate by up to twice the fastest steep node's rate,
+    // both ways, and the lowest E is taken if it is below the saddle's.
+    // Returns whether E fell. Its |B| + 1 Newton steps are those of the
+    // capacitance test.
+    bool leave_saddle(const TrescaNewtonStep               &newton_step,
+                      const unsigned int                    m,
+                      const NodalLaw                       &law,
+                      const Vector<double>                 &v_free,
+                      const std::vector<NodeLinearisation> &linearisation,
+                      double                               &energy,
+                      Vector<double>                       &eta,
+                      Vector<double>                       &v)
+    {
+      const double cap = weakening_cap_fraction * law.convexity_limit;
+      if (!(cap > 0))
+        return false;
+      const SteepResponses responses =
+        steep_responses(newton_step, m, law, cap, linearisation, eta, v);
+      const Vector<double> y = most_negative_direction(responses.capacitance);
+      if (y.size() == 0)
+        return false;
+      Vector<double> direction_eta(eta.size()), direction_v(v.size());
+      double         fastest = 0;
+      for (unsigned int b = 0; b < y.size(); ++b)
+        {
+          const double force = std::sqrt(responses.excess[b]) * y[b];
+          direction_eta.add(force, responses.eta[b]);
+          direction_v.add(force, responses.v[b]);
+          fastest = std::max(fastest, node_norm(v, responses.nodes[b], m));
+        }
+      double largest_change = 0;
+      for (unsigned int p = 0; p < linearisation.size(); ++p)
+        largest_change = std::max(largest_change, node_norm(direction_v, p, m));
+      if (!(largest_change > 0))
+        return false;
+      const double length = lowest_energy_along(law,
+                                                v_free,
+                                                eta,
+                                                v,
+                                                direction_eta,
+                                                direction_v,
+                                                2. * fastest / largest_change,
+                                                energy);
+      if (length == 0.)
+        return false;
+      eta.add(length, direction_eta);
+      v.add(length, direction_v);
+      return true;
     }
 
     // Whether a solution is a local minimum of E: certified without a test
     // where every slip node weakens slower than weakening_cap_fraction
     // times the convexity limit (friction_solver.cc), by the path's
     // curvature test on the Hessian otherwise, or where that cannot tell by
-    // the capacitance test.
-    void test_second_order(const unsigned int      m,
-                           const NodalLaw         &law,
-                           const CurvatureTest    &curvature,
-                           const TrescaNewtonStep &newton_step,
-                           const Vector<double>   &c,
-                           const Vector<double>   &eta,
-                           const Vector<double>   &v,
-                           FrictionNewtonResult   &result)
+    // the capacitance test. Returns the verdict.
+    Curvature test_second_order(const unsigned int      m,
+                                const NodalLaw         &law,
+                                const CurvatureTest    &curvature,
+                                const TrescaNewtonStep &newton_step,
+                                const Vector<double>   &c,
+                                const Vector<double>   &eta,
+                                const Vector<double>   &v,
+                                FrictionNewtonResult   &result)
     {
       const double certified     = weakening_cap_fraction * law.convexity_limit;
       const auto   linearisation = linearise_law(m, eta, v, law, c, false);
@@ -615,6 +765,7 @@ namespace Contact
         }
       result.converged             = (verdict == Curvature::positive);
       result.minimum_not_certified = !result.converged;
+      return verdict;
     }
 
     // One convexification step from (eta, v): the Tresca problem with the
@@ -771,13 +922,7 @@ namespace Contact
         eta.swap(start_eta);
         v.swap(start_v);
       }
-    auto linearisation = linearise_law(m, eta, v, law, c, capped);
-    // The start may already solve the step (a sticking step after a
-    // sticking one does).
-    const bool solved =
-      nonconvex && law_residual(m, linearisation, eta, v, c) <= tolerance;
-    if (solved)
-      test_second_order(m, law, curvature, newton_step, c, eta, v, result);
+    auto           linearisation = linearise_law(m, eta, v, law, c, capped);
     Vector<double> new_eta(eta), new_v(v);
     // The model switches to the true slope once the sets repeat after a
     // full step and the residual is below uncap_below. Where neither model
@@ -787,6 +932,38 @@ namespace Contact
     double residual      = std::numeric_limits<double>::infinity();
     double uncap_below   = 0.1 * largest_bound;
     bool   capped_failed = false, uncapped_failed = false;
+    // At a solution of the law: whether it ends the step, i.e. is a
+    // certified local minimum, or a saddle that could not be left. A saddle
+    // is left along its negative curvature (leave_saddle()) up to
+    // max_saddle_exits times per step; E is then below the saddle's, which
+    // no later step returns to (every one lowers E), and the method goes
+    // on from there with the capped model.
+    const unsigned int max_saddle_exits = 3;
+    const auto         ends_step        = [&]() {
+      const Curvature verdict =
+        test_second_order(m, law, curvature, newton_step, c, eta, v, result);
+      if (verdict != Curvature::not_positive ||
+          result.saddle_exits == max_saddle_exits)
+        return true;
+      double scale = 0;
+      if (std::isnan(energy))
+        energy = law.energy(v_free(), eta, v, scale);
+      if (!leave_saddle(
+            newton_step, m, law, v_free(), linearisation, energy, eta, v))
+        return true;
+      ++result.saddle_exits;
+      result.minimum_not_certified = false;
+      capped                       = may_uncap;
+      capped_failed = uncapped_failed = false;
+      residual      = std::numeric_limits<double>::infinity();
+      linearisation = linearise_law(m, eta, v, law, c, capped);
+      return false;
+    };
+    // The start may already solve the step (a sticking step after a
+    // sticking one does).
+    const bool solved =
+      nonconvex && law_residual(m, linearisation, eta, v, c) <= tolerance &&
+      ends_step();
     // Full capped steps on repeating sets whose residual grew: where a
     // node's true weakening is much steeper than the cap, the capped model
     // creeps towards its stick state (the residual grows by 10 to 40 % per
@@ -868,9 +1045,10 @@ namespace Contact
         const bool sets_repeat = set_signature(linearisation) == previous_sets;
         if (sets_repeat && residual <= tolerance)
           {
-            test_second_order(
-              m, law, curvature, newton_step, c, eta, v, result);
-            break;
+            if (ends_step())
+              break;
+            creeping = 0;
+            continue;
           }
         creeping =
           (capped && sets_repeat && length == 1. && residual > last_residual ?

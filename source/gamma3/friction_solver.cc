@@ -371,6 +371,7 @@ namespace Contact
     statistics.active_set_iterations += result.active_set_iterations;
     statistics.newton_iterations += result.iterations;
     statistics.beyond_convexity_limit += result.beyond_convexity_limit;
+    statistics.saddle_exits += result.saddle_exits;
     if (!all_processes(result.converged))
       {
         ++statistics.newton_fallbacks;

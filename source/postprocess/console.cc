@@ -269,8 +269,14 @@ namespace Contact
                     << static_cast<double>(totals.newton_iterations) / n_steps
                     << " per step; " << totals.beyond_convexity_limit
                     << " steps ended beyond the convexity limit (the "
-                    << "curvature test decided); the convexification took "
-                    << "over in " << totals.newton_fallbacks << " steps ("
+                    << "curvature test decided)"
+                    << (totals.saddle_exits > 0 ?
+                          ", " + std::to_string(totals.saddle_exits) +
+                            " saddles of the step energy left along their "
+                            "negative curvature" :
+                          std::string())
+                    << "; the convexification took over in "
+                    << totals.newton_fallbacks << " steps ("
                     << totals.minima_not_certified
                     << " not certified a local minimum)." << std::endl;
     this->pcout() << "Solves with K per step: " << std::setprecision(3)
@@ -320,7 +326,8 @@ namespace Contact
     archive &totals.rejected_accelerations &totals.cycles_cured;
     archive &totals.step_cuts &totals.newton_iterations;
     archive &totals.beyond_convexity_limit &totals.newton_fallbacks;
-    archive &totals.minima_not_certified &totals.solves_with_K;
+    archive &totals.minima_not_certified &totals.saddle_exits;
+    archive                              &totals.solves_with_K;
     archive &totals.cg_iterations &report_times;
   }
 
