@@ -206,16 +206,21 @@ namespace Contact
                             << " sticking nodes too";
           }
         // The sum of the nodal forces: along the tangent in 2D, as a
-        // vector in 3D.
+        // vector in 3D. Its terms are at most the nodal bounds m_p g(0):
+        // where the forces themselves are round-off (a body pressed but
+        // not pulled), their sum is resolved against the bounds.
         Tensor<1, dim> friction;
-        double         nodal_forces = 0;
+        double         nodal_forces = 0, nodal_bounds = 0;
         for (unsigned int p = 0; p < contact_nodes.size(); ++p)
           {
             const auto force =
               contact_nodes[p].tangential_vector(friction_force, p);
             friction += force;
             nodal_forces += force.norm();
+            nodal_bounds += contact_nodes[p].weight;
           }
+        nodal_bounds *= this->friction_law().bound(0.);
+        const double force_terms = std::max(nodal_forces, nodal_bounds);
         // A scalar along the tangent where Gamma_3 is straight (all its
         // nodes share one tangent), the vector otherwise. (The slip zone
         // is given by its x range, which locates it on any open Gamma_3,
@@ -228,8 +233,8 @@ namespace Contact
         this->pcout() << "; friction force "
                       << (straight ?
                             resolved(friction * contact_nodes[0].tangents[0],
-                                     nodal_forces) :
-                            resolved(friction, nodal_forces));
+                                     force_terms) :
+                            resolved(friction, force_terms));
         // |sum_i a_i w_i| <= |a| |w| bounds the terms of each component.
         double momentum_terms = 0;
         for (const VectorType &density : this->matrices().momentum_density)
