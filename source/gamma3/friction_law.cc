@@ -611,8 +611,11 @@ namespace Contact
     // eigenvalue if that is negative, else an empty vector.
     Vector<double> most_negative_direction(LAPACKFullMatrix<double> matrix)
     {
-      const unsigned int n    = matrix.m();
-      double             size = 1.;
+      const unsigned int n = matrix.m();
+      Vector<double>     direction;
+      if (n == 0)
+        return direction;
+      double size = 1.;
       for (unsigned int a = 0; a < n; ++a)
         for (unsigned int b = 0; b < a; ++b)
           matrix(a, b) = matrix(b, a) = 0.5 * (matrix(a, b) + matrix(b, a));
@@ -623,7 +626,6 @@ namespace Contact
       FullMatrix<double> eigenvectors;
       matrix.compute_eigenvalues_symmetric(
         -size, 0., 1e-12 * size, eigenvalues, eigenvectors);
-      Vector<double> direction;
       if (eigenvalues.size() == 0)
         return direction;
       unsigned int lowest = 0;
@@ -948,12 +950,22 @@ namespace Contact
       double scale = 0;
       if (std::isnan(energy))
         energy = law.energy(v_free(), eta, v, scale);
-      if (!leave_saddle(
-            newton_step, m, law, v_free(), linearisation, energy, eta, v))
+      // The true slopes: the iterate may have converged with the capped
+      // model, whose slopes are all at the cap.
+      if (!leave_saddle(newton_step,
+                        m,
+                        law,
+                        v_free(),
+                        linearise_law(m, eta, v, law, c, false),
+                        energy,
+                        eta,
+                        v))
         return true;
       ++result.saddle_exits;
-      result.minimum_not_certified = false;
-      capped                       = may_uncap;
+      // The next end point is judged on its own.
+      result.minimum_not_certified  = false;
+      result.beyond_convexity_limit = false;
+      capped                        = may_uncap;
       capped_failed = uncapped_failed = false;
       residual      = std::numeric_limits<double>::infinity();
       linearisation = linearise_law(m, eta, v, law, c, capped);
