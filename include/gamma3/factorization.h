@@ -95,6 +95,13 @@ namespace Contact
       return false;
     }
 
+    /** The relative residual at which a solve stops; 0 for the direct
+     *  solvers. */
+    virtual double relative_residual() const
+    {
+      return 0.;
+    }
+
     /** Iterations of the iterative solver (CG-AMG) so far, summed over
      *  this solver and its variants; 0 for direct solvers. */
     virtual unsigned long int iterations() const

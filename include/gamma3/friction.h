@@ -267,6 +267,10 @@ namespace Contact
      *  not known, and nothing is then certified without the curvature
      *  test. */
     double convexity_limit = 0;
+    /** The relative accuracy of E (ContactPath::energy_accuracy()): a
+     *  line search accepts a step whose E is above the last one by less
+     *  than this times the size of E's terms. */
+    double energy_accuracy = energy_round_off;
 
     /** Whether E may be nonconvex: the steepest weakening of the law is not
      *  below weakening_cap_fraction times the convexity limit. */

@@ -251,6 +251,13 @@ namespace Contact
      *  positive definite. */
     virtual Curvature curvature_on_slip_set(
       const std::vector<NodeLinearisation> &linearisation) = 0;
+    /** The relative accuracy of E between the iterates of a step: round-off
+     *  where they come from one factor or one Delassus operator, the
+     *  iterative solver's tolerance where each is a solve of its own. */
+    virtual double energy_accuracy() const
+    {
+      return energy_round_off;
+    }
 
     /** Solves with K (or a variant) since the step began, and the wall time
      *  of the step's first solve (or its substitutions). */

@@ -169,6 +169,11 @@ namespace Contact
         return true;
       }
 
+      double relative_residual() const override
+      {
+        return SolverParameters::cg_relative_residual;
+      }
+
       std::unique_ptr<Factorization> for_indefinite_variant(
         const TrilinosWrappers::SparseMatrix &variant) const override
       {

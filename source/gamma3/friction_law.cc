@@ -474,8 +474,9 @@ namespace Contact
     // most three times (a third halving saves convexification steps, a
     // fourth was never taken in the 3D scenes). A length t is accepted on
     // sufficient decrease, E(t) <= E(0) + sufficient_decrease t min(E', 0)
-    // up to the round-off of E (near the solution the decrease is below
-    // it). Returns the step length, 0 if none was accepted.
+    // up to the accuracy of E (law.energy_accuracy; near the solution the
+    // decrease is below it). Returns the step length, 0 if none was
+    // accepted.
     double backtrack(const NodalLaw       &law,
                      const Vector<double> &v_free,
                      const Vector<double> &eta,
@@ -495,7 +496,7 @@ namespace Contact
       const auto sufficient = [&](const double length) {
         new_energy = law.energy(v_free, new_eta, new_v, scale);
         return new_energy <= energy + sufficient_decrease * length * descent +
-                               energy_round_off * scale;
+                               law.energy_accuracy * scale;
       };
       if (sufficient(1.))
         return 1.;

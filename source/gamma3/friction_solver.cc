@@ -353,6 +353,7 @@ namespace Contact
                  solver_weights,
                  weakening_cap_fraction * convexity_limit};
     law.convexity_limit               = convexity_limit;
+    law.energy_accuracy               = path->energy_accuracy();
     const FrictionNewtonResult result = solve_friction_newton(
       newton_step,
       [this](const std::vector<NodeLinearisation> &linearisation) {
