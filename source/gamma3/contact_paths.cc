@@ -420,6 +420,21 @@ namespace Contact
     }
 
 
+    // The slip nodes whose slope is steeper than the definite one: those
+    // that the Newton matrix with the true slopes adds to H_d's.
+    std::vector<unsigned int>
+    steep_nodes(const std::vector<NodeLinearisation> &linearisation)
+    {
+      std::vector<unsigned int> steep;
+      for (unsigned int p = 0; p < linearisation.size(); ++p)
+        if (linearisation[p].state == NodeState::slip &&
+            linearisation[p].bound > 0 &&
+            linearisation[p].slope < linearisation[p].definite_slope)
+          steep.push_back(p);
+      return steep;
+    }
+
+
     // The straightforward path of 'Solver/Contact solver = constraints':
     // every Newton step of the methods on Gamma_3 is a solve on the whole
     // body, with the sticking nodes held fixed as constraints and the
@@ -742,11 +757,7 @@ namespace Contact
           throw ExcIndefiniteNewtonMatrix();
         }
 
-      for (unsigned int p = 0; p < n; ++p)
-        if (linearisation[p].state == NodeState::slip &&
-            linearisation[p].bound > 0 &&
-            linearisation[p].slope < linearisation[p].definite_slope)
-          system.steep.push_back(p);
+      system.steep               = steep_nodes(linearisation);
       const unsigned int n_steep = system.steep.size();
       system.responses.resize(n_steep);
       system.capacitance.reinit(n_steep, n_steep);
@@ -827,13 +838,10 @@ namespace Contact
       Vector<double>                       &v)
     {
       const unsigned int n = gamma3.nodes.size(), m = dim - 1;
-      bool               steep = false;
-      for (const NodeLinearisation &node : linearisation)
-        steep = steep || (node.state == NodeState::slip && node.bound > 0 &&
-                          node.slope < node.definite_slope);
-      Vector<double> slip_force;
-      VectorType     w(start);
-      if (steep && factorization.solves_indefinite_variants())
+      Vector<double>     slip_force;
+      VectorType         w(start);
+      if (!steep_nodes(linearisation).empty() &&
+          factorization.solves_indefinite_variants())
         {
           // H itself, solved by MINRES: one solve instead of |B| + 1.
           MatrixType        matrix;
