@@ -601,7 +601,7 @@ def plot_energies(series, output):
     energies.set_ylabel("energy [J]")
     energies.legend(fontsize=7)
     for name in ("algebraic_energy_residual", "quadrature_energy_residual",
-                 "friction_law_residual"):
+                 "equation_residual", "friction_law_residual", "stick_speed"):
         # Exact zeros (no slip yet, nothing to violate) are left out.
         values = np.abs(series[name][1:])
         residuals.semilogy(t[1:], np.where(values > 0, values, np.nan),

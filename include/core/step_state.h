@@ -73,6 +73,9 @@ namespace Contact
     TrilinosWrappers::MPI::Vector load;
     TrilinosWrappers::MPI::Vector mass_times_velocity;
     TrilinosWrappers::MPI::Vector elasticity_times_displacement;
+    /** What the step solved for: F_n + (1/k) M w_{n-1} - B u_{n-1}
+     *  (condensed), for the self-checks; set by the step, not saved. */
+    TrilinosWrappers::MPI::Vector step_rhs;
     EnergyBalance                 energy;
 
     /** What a checkpoint keeps: what the next step reads (u, w, M w, B u)

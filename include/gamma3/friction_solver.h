@@ -193,7 +193,16 @@ namespace Contact
    * `bound_factor(x_p)` at node p (a wrong coefficient; 0 removes the
    * friction there) while the checks use the true law, and with
    * `reversed_friction_force` it applies and reports -eta instead of eta.
-   * The time stepping multiplies its load vector by `load_factor`.
+   * The time stepping multiplies its load vector by `load_factor`. The
+   * errors in the solver's map of Gamma_3, which the checks do not share
+   * (Gamma3Map): a wrong compliance (`compliance_factor` times D on the
+   * Delassus paths, times the step's final velocity on the constraints
+   * path, whose friction iteration then stays consistent),
+   * the Delassus operator of the old k kept after a step cut, the nodes'
+   * weights times `weight_factor`, the first tangent of the node in the
+   * middle of the list turned towards its normal by `tangent_turn`
+   * radians, and after each step the first sticking node moved along its
+   * tangent by `stick_node_velocity` times max |w_n|.
    */
   template <int dim>
   struct Sabotage
@@ -201,6 +210,11 @@ namespace Contact
     std::function<double(const Point<dim> &)> bound_factor;
     bool                                      reversed_friction_force = false;
     double                                    load_factor             = 1.;
+    double                                    compliance_factor       = 1.;
+    bool   stale_delassus_after_step_cut                              = false;
+    double weight_factor                                              = 1.;
+    double tangent_turn                                               = 0.;
+    double stick_node_velocity                                        = 0.;
   };
 
 
@@ -241,11 +255,23 @@ namespace Contact
                 Vector<double>                       &v) = 0;
     /** w_n = K^{-1} (step_rhs - C^T eta). */
     virtual void velocity(const Vector<double> &eta, VectorType &w) = 0;
+    /** The same for the step's final forces. (The constraints path makes
+     *  its Sabotage there: w_n times the compliance factor.) */
+    virtual void final_velocity(const Vector<double> &eta, VectorType &w)
+    {
+      velocity(eta, w);
+    }
     /** y = D x, outside of a step (the Lanczos method for the convexity
      *  limit). */
     virtual void apply_delassus(const Vector<double> &x, Vector<double> &y) = 0;
     /** What the summary prints about the path. */
     virtual std::string description() const = 0;
+    /** max |v_free| where the step formed v_free, 0 where it did not. */
+    virtual double free_slip_speed() const = 0;
+    /** Only for a test of the self-checks (Sabotage): the path that
+     *  replaces `old` after a step cut keeps its Delassus operator. */
+    virtual void keep_delassus_operator_of(ContactPath<dim> & /*old*/)
+    {}
     /** The curvature test of friction.h: whether the matrix of a Newton
      *  step for this linearisation (the Hessian of E on the slip set) is
      *  positive definite. */
@@ -296,23 +322,9 @@ namespace Contact
                               const StepLabel  &label);
 
     /**
-     * The largest violation of the discrete friction law (5.3)-(5.4) by the
-     * current forces eta and the slip velocities v = C w of a velocity w,
-     * relative to max_p g_p(0), with g_p = m_p S mu(|v_p|) of the true law
-     * at the converged slip rate: |eta_p| - g_p where the node sticks, and
-     * where it slips the distance |eta_p - P_{B(g_p)}(eta_p + c_p v_p)|,
-     * which is that of eta_p from g_p v_p / |v_p| (measured along
-     * eta_p + c_p v_p, so that a slip rate just above zero gives no
-     * spurious direction). A sticking node's v_p is not part of it: that is
-     * the forward error of the solve with K, which a body held only by
-     * friction and little inertia amplifies far beyond 1e-8
-     * (doc/verification.md).
-     */
-    double law_residual(const VectorType &velocity) const;
-
-    /**
      * How far from the law the last step's solution may be by the
-     * solver's own tolerance, on the scale of law_residual(): 0 after
+     * solver's own tolerance, relative to max_p g_p(0) like the self-check
+     * of the law (self_checks.cc): 0 after
      * Newton's method (which solves the law itself to 1e-12); after the
      * convexification, whose Tresca problem has the bounds of the slip
      * rates s of its last iterate, the largest change of the bound that the
@@ -321,10 +333,6 @@ namespace Contact
      */
     double law_residual_allowance() const;
 
-    /** sum_p eta_p . v_p over the nodes that slip, v = C w: the friction
-     *  power, which the law makes >= 0. (Where a node sticks its v_p is
-     *  round-off, which law_residual() measures.) */
-    double slip_power(const VectorType &velocity) const;
 
     /** For the tests of the self-checks only. */
     void set_sabotage(const Sabotage<dim> &sabotage);
@@ -336,6 +344,11 @@ namespace Contact
     /** Wall time of the last step's first solve with K (or a variant), or
      *  its substitutions. */
     double substitution_seconds() const;
+    /** max_p |v_free,p| of the last step where its path formed v_free
+     *  (always on the Delassus paths), else 0: a sticking node's velocity
+     *  v_free - D eta is a difference of terms of this size, and so is its
+     *  round-off. */
+    double free_slip_speed() const;
 
   private:
     void choose_path(const MatrixType &system_matrix,
@@ -382,6 +395,11 @@ namespace Contact
     Vector<double> solver_weights;
     bool           reversed_friction_force     = false;
     double         last_law_residual_allowance = 0;
+    // The other errors of Sabotage that the solver makes.
+    double compliance_factor             = 1.;
+    bool   stale_delassus_after_step_cut = false;
+    double stick_node_velocity           = 0.;
+    void   move_first_sticking_node(VectorType &velocity) const;
   };
 
 
@@ -394,7 +412,8 @@ namespace Contact
                     const MatrixType           &system_matrix,
                     Factorization              &factorization,
                     const bool                  delassus,
-                    TimerOutput                &computing_timer);
+                    TimerOutput                &computing_timer,
+                    const double                compliance_factor = 1.);
 } // namespace Contact
 
 #endif

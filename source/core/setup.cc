@@ -98,7 +98,8 @@ namespace Contact
                                &state.velocity,
                                &state.old_displacement,
                                &state.old_velocity,
-                               &state.load})
+                               &state.load,
+                               &state.step_rhs})
       vector->reinit(owned, mpi_communicator);
 
     friction_solver = std::make_unique<FrictionSolver<dim>>(

@@ -109,7 +109,8 @@ namespace Contact
     StepStatistics statistics;
     {
       TimerOutput::Scope t(computing_timer, "Time steps");
-      VectorType         step_rhs(state.load);
+      VectorType        &step_rhs = state.step_rhs;
+      step_rhs                    = state.load;
       step_rhs.add(1. / time_step, state.mass_times_velocity);
       step_rhs.add(-1., state.elasticity_times_displacement);
       space.constraints.set_zero(step_rhs);

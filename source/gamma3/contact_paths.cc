@@ -136,6 +136,17 @@ namespace Contact
         delassus.vmult(y, x);
       }
 
+      double free_slip_speed() const override
+      {
+        return v_free.linfty_norm();
+      }
+
+      void keep_delassus_operator_of(ContactPath<dim> &old) override
+      {
+        if (auto *old_delassus_path = dynamic_cast<DelassusPath<dim> *>(&old))
+          delassus = std::move(old_delassus_path->delassus);
+      }
+
       Curvature curvature_on_slip_set(
         const std::vector<NodeLinearisation> &linearisation) override
       {
@@ -177,7 +188,8 @@ namespace Contact
     {
     public:
       DelassusFromFactor(const ContactBoundary<dim> &boundary,
-                         Factorization              &factorization_of_K)
+                         Factorization              &factorization_of_K,
+                         const double                compliance_factor)
         : gamma3(boundary)
         , factorization(factorization_of_K)
       {
@@ -234,6 +246,7 @@ namespace Contact
             for (const auto &[row, value] : columns_of_Y[s])
               column[row] = 0.;
           }
+        D *= compliance_factor;
         this->delassus = DelassusOperator(D, dim - 1);
       }
 
@@ -290,7 +303,8 @@ namespace Contact
     {
     public:
       DelassusFromSolves(const ContactBoundary<dim> &boundary,
-                         Factorization              &factorization_of_K)
+                         Factorization              &factorization_of_K,
+                         const double                compliance_factor)
         : gamma3(boundary)
         , factorization(factorization_of_K)
       {
@@ -313,6 +327,7 @@ namespace Contact
               Z(row++, s) = value;
           }
         make_symmetric(D);
+        D *= compliance_factor;
         this->delassus = DelassusOperator(D, dim - 1);
       }
 
@@ -449,11 +464,25 @@ namespace Contact
     public:
       ActiveSetAsConstraints(const ContactBoundary<dim> &boundary,
                              const MatrixType           &matrix_K,
-                             Factorization              &factorization_of_K)
+                             Factorization              &factorization_of_K,
+                             const double                sabotaged_compliance)
         : gamma3(boundary)
         , system_matrix(matrix_K)
         , factorization(factorization_of_K)
+        , compliance_factor(sabotaged_compliance)
       {}
+
+      // The step's final forces: a test of the self-checks (Sabotage) puts a
+      // wrong compliance here.
+      void final_velocity(const Vector<double> &eta, VectorType &w) override
+      {
+        velocity(eta, w);
+        if (compliance_factor != 1.)
+          {
+            w *= compliance_factor;
+            last_slip_velocity = gamma3.tangential_velocities(w);
+          }
+      }
 
       void begin_step(const VectorType &step_rhs,
                       const VectorType &last_velocity) override
@@ -545,6 +574,11 @@ namespace Contact
         return "active set as constraints, one solve with K per Newton step";
       }
 
+      double free_slip_speed() const override
+      {
+        return v_free.size() > 0 ? v_free.linfty_norm() : 0.;
+      }
+
       // Every iterate is a solve of its own: with CG-AMG E differs by the
       // solves' error, about their relative residual (on the 3D scene at
       // h = k = 1/16 the round-off allowance made Newton damp three more
@@ -620,8 +654,10 @@ namespace Contact
       const ContactBoundary<dim> &gamma3;
       const MatrixType           &system_matrix;
       Factorization              &factorization;
-      VectorType                  rhs;
-      Vector<double>              v_free;
+      // 1 but in a test of the self-checks (Sabotage).
+      const double   compliance_factor;
+      VectorType     rhs;
+      Vector<double> v_free;
       // Where CG starts: w_{n-1}, then the newest Newton step's velocity.
       VectorType start;
       // The forces of the last call of velocity() and their slip velocity;
@@ -910,16 +946,22 @@ namespace Contact
                     const MatrixType           &system_matrix,
                     Factorization              &factorization,
                     const bool                  delassus,
-                    TimerOutput                &computing_timer)
+                    TimerOutput                &computing_timer,
+                    const double                compliance_factor)
   {
     if (!delassus)
       return std::make_unique<ActiveSetAsConstraints<dim>>(gamma3,
                                                            system_matrix,
-                                                           factorization);
+                                                           factorization,
+                                                           compliance_factor);
     TimerOutput::Scope t(computing_timer, "Delassus operator");
     if (factorization.has_triangular_factor())
-      return std::make_unique<DelassusFromFactor<dim>>(gamma3, factorization);
-    return std::make_unique<DelassusFromSolves<dim>>(gamma3, factorization);
+      return std::make_unique<DelassusFromFactor<dim>>(gamma3,
+                                                       factorization,
+                                                       compliance_factor);
+    return std::make_unique<DelassusFromSolves<dim>>(gamma3,
+                                                     factorization,
+                                                     compliance_factor);
   }
 
 
@@ -930,7 +972,8 @@ namespace Contact
     const MatrixType &,                                         \
     Factorization &,                                            \
     const bool,                                                 \
-    TimerOutput &);
+    TimerOutput &,                                              \
+    const double);
 
   CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

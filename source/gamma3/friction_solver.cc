@@ -57,12 +57,45 @@ namespace Contact
   template <int dim>
   void FrictionSolver<dim>::set_sabotage(const Sabotage<dim> &sabotage)
   {
+    for (ContactNode<dim> &node : gamma3.nodes)
+      node.weight *= sabotage.weight_factor;
+    if (sabotage.tangent_turn != 0. && !gamma3.nodes.empty())
+      {
+        ContactNode<dim> &node    = gamma3.nodes[gamma3.nodes.size() / 2];
+        Tensor<1, dim>   &tangent = node.tangents[0];
+        tangent                   = std::cos(sabotage.tangent_turn) * tangent +
+                  std::sin(sabotage.tangent_turn) * node.normal;
+      }
     for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
       solver_weights[p] = gamma3.nodes[p].weight *
                           (sabotage.bound_factor ?
                              sabotage.bound_factor(gamma3.nodes[p].location) :
                              1.);
-    reversed_friction_force = sabotage.reversed_friction_force;
+    reversed_friction_force       = sabotage.reversed_friction_force;
+    compliance_factor             = sabotage.compliance_factor;
+    stale_delassus_after_step_cut = sabotage.stale_delassus_after_step_cut;
+    stick_node_velocity           = sabotage.stick_node_velocity;
+  }
+
+
+  // The velocity of a sticking node that a bug in the solver might leave
+  // (Sabotage): the first sticking node moved along its first tangent.
+  template <int dim>
+  void FrictionSolver<dim>::move_first_sticking_node(VectorType &velocity) const
+  {
+    const double speed = stick_node_velocity * velocity.linfty_norm();
+    for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
+      if (current.node_state[p] == NodeState::stick)
+        {
+          const ContactNode<dim> &node = gamma3.nodes[p];
+          if (node.locally_owned)
+            for (unsigned int d = 0; d < dim; ++d)
+              if (!gamma3.constraints.is_constrained(node.dofs[d]))
+                velocity[node.dofs[d]] += speed * node.tangents[0][d];
+          break;
+        }
+    velocity.compress(VectorOperation::add);
+    gamma3.constraints.distribute(velocity);
   }
 
 
@@ -143,8 +176,16 @@ namespace Contact
                           (choice == ContactSolver::delassus ||
                            (choice == ContactSolver::automatic &&
                             delassus_operator_pays(factorization)));
-    path = make_contact_path(
-      gamma3, system_matrix, factorization, delassus, computing_timer);
+    std::unique_ptr<ContactPath<dim>> new_path =
+      make_contact_path(gamma3,
+                        system_matrix,
+                        factorization,
+                        delassus,
+                        computing_timer,
+                        compliance_factor);
+    if (stale_delassus_after_step_cut && path)
+      new_path->keep_delassus_operator_of(*path);
+    path = std::move(new_path);
   }
 
 
@@ -277,7 +318,9 @@ namespace Contact
       solve_friction_problem(label, statistics);
     if (reversed_friction_force)
       current.friction_force *= -1.;
-    path->velocity(current.friction_force, velocity);
+    path->final_velocity(current.friction_force, velocity);
+    if (stick_node_velocity != 0.)
+      move_first_sticking_node(velocity);
     if (friction_law.is_frictionless())
       current.slip_velocity = gamma3.tangential_velocities(velocity);
     add_contact_state(statistics);
@@ -644,57 +687,6 @@ namespace Contact
   }
 
 
-  // @sect4{FrictionSolver::law_residual}
-
-  // The check of the law is independent of the method that solved it: v
-  // comes from the body's velocity, not from the solver's iterate, and
-  // the bound is that of the law at the converged slip rate (the
-  // convexification solves with the rates of its previous iterate).
-  template <int dim>
-  double FrictionSolver<dim>::law_residual(const VectorType &velocity) const
-  {
-    if (friction_law.is_frictionless() || gamma3.nodes.empty())
-      return 0.;
-    const Vector<double> v             = gamma3.tangential_velocities(velocity);
-    double               largest_bound = std::numeric_limits<double>::min();
-    double               residual      = 0;
-    for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
-      {
-        const ContactNode<dim> &node = gamma3.nodes[p];
-        const Tensor<1, dim>    eta =
-          node.tangential_vector(current.friction_force, p);
-        const Tensor<1, dim> z =
-          eta + active_set_parameter[p] * node.tangential_vector(v, p);
-        const double g =
-          node.weight * friction_law.bound(node.tangential_vector(v, p).norm());
-        const Tensor<1, dim> projection =
-          (z.norm() > g ? (g / z.norm()) * z : z);
-        residual = std::max(residual,
-                            current.node_state[p] == NodeState::stick ?
-                              eta.norm() - g :
-                              (eta - projection).norm());
-        largest_bound =
-          std::max(largest_bound, node.weight * friction_law.bound(0.));
-      }
-    return residual / largest_bound;
-  }
-
-
-  template <int dim>
-  double FrictionSolver<dim>::slip_power(const VectorType &velocity) const
-  {
-    if (friction_law.is_frictionless() || gamma3.nodes.empty())
-      return 0.;
-    const Vector<double> v     = gamma3.tangential_velocities(velocity);
-    double               power = 0;
-    for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
-      if (current.node_state[p] == NodeState::slip)
-        power += gamma3.nodes[p].tangential_vector(current.friction_force, p) *
-                 gamma3.nodes[p].tangential_vector(v, p);
-    return power;
-  }
-
-
   // @sect4{FrictionSolver::add_contact_state}
 
   template <int dim>
@@ -751,6 +743,12 @@ namespace Contact
   double FrictionSolver<dim>::substitution_seconds() const
   {
     return path->substitution_seconds;
+  }
+
+  template <int dim>
+  double FrictionSolver<dim>::free_slip_speed() const
+  {
+    return path->free_slip_speed();
   }
 
 

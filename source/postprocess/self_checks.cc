@@ -1,9 +1,11 @@
 /* The checks every run makes of its own results (doc/verification.md):
    the energy identity of the scheme twice, from the matrices and by
-   quadrature of the fields, the friction law at the converged slip rates,
-   the sign of the friction power, and the balance of moments about the
-   z-axis where a rigid rotation is admissible. A run that fails one of
-   them ends with an error instead of presenting its results as good. */
+   quadrature of the fields, the equations (5.2) from the stored fields,
+   the friction law and the sticking nodes' rest at the stored velocities
+   (both through the checks' own map of Gamma_3), the sign of the friction
+   power, and the balance of moments about the z-axis where a rigid
+   rotation is admissible. A run that fails one of them ends with an error
+   instead of presenting its results as good. */
 
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/exceptions.h>
@@ -20,6 +22,7 @@
 #include <boost/archive/binary_oarchive.hpp>
 
 #include <core/postprocessor.h>
+#include <postprocess/gamma3_map.h>
 
 #include <array>
 #include <limits>
@@ -40,14 +43,34 @@ namespace Contact
    *     from the fields (1/2 int rho |w_h|^2, 1/2 int B eps(u_h):eps(u_h),
    *     ...) and the loads' expressions, not from the matrices and the
    *     load vector: it catches wrong matrices, loads or constraints.
-   *   - friction_law: the friction law (5.3) at the converged slip rates,
-   *     FrictionSolver::law_residual: it catches a wrong coefficient, sign
-   *     or stick condition. It fails where it exceeds the tolerance and
-   *     twice what the convexification's own tolerance allows
-   *     (friction_law_allowance, FrictionSolver::law_residual_allowance).
+   *   - equation_residual: (5.2) at t_n from the stored fields,
+   *     K w_n - (F_n + M w_{n-1} / k - B u_{n-1}) + C^T eta_n, with the
+   *     solver's nodal forces applied through the checks' own map of
+   *     Gamma_3 (Gamma3Map), relative to the largest of the three terms of
+   *     this step: it catches a velocity that is not the solution of the
+   *     step's system with the reported forces (a stale factorisation, a
+   *     wrong compliance of Gamma_3 on the constraints path, a force put on
+   *     the wrong dofs).
+   *   - friction_law: the friction law (5.3)-(5.4) at the stored
+   *     velocities, with the checks' weights and normals (Gamma3Map) and
+   *     the true law: on a node the solver says slips, the distance of the
+   *     tangential part of its force from g_p(|v_p|) v_p / |v_p|; on one
+   *     that sticks, how far the force exceeds g_p(0); relative to
+   *     max_p g_p(0). It catches a wrong coefficient, sign, weight,
+   *     tangent or compliance in the solver. It fails where it exceeds the
+   *     tolerance and twice what the convexification's own tolerance
+   *     allows (friction_law_allowance,
+   *     FrictionSolver::law_residual_allowance).
+   *   - stick_motion: the speed of the nodes the solver says stick, at
+   *     the stored velocity, relative to the step's speed scale, the larger
+   *     of max |w_n| and max |v_free| (FrictionSolver::free_slip_speed(),
+   *     the size of the terms whose difference a sticking node's velocity
+   *     is, so that a body held by friction alone with little inertia, K
+   *     close to singular, does not fail by round-off): a sticking node
+   *     that moves.
    *   - negative_friction_power: a step whose friction power on the
-   *     slipping nodes is negative, relative to the energies (friction
-   *     only dissipates; FrictionSolver::slip_power).
+   *     slipping nodes (the same forces and velocities) is negative,
+   *     relative to the energies (friction only dissipates).
    *   - moment_balance: the balance of moments about the z-axis, (5.2)
    *     tested with the rigid rotation r = e_z x x, relative to the
    *     largest sum so far of the magnitudes of the products it adds up
@@ -59,9 +82,11 @@ namespace Contact
   {
     double algebraic_energy        = 0;
     double quadrature_energy       = 0;
+    double equation_residual       = 0;
     double friction_law            = 0;
     double friction_law_allowance  = 0;
     double friction_law_excess     = 0;
+    double stick_motion            = 0;
     double negative_friction_power = 0;
     double moment_balance          = 0;
     double moment_scale            = 0;
@@ -70,7 +95,9 @@ namespace Contact
     {
       algebraic_energy  = std::max(algebraic_energy, other.algebraic_energy);
       quadrature_energy = std::max(quadrature_energy, other.quadrature_energy);
+      equation_residual = std::max(equation_residual, other.equation_residual);
       friction_law      = std::max(friction_law, other.friction_law);
+      stick_motion      = std::max(stick_motion, other.stick_motion);
       friction_law_allowance =
         std::max(friction_law_allowance, other.friction_law_allowance);
       friction_law_excess =
@@ -84,9 +111,9 @@ namespace Contact
     template <class Archive>
     void serialize(Archive &archive, const unsigned int /*version*/)
     {
-      archive &algebraic_energy &quadrature_energy &friction_law
-        &friction_law_allowance &friction_law_excess &negative_friction_power
-          &moment_balance &moment_scale;
+      archive &algebraic_energy &quadrature_energy &equation_residual
+        &friction_law &friction_law_allowance &friction_law_excess &stick_motion
+          &negative_friction_power &moment_balance &moment_scale;
     }
   };
 
@@ -132,9 +159,12 @@ namespace Contact
     /** Above it a self-check has failed, and the run ends with an error
      *  (the summary prints which). */
     static constexpr double tolerance = 1e-8;
+    /** Below it a check's value is printed as "below 1e-10". */
+    static constexpr double round_off_bound = 1e-10;
 
     void initialize() override
     {
+      setup_gamma3_map();
       setup_moment_balance();
     }
 
@@ -167,20 +197,28 @@ namespace Contact
     void require_success() const override;
 
   private:
-    FieldIntegrals field_integrals(const FastVector &u,
-                                   const FastVector &w,
-                                   const FastVector &old_w) const;
-    void           setup_moment_balance();
-    void           start_self_checks();
-    void           check_step();
-    double         update_moments(const LoadPower &applied);
-    void           print_why_moments_are_not_checked() const;
+    FieldIntegrals              field_integrals(const FastVector &u,
+                                                const FastVector &w,
+                                                const FastVector &old_w) const;
+    void                        setup_gamma3_map();
+    void                        setup_moment_balance();
+    void                        start_self_checks();
+    void                        check_step();
+    std::vector<Tensor<1, dim>> friction_forces_on_map() const;
+    double equation_residual(const std::vector<Tensor<1, dim>> &forces) const;
+    void   check_friction_law(const std::vector<Tensor<1, dim>> &forces);
+    double update_moments(const LoadPower &applied);
+    void   print_why_moments_are_not_checked() const;
 
     // The energy identity's terms by quadrature, and the checks' values of
     // the last step and their largest over the steps.
     EnergyBalance   energy_by_quadrature;
     SelfCheckValues step_checks;
     SelfCheckValues largest_checks;
+    // Gamma_3 as the checks see it, and for each node of the friction
+    // solver's list the node of the map at its place.
+    std::unique_ptr<Gamma3Map<dim>> gamma3_map;
+    std::vector<unsigned int>       map_node_of_solver_node;
     // The rotation r = e_z x x (interpolated), its tangential components on
     // Gamma_3 (C r), how much the constraints change it relative to its
     // size, whether it lies in V_h (the moment balance is then a
@@ -286,6 +324,124 @@ namespace Contact
                         this->mpi_communicator(),
                         ArrayView<double>(sums.data(), sums.size()));
     return {sums[0], sums[1], sums[2], sums[3], sums[4]};
+  }
+
+
+  // @sect4{SelfChecks::setup_gamma3_map}
+
+  // The checks' own map of Gamma_3, and where the friction solver's nodes
+  // are on it (a solver node where the mesh has none ends the run).
+  template <int dim>
+  void SelfChecks<dim>::setup_gamma3_map()
+  {
+    gamma3_map =
+      std::make_unique<Gamma3Map<dim>>(this->space(),
+                                       this->parameters().boundary.contact_ids);
+    std::vector<Point<dim>> locations;
+    for (const ContactNode<dim> &node :
+         this->friction_solver().boundary().nodes)
+      locations.push_back(node.location);
+    map_node_of_solver_node = gamma3_map->nodes_at(locations);
+  }
+
+
+  // @sect4{SelfChecks::friction_forces_on_map}
+
+  // The force the solver reports at each node, sum_i eta_{p,i} t_{p,i}
+  // with its tangents, at the node of the map at its place; zero where the
+  // solver has no node (where Gamma_3 meets the clamp).
+  template <int dim>
+  std::vector<Tensor<1, dim>> SelfChecks<dim>::friction_forces_on_map() const
+  {
+    const auto &solver_nodes  = this->friction_solver().boundary().nodes;
+    const Vector<double> &eta = this->friction_solver().state().friction_force;
+    std::vector<Tensor<1, dim>> forces(gamma3_map->nodes.size());
+    for (unsigned int p = 0; p < solver_nodes.size(); ++p)
+      forces[map_node_of_solver_node[p]] =
+        solver_nodes[p].tangential_vector(eta, p);
+    return forces;
+  }
+
+
+  // @sect4{SelfChecks::equation_residual}
+
+  // (5.2) at t_n, K w_n = F_n + M w_{n-1} / k - B u_{n-1} - C^T eta_n, from
+  // the stored w_n and the step's right-hand side, with C^T eta_n put on
+  // the dofs of the map's nodes and condensed. Relative to the largest of
+  // the three vectors' norms: a step's own scale, which an error in one
+  // step cannot hide in.
+  template <int dim>
+  double SelfChecks<dim>::equation_residual(
+    const std::vector<Tensor<1, dim>> &forces) const
+  {
+    const DiscreteSpace<dim> &space = this->space();
+    VectorType residual(space.locally_owned_dofs, this->mpi_communicator());
+    VectorType friction(residual);
+    this->matrices().system.vmult(residual, this->state().velocity);
+    space.constraints.set_zero(residual);
+    gamma3_map->add_nodal_forces(forces, friction);
+    const VectorType &step_rhs = this->state().step_rhs;
+    const double      scale =
+      std::max({residual.l2_norm(), step_rhs.l2_norm(), friction.l2_norm()});
+    residual -= step_rhs;
+    residual += friction;
+    return residual.l2_norm() /
+           std::max(scale, std::numeric_limits<double>::min());
+  }
+
+
+  // @sect4{SelfChecks::check_friction_law}
+
+  // The friction law (5.3)-(5.4) at the stored velocities, through the
+  // map: at each node the tangential parts (to the map's normal) of the
+  // solver's force f_p and of w_n, and the bound g_p = m_p S mu(|v_p|) with
+  // the map's weight and the true law. Where the solver says the node
+  // slips, f_p must be g_p v_p / |v_p| (or, at a rate of zero, within
+  // g_p(0)); where it sticks, within g_p(0) and at rest. The friction power
+  // sum f_p . v_p of the slipping nodes must not be negative.
+  template <int dim>
+  void
+  SelfChecks<dim>::check_friction_law(const std::vector<Tensor<1, dim>> &forces)
+  {
+    const auto       &solver_nodes = this->friction_solver().boundary().nodes;
+    const auto       &claimed      = this->friction_solver().state().node_state;
+    std::vector<bool> slips(gamma3_map->nodes.size(), false);
+    for (unsigned int p = 0; p < solver_nodes.size(); ++p)
+      slips[map_node_of_solver_node[p]] = (claimed[p] != NodeState::stick);
+
+    const FrictionLaw &law = this->friction_law();
+    const auto velocities = gamma3_map->values_at_nodes(this->state().velocity);
+    double largest_bound = std::numeric_limits<double>::min(), violation = 0,
+           largest_speed = 0, power = 0;
+    for (unsigned int k = 0; k < gamma3_map->nodes.size(); ++k)
+      {
+        const auto          &node         = gamma3_map->nodes[k];
+        const Tensor<1, dim> force        = node.tangential(forces[k]);
+        const Tensor<1, dim> v            = node.tangential(velocities[k]);
+        const double         speed        = v.norm();
+        const double         static_bound = node.weight * law.bound(0.);
+        largest_bound = std::max(largest_bound, static_bound);
+        if (slips[k] && speed > 0)
+          {
+            violation = std::max(
+              violation,
+              (force - node.weight * law.bound(speed) / speed * v).norm());
+            power += force * v;
+          }
+        else
+          violation = std::max(violation, force.norm() - static_bound);
+        if (!slips[k])
+          largest_speed = std::max(largest_speed, speed);
+      }
+    step_checks.friction_law = violation / largest_bound;
+    step_checks.stick_motion =
+      largest_speed / std::max({this->state().velocity.linfty_norm(),
+                                this->friction_solver().free_slip_speed(),
+                                std::numeric_limits<double>::min()});
+    step_checks.negative_friction_power =
+      std::abs(std::min(this->time_step() * power, 0.)) /
+      std::max(this->state().energy.scale(),
+               std::numeric_limits<double>::min());
   }
 
 
@@ -399,18 +555,15 @@ namespace Contact
       relative(state.energy.residual(), state.energy.scale());
     step_checks.quadrature_energy =
       relative(balance.residual(), balance.scale());
-    step_checks.friction_law =
-      this->friction_solver().law_residual(state.velocity);
+    const std::vector<Tensor<1, dim>> forces = friction_forces_on_map();
+    step_checks.equation_residual            = equation_residual(forces);
+    check_friction_law(forces);
     step_checks.friction_law_allowance =
       2. * this->friction_solver().law_residual_allowance();
     step_checks.friction_law_excess =
       step_checks.friction_law <= step_checks.friction_law_allowance ?
         0. :
         step_checks.friction_law;
-    step_checks.negative_friction_power =
-      relative(std::min(k * this->friction_solver().slip_power(state.velocity),
-                        0.),
-               state.energy.scale());
     step_checks.moment_scale = moment_scale;
     step_checks.moment_balance =
       moment_balance_is_checked ?
@@ -470,10 +623,18 @@ namespace Contact
   template <int dim>
   void SelfChecks<dim>::print_summary() const
   {
+    // A value far below the tolerance is round-off, whose digits depend
+    // on the machine: only its bound is printed.
     const auto line =
       [&](const std::string &name, const double value, const double violation) {
-        this->pcout() << "  " << name << ": " << std::setprecision(2) << value
-                      << (violation < tolerance ? "" : "  FAILED") << std::endl;
+        this->pcout() << "  " << name << ": " << std::setprecision(2);
+        if (value == 0.)
+          this->pcout() << 0;
+        else if (value < round_off_bound)
+          this->pcout() << "below " << round_off_bound;
+        else
+          this->pcout() << value;
+        this->pcout() << (violation < tolerance ? "" : "  FAILED") << std::endl;
       };
     this->pcout()
       << "Self-checks, largest over the steps (relative; each must stay "
@@ -485,13 +646,17 @@ namespace Contact
     line("energy identity by quadrature (matrices, loads)",
          c.quadrature_energy,
          c.quadrature_energy);
-    line("friction law at the converged slip rates",
+    line("equations (5.2) from the stored fields",
+         c.equation_residual,
+         c.equation_residual);
+    line("friction law at the stored velocities",
          c.friction_law,
          c.friction_law_excess);
     if (c.friction_law >= tolerance && c.friction_law_excess < tolerance)
       this->pcout() << "    (within what '" + Entry::convexification_tolerance +
                          "' allows, "
                     << "up to " << c.friction_law_allowance << ")" << std::endl;
+    line("sticking nodes at rest", c.stick_motion, c.stick_motion);
     line("negative friction power on slipping nodes",
          c.negative_friction_power,
          c.negative_friction_power);
@@ -555,9 +720,17 @@ namespace Contact
     add(largest_checks.quadrature_energy,
         "the energy identity by quadrature of the fields and loads",
         "quadrature_energy_residual");
+    add(largest_checks.equation_residual,
+        "the equations (5.2) of the step, from the stored fields with the "
+        "friction forces put on the body by the checks' own map of Gamma_3,",
+        "equation_residual");
     add(largest_checks.friction_law_excess,
-        "the friction law at the converged slip rates",
+        "the friction law at the stored velocities",
         "friction_law_residual");
+    add(largest_checks.stick_motion,
+        "the rest of the nodes the solver says stick (their speed relative "
+        "to the larger of max |w_n| and max |v_free|)",
+        "stick_speed");
     add(largest_checks.negative_friction_power,
         "the friction power on the slipping nodes, which must not be "
         "negative,",
@@ -586,7 +759,9 @@ namespace Contact
     const Tensor<1, dim> p     = this->matrices().momentum(state.velocity);
     row.add("algebraic_energy_residual", state.energy.residual());
     row.add("quadrature_energy_residual", energy_by_quadrature.residual());
+    row.add("equation_residual", step_checks.equation_residual);
     row.add("friction_law_residual", step_checks.friction_law);
+    row.add("stick_speed", step_checks.stick_motion);
     for (unsigned int d = 0; d < dim; ++d)
       row.add(std::string("momentum_") + "xyz"[d], p[d]);
     row.add("angular_momentum", moments.angular_momentum);

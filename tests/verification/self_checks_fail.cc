@@ -9,8 +9,9 @@
      - the load vector 10% too large in the time stepping.
    Each run must end with 'Self-check failed' (a non-zero exit of the
    program), naming the check that caught the error: the doubled velocity
-   by both energy identities, the sign by the friction law and the
-   decreasing friction dissipation, the coefficient by the friction law,
+   by both energy identities, the sign by the friction law, the sticking
+   nodes' rest and the decreasing friction dissipation, the coefficient by
+   the friction law,
    the load by the energy identity by quadrature. The energy identity from
    the matrices misses the last three: each step still solves its own
    linear system.

@@ -1,0 +1,202 @@
+/* Gamma_3 as the self-checks see it: its nodes' dofs, weights and normals
+   from the mesh and the element, independently of the friction solver's
+   node list (contact_nodes.cc). */
+
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/grid/manifold.h>
+
+#include <deal.II/numerics/rtree.h>
+
+#include <base/dimensions.h>
+#include <postprocess/gamma3_map.h>
+
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace Contact
+{
+  // @sect4{Gamma3Map::Gamma3Map}
+
+  // Each process integrates over the Gamma_3 faces of its own cells: the
+  // weight int phi_p ds with the space's face rule, and at the face's
+  // support points the normal that compute_no_normal_flux_constraints
+  // takes there (the manifold's, turned outward like the mapping's). The
+  // parts are gathered on every process and summed; a node's normal is
+  // the normalised sum of its faces' normals.
+  template <int dim>
+  Gamma3Map<dim>::Gamma3Map(const DiscreteSpace<dim> &discrete_space,
+                            const std::vector<types::boundary_id> &contact_ids)
+    : space(discrete_space)
+  {
+    const std::set<types::boundary_id> ids(contact_ids.begin(),
+                                           contact_ids.end());
+    const FiniteElement<dim>          &fe = space.fe;
+    FEFaceValues<dim>                  integrals(*space.mapping,
+                                fe,
+                                space.face_quadrature,
+                                update_values | update_JxW_values);
+    std::map<unsigned int, std::unique_ptr<FEFaceValues<dim>>> at_nodes;
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+
+    // Per node and process: dofs, location, weight, normal.
+    constexpr unsigned int record_size = dim + dim + 1 + dim;
+    std::vector<double>    records;
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              ids.count(cell->face(f)->boundary_id()) != 0)
+            {
+              auto &support = at_nodes[f];
+              if (!support)
+                support = std::make_unique<FEFaceValues<dim>>(
+                  *space.mapping,
+                  fe,
+                  Quadrature<dim - 1>(fe.get_unit_face_support_points(f)),
+                  update_quadrature_points | update_normal_vectors);
+              support->reinit(cell, f);
+              integrals.reinit(cell, f);
+              cell->get_dof_indices(cell_dofs);
+              for (unsigned int j = 0; j < fe.n_dofs_per_face(f); ++j)
+                {
+                  const unsigned int i = fe.face_to_cell_index(j, f);
+                  const auto [component, base_index] =
+                    fe.system_to_component_index(i);
+                  if (component != 0)
+                    continue;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    records.push_back(
+                      cell_dofs[fe.component_to_system_index(d, base_index)]);
+                  const Point<dim> &x = support->quadrature_point(j);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    records.push_back(x[d]);
+                  double weight = 0;
+                  for (const unsigned int q :
+                       integrals.quadrature_point_indices())
+                    weight += integrals.shape_value_component(i, q, 0) *
+                              integrals.JxW(q);
+                  records.push_back(weight);
+                  Tensor<1, dim> normal =
+                    cell->face(f)->get_manifold().normal_vector(cell->face(f),
+                                                                x);
+                  if (normal * support->normal_vector(j) < 0)
+                    normal *= -1.;
+                  normal /= normal.norm();
+                  for (unsigned int d = 0; d < dim; ++d)
+                    records.push_back(normal[d]);
+                }
+            }
+
+    std::map<types::global_dof_index, Node> by_dof;
+    for (const auto &part :
+         Utilities::MPI::all_gather(space.mpi_communicator, records))
+      for (auto r = part.begin(); r != part.end(); r += record_size)
+        {
+          Node &node = by_dof[static_cast<types::global_dof_index>(r[0])];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              node.dofs[d]     = static_cast<types::global_dof_index>(r[d]);
+              node.location[d] = r[dim + d];
+              node.normal[d] += r[2 * dim + 1 + d];
+            }
+          node.weight += r[2 * dim];
+        }
+    for (auto &[dof, node] : by_dof)
+      {
+        node.normal /= node.normal.norm();
+        node.locally_owned = space.locally_owned_dofs.is_element(dof);
+        nodes.push_back(node);
+      }
+  }
+
+
+  // @sect4{Gamma3Map::nodes_at}
+
+  template <int dim>
+  std::vector<unsigned int>
+  Gamma3Map<dim>::nodes_at(const std::vector<Point<dim>> &locations) const
+  {
+    std::vector<Point<dim>> points;
+    double                  extent = 0;
+    for (const Node &node : nodes)
+      {
+        points.push_back(node.location);
+        extent = std::max(extent, node.location.distance(points.front()));
+      }
+    const auto                tree = pack_rtree_of_indices(points);
+    std::vector<unsigned int> indices;
+    for (const Point<dim> &x : locations)
+      {
+        std::vector<unsigned int> nearest;
+        tree.query(boost::geometry::index::nearest(x, 1),
+                   std::back_inserter(nearest));
+        std::ostringstream where;
+        where << x;
+        AssertThrow(!nearest.empty() &&
+                      points[nearest[0]].distance(x) <= 1e-10 * extent,
+                    ExcMessage("Self-check failed: the friction solver has a "
+                               "node of Gamma_3 at (" +
+                               where.str() +
+                               ") where the mesh has no node of Gamma_3."));
+        indices.push_back(nearest[0]);
+      }
+    return indices;
+  }
+
+
+  // @sect4{Gamma3Map::values_at_nodes}
+
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  Gamma3Map<dim>::values_at_nodes(const VectorType &field) const
+  {
+    std::vector<double> values(nodes.size() * dim);
+    for (unsigned int p = 0; p < nodes.size(); ++p)
+      if (nodes[p].locally_owned)
+        for (unsigned int d = 0; d < dim; ++d)
+          values[p * dim + d] = field[nodes[p].dofs[d]];
+    std::vector<double> sums(values.size());
+    Utilities::MPI::sum(ArrayView<const double>(values.data(), values.size()),
+                        space.mpi_communicator,
+                        ArrayView<double>(sums.data(), sums.size()));
+    std::vector<Tensor<1, dim>> result(nodes.size());
+    for (unsigned int p = 0; p < nodes.size(); ++p)
+      for (unsigned int d = 0; d < dim; ++d)
+        result[p][d] = sums[p * dim + d];
+    return result;
+  }
+
+
+  // @sect4{Gamma3Map::add_nodal_forces}
+
+  template <int dim>
+  void
+  Gamma3Map<dim>::add_nodal_forces(const std::vector<Tensor<1, dim>> &forces,
+                                   VectorType &load) const
+  {
+    AssertDimension(forces.size(), nodes.size());
+    Vector<double>                       force(dim);
+    std::vector<types::global_dof_index> dofs(dim);
+    for (unsigned int p = 0; p < nodes.size(); ++p)
+      if (nodes[p].locally_owned)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              force[d] = forces[p][d];
+              dofs[d]  = nodes[p].dofs[d];
+            }
+          space.constraints.distribute_local_to_global(force, dofs, load);
+        }
+    load.compress(VectorOperation::add);
+  }
+
+
+#define INSTANTIATE(dim) template class Gamma3Map<dim>;
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+} // namespace Contact
