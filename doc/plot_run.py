@@ -600,7 +600,7 @@ def plot_energies(series, output):
     energies.set_xlabel("t")
     energies.set_ylabel("energy [J]")
     energies.legend(fontsize=7)
-    for name in ("algebraic_energy_residual", "quadrature_energy_residual",
+    for name in ("load_power_residual", "constraint_residual",
                  "equation_residual", "friction_law_residual", "stick_speed"):
         # Exact zeros (no slip yet, nothing to violate) are left out.
         values = np.abs(series[name][1:])

@@ -12,6 +12,8 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/timer.h>
 
+#include <deal.II/fe/fe_values.h>
+
 #include <deal.II/lac/vector.h>
 
 #include <base/parameters.h>
@@ -94,12 +96,17 @@ namespace Contact
     std::unique_ptr<Function<dim>>       u1;
     std::map<types::boundary_id, std::unique_ptr<FunctionParser<dim>>>
       tractions;
-    // A body force that does not depend on t is assembled once; its cell
-    // vectors (of the locally owned cells, in the order of the cell loop)
-    // give its power.
-    const bool                  body_force_is_constant;
-    VectorType                  constant_body_load;
-    std::vector<Vector<double>> constant_body_cell_loads;
+    // A body force that does not depend on t is assembled once, condensed
+    // (for F_n) and not (its cell vectors summed without the constraints:
+    // its power F . w is a dot product with it).
+    const bool body_force_is_constant;
+    VectorType constant_body_load;
+    FastVector unconstrained_body_load;
+    // This process's cells at the boundary, which the surface loads visit.
+    std::vector<typename DoFHandler<dim>::active_cell_iterator> boundary_cells;
+    // The FEValues of visit_loads().
+    mutable std::unique_ptr<FEValues<dim>>     cell_values;
+    mutable std::unique_ptr<FEFaceValues<dim>> face_values;
   };
 } // namespace Contact
 

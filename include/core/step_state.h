@@ -73,9 +73,12 @@ namespace Contact
     TrilinosWrappers::MPI::Vector load;
     TrilinosWrappers::MPI::Vector mass_times_velocity;
     TrilinosWrappers::MPI::Vector elasticity_times_displacement;
-    /** What the step solved for: F_n + (1/k) M w_{n-1} - B u_{n-1}
-     *  (condensed), for the self-checks; set by the step, not saved. */
+    /** What the step solved for, F_n + (1/k) M w_{n-1} - B u_{n-1}, and
+     *  ((1/k) M + A + k B) w_n from the step's products of w_n with the
+     *  three matrices (condensed), for the self-checks; set by the step,
+     *  not saved. */
     TrilinosWrappers::MPI::Vector step_rhs;
+    TrilinosWrappers::MPI::Vector system_times_velocity;
     EnergyBalance                 energy;
 
     /** What a checkpoint keeps: what the next step reads (u, w, M w, B u)

@@ -202,7 +202,10 @@ namespace Contact
    * weights times `weight_factor`, the first tangent of the node in the
    * middle of the list turned towards its normal by `tangent_turn`
    * radians, and after each step the first sticking node moved along its
-   * tangent by `stick_node_velocity` times max |w_n|.
+   * tangent by `stick_node_velocity` times max |w_n|, or (an error in the
+   * constraints of V_h, not in the law) along its normal by
+   * `normal_velocity` times max |w_n|, the constraints not applied. The
+   * assembly multiplies B by `stiffness_factor`.
    */
   template <int dim>
   struct Sabotage
@@ -215,6 +218,8 @@ namespace Contact
     double weight_factor                                              = 1.;
     double tangent_turn                                               = 0.;
     double stick_node_velocity                                        = 0.;
+    double normal_velocity                                            = 0.;
+    double stiffness_factor                                           = 1.;
   };
 
 
@@ -399,6 +404,7 @@ namespace Contact
     double compliance_factor             = 1.;
     bool   stale_delassus_after_step_cut = false;
     double stick_node_velocity           = 0.;
+    double normal_velocity               = 0.;
     void   move_first_sticking_node(VectorType &velocity) const;
   };
 

@@ -50,7 +50,7 @@ namespace Contact
 
     /** The value of a field at every node, on every process
      *  (collective). */
-    std::vector<Tensor<1, dim>> values_at_nodes(const VectorType &field) const;
+    std::vector<Tensor<1, dim>> values_at_nodes(const FastVector &field) const;
 
     /** Adds a force at each node to a load vector, condensed with the
      *  constraints of V_h; compress(add) follows (collective). */

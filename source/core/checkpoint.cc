@@ -43,7 +43,7 @@ namespace Contact
 {
   namespace
   {
-    const std::string checkpoint_format = "contact checkpoint 9";
+    const std::string checkpoint_format = "contact checkpoint 10";
     const ResultFiles checkpoint_files("checkpoint(\\.[0-9]+)?(\\.tmp)?");
 
     std::uint32_t crc32(const std::string &bytes)

@@ -62,6 +62,9 @@ namespace Contact
   void Loads<dim>::setup(const ContactBoundary<dim> &boundary)
   {
     gamma3 = &boundary;
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        boundary_cells.push_back(cell);
     if (body_force_is_constant)
       assemble_constant_body_load();
   }
@@ -101,17 +104,28 @@ namespace Contact
     for (const auto &traction : tractions)
       traction.second->set_time(load_time);
 
-    FEValues<dim>                    fe_values(*space.mapping,
-                            space.fe,
-                            space.quadrature,
-                            update_values | update_quadrature_points |
-                              update_JxW_values);
-    FEFaceValues<dim>                fe_face_values(*space.mapping,
-                                     space.fe,
-                                     space.face_quadrature,
-                                     update_values | update_quadrature_points |
-                                       update_normal_vectors |
-                                       update_JxW_values);
+    // Made once: every step visits the loads twice (F_n and the
+    // self-checks' power), and an FEValues object is costly to make.
+    if (!cell_values)
+      {
+        cell_values =
+          std::make_unique<FEValues<dim>>(*space.mapping,
+                                          space.fe,
+                                          space.quadrature,
+                                          update_values |
+                                            update_quadrature_points |
+                                            update_JxW_values);
+        face_values =
+          std::make_unique<FEFaceValues<dim>>(*space.mapping,
+                                              space.fe,
+                                              space.face_quadrature,
+                                              update_values |
+                                                update_quadrature_points |
+                                                update_normal_vectors |
+                                                update_JxW_values);
+      }
+    FEValues<dim>                   &fe_values      = *cell_values;
+    FEFaceValues<dim>               &fe_face_values = *face_values;
     const FEValuesExtractors::Vector displacements(0);
     const unsigned int               n_dofs = space.fe.n_dofs_per_cell();
     Vector<double>                   cell_rhs(n_dofs);
@@ -159,40 +173,44 @@ namespace Contact
 
     // The surface loads alone (every step, when the body force is constant)
     // touch the boundary cells only.
-    for (const auto &cell : space.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && (with_body_force || cell->at_boundary()))
-        {
-          cell_rhs    = 0;
-          bool loaded = with_body_force;
-          if (with_body_force)
+    std::vector<typename DoFHandler<dim>::active_cell_iterator> all_cells;
+    if (with_body_force)
+      for (const auto &cell : space.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          all_cells.push_back(cell);
+    for (const auto &cell : (with_body_force ? all_cells : boundary_cells))
+      {
+        cell_rhs    = 0;
+        bool loaded = with_body_force;
+        if (with_body_force)
+          {
+            fe_values.reinit(cell);
+            if (exact_solution)
+              add_force(fe_values, exact_body_force);
+            else
+              add_force(fe_values, parsed(fe_values, *body_force));
+          }
+        for (const unsigned int f : cell->face_indices())
+          if (with_surface_loads && cell->face(f)->at_boundary())
             {
-              fe_values.reinit(cell);
-              if (exact_solution)
-                add_force(fe_values, exact_body_force);
-              else
-                add_force(fe_values, parsed(fe_values, *body_force));
+              const types::boundary_id id = cell->face(f)->boundary_id();
+              if (exact_solution && is_free_side(id))
+                {
+                  fe_face_values.reinit(cell, f);
+                  add_force(fe_face_values, exact_traction);
+                  loaded = true;
+                }
+              else if (!exact_solution && tractions.count(id) != 0)
+                {
+                  fe_face_values.reinit(cell, f);
+                  add_force(fe_face_values,
+                            parsed(fe_face_values, *tractions.at(id)));
+                  loaded = true;
+                }
             }
-          for (const unsigned int f : cell->face_indices())
-            if (with_surface_loads && cell->face(f)->at_boundary())
-              {
-                const types::boundary_id id = cell->face(f)->boundary_id();
-                if (exact_solution && is_free_side(id))
-                  {
-                    fe_face_values.reinit(cell, f);
-                    add_force(fe_face_values, exact_traction);
-                    loaded = true;
-                  }
-                else if (!exact_solution && tractions.count(id) != 0)
-                  {
-                    fe_face_values.reinit(cell, f);
-                    add_force(fe_face_values,
-                              parsed(fe_face_values, *tractions.at(id)));
-                    loaded = true;
-                  }
-              }
-          if (loaded)
-            visit_cell(cell, cell_rhs);
-        }
+        if (loaded)
+          visit_cell(cell, cell_rhs);
+      }
 
     if (exact_solution && with_surface_loads)
       for (const ContactNode<dim> &node : gamma3->nodes)
@@ -250,8 +268,10 @@ namespace Contact
 
   // @sect4{Loads::assemble_constant_body_load}
 
-  // A body force that does not depend on t is assembled once; its cell
-  // vectors are kept for power().
+  // A body force that does not depend on t is assembled once: condensed
+  // for F_n, and without the constraints for power(), where the sum of its
+  // cell vectors' products with a field's cell values is the dot product
+  // of the field with it.
   template <int dim>
   void Loads<dim>::assemble_constant_body_load()
   {
@@ -259,20 +279,24 @@ namespace Contact
     std::vector<types::global_dof_index> dof_indices(
       space.fe.n_dofs_per_cell());
     constant_body_load.reinit(space.locally_owned_dofs, space.mpi_communicator);
-    constant_body_cell_loads.clear();
+    unconstrained_body_load.reinit(space.locally_owned_dofs,
+                                   space.locally_relevant_dofs,
+                                   space.mpi_communicator);
     visit_loads(
       0.,
       true,
       false,
       [&](const auto &cell, const Vector<double> &cell_rhs) {
-        constant_body_cell_loads.push_back(cell_rhs);
         cell->get_dof_indices(dof_indices);
         space.constraints.distribute_local_to_global(cell_rhs,
                                                      dof_indices,
                                                      constant_body_load);
+        for (unsigned int i = 0; i < dof_indices.size(); ++i)
+          unconstrained_body_load[dof_indices[i]] += cell_rhs[i];
       },
       [](const ContactNode<dim> &, const Tensor<1, dim> &) {});
     constant_body_load.compress(VectorOperation::add);
+    unconstrained_body_load.compress(VectorOperation::add);
   }
 
 
@@ -286,7 +310,7 @@ namespace Contact
   // rotation's moment), and with each the sum of the magnitudes of the
   // products it adds up (of every cell's and node's entry), the scale of its
   // round-off. A body force constant in time is integrated once
-  // (constant_body_cell_loads holds its cell vectors).
+  // (unconstrained_body_load).
   template <int dim>
   std::vector<LoadPower>
   Loads<dim>::power(const double                           load_time,
@@ -319,12 +343,12 @@ namespace Contact
                         add(i, force[d] * (*fields[i])[node.dofs[d]]);
                 });
     if (body_force_is_constant)
-      {
-        unsigned int index = 0;
-        for (const auto &cell : space.dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            add_cell(cell, constant_body_cell_loads[index++]);
-      }
+      for (unsigned int j = 0; j < unconstrained_body_load.locally_owned_size();
+           ++j)
+        for (unsigned int i = 0; i < fields.size(); ++i)
+          add(i,
+              unconstrained_body_load.local_element(j) *
+                fields[i]->local_element(j));
     Utilities::MPI::sum(sums, space.mpi_communicator, sums);
     std::vector<LoadPower> result(fields.size());
     for (unsigned int i = 0; i < fields.size(); ++i)

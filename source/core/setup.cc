@@ -99,7 +99,8 @@ namespace Contact
                                &state.old_displacement,
                                &state.old_velocity,
                                &state.load,
-                               &state.step_rhs})
+                               &state.step_rhs,
+                               &state.system_times_velocity})
       vector->reinit(owned, mpi_communicator);
 
     friction_solver = std::make_unique<FrictionSolver<dim>>(

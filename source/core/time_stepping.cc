@@ -128,6 +128,11 @@ namespace Contact
 
     const VelocityProducts products = velocity_products();
     update_energy_balance(products);
+    state.system_times_velocity = products.viscosity;
+    state.system_times_velocity.add(1. / time_step,
+                                    products.mass,
+                                    time_step,
+                                    products.elasticity);
     state.mass_times_velocity = products.mass;
     state.elasticity_times_displacement.add(time_step, products.elasticity);
     for (const auto &postprocessor : postprocessors)

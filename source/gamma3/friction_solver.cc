@@ -75,27 +75,33 @@ namespace Contact
     compliance_factor             = sabotage.compliance_factor;
     stale_delassus_after_step_cut = sabotage.stale_delassus_after_step_cut;
     stick_node_velocity           = sabotage.stick_node_velocity;
+    normal_velocity               = sabotage.normal_velocity;
   }
 
 
   // The velocity of a sticking node that a bug in the solver might leave
-  // (Sabotage): the first sticking node moved along its first tangent.
+  // (Sabotage): the first sticking node moved along its first tangent, or
+  // along its normal without the constraints applied.
   template <int dim>
   void FrictionSolver<dim>::move_first_sticking_node(VectorType &velocity) const
   {
-    const double speed = stick_node_velocity * velocity.linfty_norm();
+    const bool   normal = (normal_velocity != 0.);
+    const double speed =
+      (normal ? normal_velocity : stick_node_velocity) * velocity.linfty_norm();
     for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
       if (current.node_state[p] == NodeState::stick)
         {
           const ContactNode<dim> &node = gamma3.nodes[p];
           if (node.locally_owned)
             for (unsigned int d = 0; d < dim; ++d)
-              if (!gamma3.constraints.is_constrained(node.dofs[d]))
-                velocity[node.dofs[d]] += speed * node.tangents[0][d];
+              if (normal || !gamma3.constraints.is_constrained(node.dofs[d]))
+                velocity[node.dofs[d]] +=
+                  speed * (normal ? node.normal[d] : node.tangents[0][d]);
           break;
         }
     velocity.compress(VectorOperation::add);
-    gamma3.constraints.distribute(velocity);
+    if (!normal)
+      gamma3.constraints.distribute(velocity);
   }
 
 
@@ -319,7 +325,7 @@ namespace Contact
     if (reversed_friction_force)
       current.friction_force *= -1.;
     path->final_velocity(current.friction_force, velocity);
-    if (stick_node_velocity != 0.)
+    if (stick_node_velocity != 0. || normal_velocity != 0.)
       move_first_sticking_node(velocity);
     if (friction_law.is_frictionless())
       current.slip_velocity = gamma3.tangential_velocities(velocity);

@@ -153,13 +153,13 @@ namespace Contact
 
   template <int dim>
   std::vector<Tensor<1, dim>>
-  Gamma3Map<dim>::values_at_nodes(const VectorType &field) const
+  Gamma3Map<dim>::values_at_nodes(const FastVector &field) const
   {
     std::vector<double> values(nodes.size() * dim);
     for (unsigned int p = 0; p < nodes.size(); ++p)
       if (nodes[p].locally_owned)
         for (unsigned int d = 0; d < dim; ++d)
-          values[p * dim + d] = field[nodes[p].dofs[d]];
+          values[p * dim + d] = field(nodes[p].dofs[d]);
     std::vector<double> sums(values.size());
     Utilities::MPI::sum(ArrayView<const double>(values.data(), values.size()),
                         space.mpi_communicator,

@@ -35,14 +35,23 @@ namespace Contact
    * The self-checks of a run (doc/verification.md), each a
    * relative violation that round-off keeps far below
    * SelfChecks::tolerance:
-   *   - algebraic_energy: the energy identity from the products of the
-   *     step's matrices with w_n. It holds whenever each step solves its
+   *   - matrices: once, before the first step, M, A and B against the
+   *     integrals of their forms on two fields in V_h (x^T M x against
+   *     int rho |x_h|^2 with the assembly's quadrature, ...): wrong
+   *     matrices. They do not change during a run (a step cut forms K
+   *     from them anew).
+   *   - algebraic_energy: the step's part of the energy identity (5.7),
+   *     from the products of the step's matrices with w_n, relative to the
+   *     sum of the magnitudes of its terms (the energies before and after
+   *     the step among them). It holds whenever each step solves its
    *     linear system with the eta it reports, whatever the matrices, the
    *     loads or the friction law: it checks the solve and the bookkeeping.
-   *   - quadrature_energy: the same identity with every term integrated
-   *     from the fields (1/2 int rho |w_h|^2, 1/2 int B eps(u_h):eps(u_h),
-   *     ...) and the loads' expressions, not from the matrices and the
-   *     load vector: it catches wrong matrices, loads or constraints.
+   *   - load_power: the step's load power F_n . w_n with the assembled load
+   *     vector against int f(t_n) . w_h from the loads' expressions
+   *     (Loads::power()), relative to the magnitudes of the products both
+   *     add up: a load vector that is not the loads' integral.
+   *   - constraints: how far w_n is from V_h (the constraints of the clamp
+   *     and of the bilateral contact), relative to max |w_n|.
    *   - equation_residual: (5.2) at t_n from the stored fields,
    *     K w_n - (F_n + M w_{n-1} / k - B u_{n-1}) + C^T eta_n, with the
    *     solver's nodal forces applied through the checks' own map of
@@ -73,15 +82,19 @@ namespace Contact
    *     relative to the energies (friction only dissipates).
    *   - moment_balance: the balance of moments about the z-axis, (5.2)
    *     tested with the rigid rotation r = e_z x x, relative to the
-   *     largest sum so far of the magnitudes of the products it adds up
-   *     (moment_scale, update_moments()). Checked only where r lies in
-   *     V_h (MomentBalance): it catches wrong loads or velocities in the
-   *     balance law of the angular momentum.
+   *     step's sum of the magnitudes of the products it adds up
+   *     (update_moments()). Checked where r lies in V_h, and on a shell
+   *     without a clamp whose mapping's degree is at most the element's,
+   *     where it must (MomentBalance): it catches wrong loads or
+   *     velocities in the balance law of the angular momentum, and on such
+   *     a shell nodes' normals that are not radial.
    */
   struct SelfCheckValues
   {
+    double matrices                = 0;
     double algebraic_energy        = 0;
-    double quadrature_energy       = 0;
+    double load_power              = 0;
+    double constraints             = 0;
     double equation_residual       = 0;
     double friction_law            = 0;
     double friction_law_allowance  = 0;
@@ -89,12 +102,13 @@ namespace Contact
     double stick_motion            = 0;
     double negative_friction_power = 0;
     double moment_balance          = 0;
-    double moment_scale            = 0;
 
     void take_largest(const SelfCheckValues &other)
     {
+      matrices          = std::max(matrices, other.matrices);
       algebraic_energy  = std::max(algebraic_energy, other.algebraic_energy);
-      quadrature_energy = std::max(quadrature_energy, other.quadrature_energy);
+      load_power        = std::max(load_power, other.load_power);
+      constraints       = std::max(constraints, other.constraints);
       equation_residual = std::max(equation_residual, other.equation_residual);
       friction_law      = std::max(friction_law, other.friction_law);
       stick_motion      = std::max(stick_motion, other.stick_motion);
@@ -105,21 +119,21 @@ namespace Contact
       negative_friction_power =
         std::max(negative_friction_power, other.negative_friction_power);
       moment_balance = std::max(moment_balance, other.moment_balance);
-      moment_scale   = std::max(moment_scale, other.moment_scale);
     }
 
     template <class Archive>
     void serialize(Archive &archive, const unsigned int /*version*/)
     {
-      archive &algebraic_energy &quadrature_energy &equation_residual
-        &friction_law &friction_law_allowance &friction_law_excess &stick_motion
-          &negative_friction_power &moment_balance &moment_scale;
+      archive &matrices &algebraic_energy &load_power &constraints
+        &equation_residual &friction_law &friction_law_allowance
+          &friction_law_excess &stick_motion &negative_friction_power
+            &moment_balance;
     }
   };
 
 
-  /** The integrals of the fields that the energy identity by quadrature
-   *  adds up (self_checks.cc). */
+  /** The integrals of the forms of the matrices on two fields in V_h, by
+   *  which the check of the matrices compares them (self_checks.cc). */
   struct FieldIntegrals
   {
     double kinetic       = 0; // 1/2 int rho |w_n|^2
@@ -161,6 +175,10 @@ namespace Contact
     static constexpr double tolerance = 1e-8;
     /** Below it a check's value is printed as "below 1e-10". */
     static constexpr double round_off_bound = 1e-10;
+    /** The most of a violation of the friction law that a loose
+     *  'Solver/Convexification tolerance' excuses, relative to
+     *  max_p g_p(0): beyond it the check fails whatever the tolerance. */
+    static constexpr double largest_friction_law_allowance = 1e-3;
 
     void initialize() override
     {
@@ -168,11 +186,14 @@ namespace Contact
       setup_moment_balance();
     }
 
-    // A resumed run has the state of the checks from the checkpoint.
+    // A resumed run has the checks' largest values from the checkpoint;
+    // the matrices are checked by every run.
     void start(const bool resumed) override
     {
       if (!resumed)
-        start_self_checks();
+        largest_checks = SelfCheckValues();
+      start_self_checks();
+      warn_of_loose_tolerance();
     }
 
     void after_substep() override
@@ -184,12 +205,12 @@ namespace Contact
 
     void save(boost::archive::binary_oarchive &archive) override
     {
-      archive &energy_by_quadrature &largest_checks;
+      archive &largest_checks;
     }
 
     void load(boost::archive::binary_iarchive &archive) override
     {
-      archive &energy_by_quadrature &largest_checks;
+      archive &largest_checks;
     }
 
     void print_summary() const override;
@@ -203,46 +224,57 @@ namespace Contact
     void                        setup_gamma3_map();
     void                        setup_moment_balance();
     void                        start_self_checks();
+    double                      check_matrices() const;
+    void                        warn_of_loose_tolerance() const;
     void                        check_step();
+    void                        check_energy_and_loads(const FastVector                  &w,
+                                                       const std::vector<Tensor<1, dim>> &forces);
+    double                      check_constraints(const FastVector &w) const;
     std::vector<Tensor<1, dim>> friction_forces_on_map() const;
     double equation_residual(const std::vector<Tensor<1, dim>> &forces) const;
-    void   check_friction_law(const std::vector<Tensor<1, dim>> &forces);
-    double update_moments(const LoadPower &applied);
+    void   check_friction_law(const FastVector                  &w,
+                              const std::vector<Tensor<1, dim>> &forces);
+    double update_moments(const LoadPower                   &applied,
+                          const std::vector<Tensor<1, dim>> &forces);
     void   print_why_moments_are_not_checked() const;
 
-    // The energy identity's terms by quadrature, and the checks' values of
-    // the last step and their largest over the steps.
-    EnergyBalance   energy_by_quadrature;
+    // The energy balance after the last step checked and the sum of the
+    // magnitudes of that step's terms in it, and the checks' values of that
+    // step and their largest over the steps.
+    EnergyBalance   last_energy;
+    double          step_energy_scale = 0;
     SelfCheckValues step_checks;
     SelfCheckValues largest_checks;
     // Gamma_3 as the checks see it, and for each node of the friction
     // solver's list the node of the map at its place.
     std::unique_ptr<Gamma3Map<dim>> gamma3_map;
     std::vector<unsigned int>       map_node_of_solver_node;
+    // The vectors of equation_residual().
+    mutable VectorType residual_work, friction_work;
     // The rotation r = e_z x x (interpolated), its tangential components on
     // Gamma_3 (C r), how much the constraints change it relative to its
     // size, whether it lies in V_h (the moment balance is then a
     // self-check), and the moments of the last step.
-    FastVector     rotation;
-    Vector<double> rotation_on_gamma3;
-    double         rotation_defect           = 0;
-    bool           moment_balance_is_checked = false;
-    MomentBalance  moments;
+    FastVector                  rotation;
+    std::vector<Tensor<1, dim>> rotation_at_nodes;
+    double                      rotation_defect           = 0;
+    bool                        moment_balance_is_checked = false;
+    MomentBalance               moments;
+    // |density of the angular momentum| and |w| of the last step checked.
+    double momentum_density_norm = 0, last_velocity_norm = 0;
   };
 
 
   // @sect4{SelfChecks::field_integrals}
 
-  // The integrals of the fields that the energy identity (5.7) is made of,
-  // with the quadrature rules of the assembly (the mass rule for rho |w|^2,
-  // which is the nodal one for a lumped mass: the discrete kinetic energy is
-  // defined by it), but from the values and strains of u_h and w_h on the
-  // cells, not from the matrices. A step of the factor-once scheme costs
-  // little more than two substitutions, so this loop is written for speed:
-  // each cell's dof values are read once, and the fields are summed from
-  // the scalar shape functions (each shape function of the vector element
-  // is a scalar one in one component) instead of through FEValues' vector
-  // functions, which allocate at every call.
+  // The integrals of the forms of M, A and B on fields u_h, w_h, with the
+  // quadrature rules of the assembly (the mass rule for rho |w|^2, which is
+  // the nodal one for a lumped mass: the discrete kinetic energy is defined
+  // by it), but from the values and strains of the fields on the cells,
+  // not from the matrices. Each cell's dof values are read once, and the
+  // fields are summed from the scalar shape functions (each shape function
+  // of the vector element is a scalar one in one component) instead of
+  // through FEValues' vector functions, which allocate at every call.
   template <int dim>
   FieldIntegrals SelfChecks<dim>::field_integrals(const FastVector &u,
                                                   const FastVector &w,
@@ -366,8 +398,10 @@ namespace Contact
   // @sect4{SelfChecks::equation_residual}
 
   // (5.2) at t_n, K w_n = F_n + M w_{n-1} / k - B u_{n-1} - C^T eta_n, from
-  // the stored w_n and the step's right-hand side, with C^T eta_n put on
-  // the dofs of the map's nodes and condensed. Relative to the largest of
+  // the stored w_n (K w_n = ((1/k) M + A + k B) w_n from the step's products
+  // of w_n with the three matrices, not from K or its factorisation) and the
+  // step's right-hand side, with C^T eta_n put on the dofs of the map's
+  // nodes and condensed. Relative to the largest of
   // the three vectors' norms: a step's own scale, which an error in one
   // step cannot hide in.
   template <int dim>
@@ -375,10 +409,15 @@ namespace Contact
     const std::vector<Tensor<1, dim>> &forces) const
   {
     const DiscreteSpace<dim> &space = this->space();
-    VectorType residual(space.locally_owned_dofs, this->mpi_communicator());
-    VectorType friction(residual);
-    this->matrices().system.vmult(residual, this->state().velocity);
-    space.constraints.set_zero(residual);
+    // Kept between the steps: a distributed vector is costly to make.
+    VectorType &residual = residual_work, &friction = friction_work;
+    if (residual.size() == 0)
+      {
+        residual.reinit(space.locally_owned_dofs, this->mpi_communicator());
+        friction.reinit(residual);
+      }
+    friction = 0;
+    residual = this->state().system_times_velocity;
     gamma3_map->add_nodal_forces(forces, friction);
     const VectorType &step_rhs = this->state().step_rhs;
     const double      scale =
@@ -401,7 +440,8 @@ namespace Contact
   // sum f_p . v_p of the slipping nodes must not be negative.
   template <int dim>
   void
-  SelfChecks<dim>::check_friction_law(const std::vector<Tensor<1, dim>> &forces)
+  SelfChecks<dim>::check_friction_law(const FastVector                  &w,
+                                      const std::vector<Tensor<1, dim>> &forces)
   {
     const auto       &solver_nodes = this->friction_solver().boundary().nodes;
     const auto       &claimed      = this->friction_solver().state().node_state;
@@ -409,8 +449,8 @@ namespace Contact
     for (unsigned int p = 0; p < solver_nodes.size(); ++p)
       slips[map_node_of_solver_node[p]] = (claimed[p] != NodeState::stick);
 
-    const FrictionLaw &law = this->friction_law();
-    const auto velocities = gamma3_map->values_at_nodes(this->state().velocity);
+    const FrictionLaw &law        = this->friction_law();
+    const auto         velocities = gamma3_map->values_at_nodes(w);
     double largest_bound = std::numeric_limits<double>::min(), violation = 0,
            largest_speed = 0, power = 0;
     for (unsigned int k = 0; k < gamma3_map->nodes.size(); ++k)
@@ -440,23 +480,23 @@ namespace Contact
                                 std::numeric_limits<double>::min()});
     step_checks.negative_friction_power =
       std::abs(std::min(this->time_step() * power, 0.)) /
-      std::max(this->state().energy.scale(),
-               std::numeric_limits<double>::min());
+      std::max(step_energy_scale, std::numeric_limits<double>::min());
   }
 
 
   // @sect4{SelfChecks::setup_moment_balance}
 
-  // The rigid rotation r = e_z x x, interpolated, its tangential components
-  // on Gamma_3, and whether the balance of moments is a self-check: where r
-  // lies in V_h, (5.2) tested with r has no reaction term, and where the
-  // mapping's degree is at most the element's, r is its own interpolant, so
-  // eps(r) = 0 takes the internal forces out and the angular momentum with
-  // the exact x is r^T M w. Whether r lies in V_h is asked of the
-  // constraints themselves (they leave r as it is, to 1e-12 of its size): a
-  // clamp, or a normal constraint not normal to r, excludes it; on a
-  // circular Gamma_3 about the axis, so do nodes' normals that are not
-  // radial, by how much the summary says (rotation_defect).
+  // The rigid rotation r = e_z x x, interpolated, its values at the nodes of
+  // the map of Gamma_3, and whether the balance of moments is a self-check:
+  // where r lies in V_h, (5.2) tested with r has no reaction term, and
+  // where the mapping's degree is at most the element's, r is its own
+  // interpolant, so eps(r) = 0 takes the internal forces out and the
+  // angular momentum with the exact x is r^T M w. Whether r lies in V_h is
+  // asked of the constraints themselves (they leave r as it is, to 1e-12 of
+  // its size): a clamp, or a normal constraint not normal to r, excludes
+  // it. On a shell without a clamp r must lie in V_h (Gamma_3 is a circle
+  // or a cylinder about the axis): there the check is made in any case, and
+  // nodes' normals that are not radial fail it instead of switching it off.
   template <int dim>
   void SelfChecks<dim>::setup_moment_balance()
   {
@@ -473,148 +513,255 @@ namespace Contact
     VectorType constrained(r);
     space.constraints.distribute(constrained);
     constrained -= r;
-    const auto &geometry = this->parameters().geometry;
-    rotation_defect      = constrained.linfty_norm() / r.linfty_norm();
+    const auto &parameters = this->parameters();
+    const auto &geometry   = parameters.geometry;
+    rotation_defect        = constrained.linfty_norm() / r.linfty_norm();
+    const bool must_admit_rotation =
+      geometry.domain == GeometryParameters::Domain::shell &&
+      parameters.boundary.clamped_ids.empty();
     moment_balance_is_checked =
-      rotation_defect <= 1e-12 &&
+      (rotation_defect <= 1e-12 || must_admit_rotation) &&
       ((geometry.cell_shape == GeometryParameters::CellShape::simplex) ||
        geometry.mapping_degree <= space.fe.degree);
-    rotation = space.fast_ghosted(r);
-    rotation_on_gamma3 =
-      this->friction_solver().boundary().tangential_velocities(r);
+    rotation          = space.fast_ghosted(r);
+    rotation_at_nodes = gamma3_map->values_at_nodes(rotation);
   }
 
 
   // @sect4{SelfChecks::start_self_checks}
 
-  // The initial energy by quadrature, after set_initial_values(), and the
-  // moments of the row of step 0: the angular momentum and the loads'
-  // moment at t = 0 (no friction force acts before the first step, and the
-  // reaction, a rate, is not defined there: 0).
+  // Before the first step (of a fresh or a resumed run): the matrices, the
+  // energy balance the first step's part of it starts from, and the
+  // moments of the row of the step the run starts at: the angular momentum
+  // and the loads' moment (no friction force acts before the first step,
+  // and the reaction, a rate, is not defined there: 0).
   template <int dim>
   void SelfChecks<dim>::start_self_checks()
   {
-    const DiscreteSpace<dim> &space = this->space();
-    const StepState          &state = this->state();
-    moments                         = MomentBalance();
+    const StepState &state = this->state();
+    step_checks            = SelfCheckValues();
+    step_checks.matrices   = check_matrices();
+    largest_checks.take_largest(step_checks);
+    last_energy = state.energy;
+    moments     = MomentBalance();
     moments.angular_momentum =
       this->matrices().angular_momentum_density * state.velocity;
-    moments.applied    = this->loads().power(0., {&rotation})[0].power;
-    const FastVector u = space.fast_ghosted(state.displacement),
-                     w = space.fast_ghosted(state.velocity);
-    const FieldIntegrals integrals = field_integrals(u, w, w);
-    energy_by_quadrature           = EnergyBalance();
-    energy_by_quadrature.kinetic   = integrals.kinetic;
-    energy_by_quadrature.elastic   = integrals.elastic;
-    energy_by_quadrature.initial   = integrals.kinetic + integrals.elastic;
-    step_checks                    = SelfCheckValues();
-    largest_checks                 = SelfCheckValues();
+    momentum_density_norm = this->matrices().angular_momentum_density.l2_norm();
+    last_velocity_norm    = state.velocity.l2_norm();
+    moments.applied = this->loads().power(state.time, {&rotation})[0].power;
+  }
+
+
+  // @sect4{SelfChecks::warn_of_loose_tolerance}
+
+  // The check of the friction law excuses what the convexification's
+  // tolerance leaves of the law (up to largest_friction_law_allowance):
+  // where that tolerance is loose, the run says so before its first step.
+  template <int dim>
+  void SelfChecks<dim>::warn_of_loose_tolerance() const
+  {
+    const double convexification_tolerance =
+      this->parameters().solver.convexification_tolerance;
+    if (convexification_tolerance > round_off_bound &&
+        !this->friction_law().is_rate_independent())
+      this->pcout() << "Note: with '" << Entry::convexification_tolerance
+                    << "' = " << convexification_tolerance
+                    << " the self-check of the friction law is looser: it "
+                       "excuses what that tolerance leaves of the law, up to "
+                    << largest_friction_law_allowance << " of max g(0)."
+                    << std::endl;
+  }
+
+
+  // @sect4{SelfChecks::check_matrices}
+
+  // M, A and B against the integrals of their forms: x^T M x against
+  // int rho |x_h|^2, y^T A y against int A eps(y_h) : eps(y_h), x^T B x
+  // and y^T B y against the same with B, for two fields x, y in V_h whose
+  // free entries vary from dof to dof without a pattern (a wrong entry of
+  // a matrix shows in them) and are the same for every number of
+  // processes. The largest difference relative to the integral.
+  template <int dim>
+  double SelfChecks<dim>::check_matrices() const
+  {
+    const DiscreteSpace<dim> &space = this->space();
+    VectorType x(space.locally_owned_dofs, this->mpi_communicator());
+    VectorType y(x), product(x), zero(x);
+    for (const types::global_dof_index i : space.locally_owned_dofs)
+      {
+        x[i] = std::sin(1.3 * i + 0.7);
+        y[i] = std::cos(0.9 * i + 0.2);
+      }
+    x.compress(VectorOperation::insert);
+    y.compress(VectorOperation::insert);
+    space.constraints.distribute(x);
+    space.constraints.distribute(y);
+    const FieldIntegrals integrals = field_integrals(space.fast_ghosted(x),
+                                                     space.fast_ghosted(y),
+                                                     space.fast_ghosted(zero));
+    const auto form = [&](const MatrixType &matrix, const VectorType &field) {
+      matrix.vmult(product, field);
+      space.constraints.set_zero(product);
+      return product * field;
+    };
+    const auto difference = [](const double from_matrix,
+                               const double integral) {
+      return std::abs(from_matrix - integral) /
+             std::max({std::abs(from_matrix),
+                       std::abs(integral),
+                       std::numeric_limits<double>::min()});
+    };
+    const SystemMatrices<dim> &matrices = this->matrices();
+    return std::max(
+      {difference(0.5 * form(matrices.mass, y), integrals.kinetic),
+       difference(0.5 * form(matrices.elasticity, x), integrals.elastic),
+       difference(form(matrices.viscosity, y), integrals.viscous_power),
+       difference(form(matrices.elasticity, y), integrals.elastic_power)});
   }
 
 
   // @sect4{SelfChecks::check_step}
 
-  // After each step (each half of a cut step): the terms of (5.7) by
-  // quadrature, (5.2) tested with w_n as in update_energy_balance(),
-  //   1/2|w_n|_M^2 + 1/2|u_n|_B^2 + sum k |w_j|_A^2 + sum k eta_j . C w_j
-  //   + sum (1/2 |w_j - w_{j-1}|_M^2 + k^2/2 |w_j|_B^2)
-  //   = 1/2|w_0|_M^2 + 1/2|u_0|_B^2 + sum k F_j . w_j,
-  // the friction law at the step's slip rates, and the sign of the step's
-  // friction power k eta_n . C w_n on the slipping nodes (where a node
-  // sticks, C w_n is round-off, which can be amplified far beyond the
-  // energies' round-off when K is ill-conditioned: the law check measures
-  // it).
+  // After each step (each half of a cut step), each check relative to a
+  // scale of that step (doc/verification.md): the step's part of the
+  // energy identity and its load power, w_n in V_h, (5.2) from the stored
+  // fields, the friction law and the sticking nodes' rest at the stored
+  // velocities and the sign of the friction power (through the map of
+  // Gamma_3), and the balance of moments.
   template <int dim>
   void SelfChecks<dim>::check_step()
   {
     const DiscreteSpace<dim> &space = this->space();
-    const StepState          &state = this->state();
     TimerOutput::Scope        t(this->computing_timer(), "Self-checks");
-    const double              k    = this->time_step();
-    const FastVector          u    = space.fast_ghosted(state.displacement),
-                     w             = space.fast_ghosted(state.velocity),
-                     old_w         = space.fast_ghosted(state.old_velocity);
-    const FieldIntegrals integrals = field_integrals(u, w, old_w);
-    EnergyBalance       &balance   = energy_by_quadrature;
-    balance.kinetic                = integrals.kinetic;
-    balance.elastic                = integrals.elastic;
-    balance.viscous_dissipation += k * integrals.viscous_power;
-    balance.numerical_dissipation +=
-      integrals.velocity_jump + 0.5 * k * k * integrals.elastic_power;
-    const std::vector<LoadPower> load_powers =
-      this->loads().power(state.time, {&w, &rotation});
-    balance.external_work += k * load_powers[0].power;
-    balance.friction_dissipation = state.energy.friction_dissipation;
-    const double moment_scale    = update_moments(load_powers[1]);
+    const FastVector          w = space.fast_ghosted(this->state().velocity);
+    step_checks                 = SelfCheckValues();
+    const std::vector<Tensor<1, dim>> forces = friction_forces_on_map();
+    check_energy_and_loads(w, forces);
+    step_checks.constraints       = check_constraints(w);
+    step_checks.equation_residual = equation_residual(forces);
+    check_friction_law(w, forces);
+    step_checks.friction_law_allowance =
+      std::min(2. * this->friction_solver().law_residual_allowance(),
+               largest_friction_law_allowance);
+    step_checks.friction_law_excess =
+      step_checks.friction_law <= step_checks.friction_law_allowance ?
+        0. :
+        step_checks.friction_law;
+    largest_checks.take_largest(step_checks);
+  }
 
+
+  // @sect4{SelfChecks::check_energy_and_loads}
+
+  // The step's part of the energy identity (5.7) of backward Euler, from
+  // the products of the matrices with w_n (EnergyBalance), relative to the
+  // sum of the magnitudes of its terms: the energies before and after the
+  // step, and what it dissipated and what the loads did in it. Then the
+  // load power F_n . w_n of the step with the assembled load vector
+  // against the loads' integral with w_h (Loads::power()), relative to the
+  // magnitudes of the products both add up; and the balance of moments.
+  template <int dim>
+  void SelfChecks<dim>::check_energy_and_loads(
+    const FastVector                  &w,
+    const std::vector<Tensor<1, dim>> &forces)
+  {
+    const StepState     &state = this->state();
+    const EnergyBalance &now = state.energy, &before = last_energy;
+    const double         energy_terms =
+      now.kinetic + before.kinetic + now.elastic + before.elastic +
+      (now.viscous_dissipation - before.viscous_dissipation) +
+      std::abs(now.friction_dissipation - before.friction_dissipation) +
+      (now.numerical_dissipation - before.numerical_dissipation) +
+      std::abs(now.external_work - before.external_work);
     const auto relative = [](const double value, const double scale) {
       return std::abs(value) /
              std::max(scale, std::numeric_limits<double>::min());
     };
     step_checks.algebraic_energy =
-      relative(state.energy.residual(), state.energy.scale());
-    step_checks.quadrature_energy =
-      relative(balance.residual(), balance.scale());
-    const std::vector<Tensor<1, dim>> forces = friction_forces_on_map();
-    step_checks.equation_residual            = equation_residual(forces);
-    check_friction_law(forces);
-    step_checks.friction_law_allowance =
-      2. * this->friction_solver().law_residual_allowance();
-    step_checks.friction_law_excess =
-      step_checks.friction_law <= step_checks.friction_law_allowance ?
-        0. :
-        step_checks.friction_law;
-    step_checks.moment_scale = moment_scale;
+      relative(now.residual() - before.residual(), energy_terms);
+    step_energy_scale = energy_terms;
+    last_energy       = now;
+
+    const std::vector<LoadPower> integrals =
+      this->loads().power(state.time, {&w, &rotation});
+    // The magnitudes of the products F_i w_i add up to at most |F| |w|.
+    const double assembled    = state.load * state.velocity;
+    const double magnitude    = state.load.l2_norm() * state.velocity.l2_norm();
+    step_checks.load_power    = relative(assembled - integrals[0].power,
+                                      magnitude + integrals[0].magnitude);
+    const double moment_scale = update_moments(integrals[1], forces);
     step_checks.moment_balance =
-      moment_balance_is_checked ?
-        relative(moments.reaction,
-                 std::max(step_checks.moment_scale,
-                          largest_checks.moment_scale)) :
-        0.;
-    largest_checks.take_largest(step_checks);
+      moment_balance_is_checked ? relative(moments.reaction, moment_scale) : 0.;
+  }
+
+
+  // @sect4{SelfChecks::check_constraints}
+
+  // How far w_n is from V_h: the largest difference between a constrained
+  // entry and what its constraint makes of the others, relative to
+  // max |w_n|.
+  template <int dim>
+  double SelfChecks<dim>::check_constraints(const FastVector &w) const
+  {
+    const DiscreteSpace<dim> &space   = this->space();
+    double                    largest = 0;
+    for (const auto &line : space.constraints.get_lines())
+      if (space.locally_owned_dofs.is_element(line.index))
+        {
+          double value = line.inhomogeneity;
+          for (const auto &[dof, weight] : line.entries)
+            value += weight * w(dof);
+          largest = std::max(largest, std::abs(w(line.index) - value));
+        }
+    largest = Utilities::MPI::max(largest, this->mpi_communicator());
+    return largest /
+           std::max(w.linfty_norm(), std::numeric_limits<double>::min());
   }
 
 
   // @sect4{SelfChecks::update_moments}
 
-  // The moments of the step (MomentBalance): L_n and L_{n-1} by the angular
-  // momentum density (from w_{n-1}, so that a resumed run needs nothing
-  // more of the past), the loads' moment F_n . r, and the friction's
-  // -eta_n . C r. Returned is the scale of the reaction's round-off: the
+  // The moments of the step (MomentBalance): L_n and L_{n-1} by the
+  // angular momentum density (from w_{n-1}, so that a resumed run needs
+  // nothing more of the past), the loads' moment F_n . r, and the
+  // friction's
+  // -sum_p f_p . r(x_p) over the nodes of the map of Gamma_3 with the
+  // solver's forces f_p. Returned is the scale of the reaction's round-off:
+  // the
   // sum of the magnitudes of all products that the four sums add up. The
   // moments themselves are no scale: a ring under pressure alone, or
   // spinning freely, has no moment at all.
   template <int dim>
-  double SelfChecks<dim>::update_moments(const LoadPower &applied)
+  double
+  SelfChecks<dim>::update_moments(const LoadPower                   &applied,
+                                  const std::vector<Tensor<1, dim>> &forces)
   {
     const StepState &state = this->state();
-    // a . b (by the vectors' own dot product, whose summation is more
-    // accurate than a plain loop's), and the sum of |a_i b_i|.
-    const auto dot =
-      [this](const auto &a, const auto &b, const bool distributed) {
-        double magnitude = 0;
-        auto   b_entry   = b.begin();
-        for (auto a_entry = a.begin(); a_entry != a.end(); ++a_entry, ++b_entry)
-          magnitude += std::abs(*a_entry * *b_entry);
-        if (distributed)
-          magnitude = Utilities::MPI::sum(magnitude, this->mpi_communicator());
-        return std::array<double, 2>{{a * b, magnitude}};
-      };
-    const auto old_momentum =
-      dot(this->matrices().angular_momentum_density, state.old_velocity, true);
-    const auto momentum =
-      dot(this->matrices().angular_momentum_density, state.velocity, true);
-    // Every process has all of eta and C r.
-    const auto friction = dot(this->friction_solver().state().friction_force,
-                              rotation_on_gamma3,
-                              false);
-    moments.angular_momentum = momentum[0];
+    // L_n and L_{n-1} from the stored w_n, w_{n-1}. The magnitudes of the
+    // products a_i w_i of a . w add up to at most |a| |w| (|w_{n-1}| is
+    // that of the last step checked).
+    const double old_momentum =
+      this->matrices().angular_momentum_density * state.old_velocity;
+    const double old_magnitude = momentum_density_norm * last_velocity_norm;
+    const double momentum =
+      this->matrices().angular_momentum_density * state.velocity;
+    last_velocity_norm     = state.velocity.l2_norm();
+    const double magnitude = momentum_density_norm * last_velocity_norm;
+    // Every process has all nodes' forces and r.
+    std::array<double, 2> friction{};
+    for (unsigned int k = 0; k < forces.size(); ++k)
+      {
+        const double product = forces[k] * rotation_at_nodes[k];
+        friction[0] += product;
+        friction[1] += std::abs(product);
+      }
+    moments.angular_momentum = momentum;
     moments.applied          = applied.power;
     moments.friction         = -friction[0];
-    moments.reaction = (momentum[0] - old_momentum[0]) / this->time_step() -
+    moments.reaction         = (momentum - old_momentum) / this->time_step() -
                        moments.applied - moments.friction;
-    return (momentum[1] + old_momentum[1]) / this->time_step() +
-           applied.magnitude + friction[1];
+    return (magnitude + old_magnitude) / this->time_step() + applied.magnitude +
+           friction[1];
   }
 
 
@@ -637,15 +784,18 @@ namespace Contact
         this->pcout() << (violation < tolerance ? "" : "  FAILED") << std::endl;
       };
     this->pcout()
-      << "Self-checks, largest over the steps (relative; each must stay "
-      << "below " << tolerance << "):" << std::endl;
+      << "Self-checks, largest over the steps (each relative to the "
+      << "step's own scale; each must stay below " << tolerance
+      << "):" << std::endl;
     const SelfCheckValues &c = largest_checks;
-    line("energy identity from the matrices (the solve)",
+    line("matrices against the integrals of their forms",
+         c.matrices,
+         c.matrices);
+    line("energy identity of each step (the solve)",
          c.algebraic_energy,
          c.algebraic_energy);
-    line("energy identity by quadrature (matrices, loads)",
-         c.quadrature_energy,
-         c.quadrature_energy);
+    line("load vector against the loads' integral", c.load_power, c.load_power);
+    line("velocity in V_h (the constraints)", c.constraints, c.constraints);
     line("equations (5.2) from the stored fields",
          c.equation_residual,
          c.equation_residual);
@@ -678,21 +828,15 @@ namespace Contact
   void SelfChecks<dim>::print_why_moments_are_not_checked() const
   {
     this->pcout() << "  (balance of moments about the z-axis: not checked, ";
-    if (rotation_defect <= 1e-12)
+    if (!this->parameters().boundary.clamped_ids.empty())
+      this->pcout() << "a clamp holds the body against turning; column "
+                       "reaction_moment of time_series.csv is its moment)";
+    else
       this->pcout()
         << "the mapping's degree is above the element's, so the rigid "
            "rotation is not in the finite element space; column "
            "reaction_moment of time_series.csv shows how far the "
            "balance holds)";
-    else if (!this->parameters().boundary.clamped_ids.empty())
-      this->pcout() << "a clamp holds the body against turning; column "
-                       "reaction_moment of time_series.csv is its moment)";
-    else
-      this->pcout()
-        << "the nodes' normals on the constraints' boundaries are not "
-           "all normal to the rotation about the axis: they change it "
-           "by "
-        << rotation_defect << " of its size)";
     this->pcout() << std::endl;
   }
 
@@ -710,16 +854,26 @@ namespace Contact
                          const std::string &what,
                          const std::string &column) {
       if (!(value < tolerance))
-        failures << "\n  " << what << " holds only to " << value << " (column "
-                 << column << " of time_series.csv)";
+        failures << "\n  " << what << " holds only to " << value
+                 << (column.empty() ?
+                       "" :
+                       " (column " + column + " of time_series.csv)");
     };
+    add(largest_checks.matrices,
+        "the matrices M, A, B against the integrals of their forms (before "
+        "the first step)",
+        "");
     add(largest_checks.algebraic_energy,
-        "the energy identity from the matrices, i.e. the steps' linear "
-        "solves,",
+        "the energy identity of a step from the matrices, i.e. the steps' "
+        "linear solves,",
         "algebraic_energy_residual");
-    add(largest_checks.quadrature_energy,
-        "the energy identity by quadrature of the fields and loads",
-        "quadrature_energy_residual");
+    add(largest_checks.load_power,
+        "the load power of a step with the load vector against the loads' "
+        "integral",
+        "load_power_residual");
+    add(largest_checks.constraints,
+        "the constraints of V_h (clamp, bilateral contact) on the velocity",
+        "constraint_residual");
     add(largest_checks.equation_residual,
         "the equations (5.2) of the step, from the stored fields with the "
         "friction forces put on the body by the checks' own map of Gamma_3,",
@@ -758,7 +912,8 @@ namespace Contact
     const StepState     &state = this->state();
     const Tensor<1, dim> p     = this->matrices().momentum(state.velocity);
     row.add("algebraic_energy_residual", state.energy.residual());
-    row.add("quadrature_energy_residual", energy_by_quadrature.residual());
+    row.add("load_power_residual", step_checks.load_power);
+    row.add("constraint_residual", step_checks.constraints);
     row.add("equation_residual", step_checks.equation_residual);
     row.add("friction_law_residual", step_checks.friction_law);
     row.add("stick_speed", step_checks.stick_motion);

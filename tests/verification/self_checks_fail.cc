@@ -5,16 +5,23 @@
        in the time stepping would do (through the step observer),
    and, injected through the test-only Sabotage hooks,
      - the friction force applied (and reported) with the wrong sign,
-     - the friction coefficient 10% too large in the solver,
-     - the load vector 10% too large in the time stepping.
+     - the friction coefficient 10% too large in the solver, also with a
+       loose 'Solver/Convexification tolerance' (1e-2), whose allowance in
+       the check of the law stops at 1e-3 of max g(0),
+     - the load vector 10% too large in the time stepping,
+     - the stiffness matrix B 1% too large in the assembly,
+     - a velocity off the constraints of V_h (a node of Gamma_3 given a
+       normal velocity of 1e-3 of max |w_n| after the step).
    Each run must end with 'Self-check failed' (a non-zero exit of the
    program), naming the check that caught the error: the doubled velocity
-   by both energy identities, the sign by the friction law, the sticking
-   nodes' rest and the decreasing friction dissipation, the coefficient by
-   the friction law,
-   the load by the energy identity by quadrature. The energy identity from
-   the matrices misses the last three: each step still solves its own
-   linear system.
+   by the energy identity of its step, the sign by the friction law, the
+   sticking nodes' rest and the decreasing friction dissipation, the
+   coefficient by the friction law, the load by the load vector against
+   the loads' integral, the stiffness by the matrices against their forms,
+   the velocity off the constraints by the constraints' check. The energy
+   identity misses all but the doubled velocity (and the velocity off the
+   constraints, which the step did not solve for): each step still solves
+   its own linear system.
    The bushing of prm/bushing.prm (8 x 4 cells, k = 1/16), where the rigid
    rotation about the axis lies in V_h and the balance of moments about it
    is a self-check too, runs as it is, with the doubled velocity and with
@@ -30,6 +37,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 using namespace Contact;
 
@@ -37,17 +45,19 @@ void run(const std::string &name,
          const Sabotage<2> &sabotage,
          const bool         double_velocity_after_step_3 = false,
          const std::string &scene                        = "barboteu2015.prm",
-         const std::string &refinement = "Geometry/Cell size=0.0625")
+         const std::string &refinement = "Geometry/Cell size=0.0625",
+         const std::vector<std::string> &more_settings = {})
 {
+  std::vector<std::string> settings = {refinement,
+                                       "Time/Time step=0.0625",
+                                       "Output/VTU interval=0",
+                                       "Output/Progress interval=0",
+                                       "Output/Print timings=false",
+                                       "Output/Report times=",
+                                       "Output/Output directory=" + name};
+  settings.insert(settings.end(), more_settings.begin(), more_settings.end());
   const Parameters parameters =
-    read_parameters(CONTACT_PRM_DIR "/" + scene,
-                    {refinement,
-                     "Time/Time step=0.0625",
-                     "Output/VTU interval=0",
-                     "Output/Progress interval=0",
-                     "Output/Print timings=false",
-                     "Output/Report times=",
-                     "Output/Output directory=" + name});
+    read_parameters(CONTACT_PRM_DIR "/" + scene, settings);
   ContactProblem<2> problem(parameters, sabotage);
   if (double_velocity_after_step_3)
     problem.add_postprocessor(
@@ -92,6 +102,21 @@ int main(int argc, char *argv[])
     return 1.1;
   };
   run("friction_coefficient_times_1.1", larger_coefficient);
+  run("friction_coefficient_times_1.1_loose_tolerance",
+      larger_coefficient,
+      false,
+      "barboteu2015.prm",
+      "Geometry/Cell size=0.0625",
+      {"Solver/Friction method=convexification",
+       "Solver/Convexification tolerance=0.01"});
+
+  Sabotage<2> stiffer;
+  stiffer.stiffness_factor = 1.01;
+  run("stiffness_matrix_times_1.01", stiffer);
+
+  Sabotage<2> off_constraints;
+  off_constraints.normal_velocity = 1e-3;
+  run("velocity_off_the_constraints", off_constraints);
 
   Sabotage<2> larger_load;
   larger_load.load_factor = 1.1;
