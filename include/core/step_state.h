@@ -79,7 +79,14 @@ namespace Contact
      *  not saved. */
     TrilinosWrappers::MPI::Vector step_rhs;
     TrilinosWrappers::MPI::Vector system_times_velocity;
-    EnergyBalance                 energy;
+    /** |M w_n| / k + |A w_n| + k |B w_n|: the size of the terms of
+     *  system_times_velocity, the scale of its round-off. */
+    double system_times_velocity_terms = 0;
+    /** The last step's terms of the energy identity: the energies after
+     *  it and what it dissipated and what the loads did in it (set by the
+     *  step, not saved). */
+    EnergyBalance step_energy;
+    EnergyBalance energy;
 
     /** What a checkpoint keeps: what the next step reads (u, w, M w, B u)
      *  and the balance. u_{n-1}, w_{n-1} and F_n are set by the step. */

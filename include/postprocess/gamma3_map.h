@@ -1,13 +1,12 @@
 /**
  * Gamma3Map<dim>: the contact boundary as the self-checks see it
- * (gamma3_map.cc), built from the mesh, the finite element and the
- * mapping alone, not from the friction solver's node list: each node's
- * dofs, its weight m_p = int_Gamma3 phi_p ds, and its normal as deal.II's
- * no-normal-flux constraints define it (the manifold's normal at the node,
- * oriented outward, averaged over the faces around it). Through it the
- * checks read the body's velocity at the nodes and apply the solver's
- * nodal forces to the body, so that a wrong weight, tangent or dof in the
- * solver's map of Gamma_3 is seen instead of shared.
+ * (gamma3_map.cc), built from the mesh, the finite element, the mapping and
+ * the constraints of V_h alone, not from the friction solver's node list:
+ * each node's dofs, its weight m_p = int_Gamma3 phi_p ds and the
+ * directions in which V_h fixes it (its tangent plane is what is left).
+ * Through it the checks read the body's velocity at the nodes and apply
+ * the solver's nodal forces to the body, so that a wrong weight, tangent or
+ * dof in the solver's map of Gamma_3 is seen instead of shared.
  */
 #ifndef contact_gamma3_map_h
 #define contact_gamma3_map_h
@@ -28,14 +27,21 @@ namespace Contact
       Point<dim>                               location;
       std::array<types::global_dof_index, dim> dofs;
       double                                   weight = 0;
-      Tensor<1, dim>                           normal;
-      bool                                     locally_owned = false;
+      // Orthonormal: the normal of Gamma_3 (averaged with a symmetry
+      // plane's where deal.II's constraints do), a symmetry plane's, a
+      // clamp's.
+      std::vector<Tensor<1, dim>> fixed_directions;
+      bool                        locally_owned = false;
 
-      /** The part of a vector at the node that lies in Gamma_3's tangent
-       *  plane. */
+      /** The part of a vector at the node in which V_h lets it move (the
+       *  tangent plane of Gamma_3, less any direction a symmetry plane or
+       *  a clamp fixes). */
       Tensor<1, dim> tangential(const Tensor<1, dim> &vector) const
       {
-        return vector - (vector * normal) * normal;
+        Tensor<1, dim> free = vector;
+        for (const Tensor<1, dim> &direction : fixed_directions)
+          free -= (vector * direction) * direction;
+        return free;
       }
     };
 
@@ -44,7 +50,8 @@ namespace Contact
               const std::vector<types::boundary_id> &contact_ids);
 
     /** For each of `locations`, the index of the node there; throws where
-     *  there is none within round-off of the mesh's size. */
+     *  there is none within round-off of the coordinates' size, or where
+     *  two locations have one node. */
     std::vector<unsigned int>
     nodes_at(const std::vector<Point<dim>> &locations) const;
 

@@ -283,22 +283,32 @@ namespace Contact
     TimerOutput::Scope t(computing_timer, "Energy balance");
     const double       k     = time_step;
     const double       w_M_w = products.mass * state.velocity;
-    state.energy.numerical_dissipation +=
+    // The step's own terms, kept apart from the sums over the steps (the
+    // self-check of the step's identity reads them without the sums'
+    // round-off).
+    EnergyBalance &step = state.step_energy;
+    step                = EnergyBalance();
+    step.numerical_dissipation =
       0.5 * (w_M_w - 2. * (state.mass_times_velocity * state.velocity) +
              state.mass_times_velocity * state.old_velocity) +
       0.5 * k * k * (products.elasticity * state.velocity);
-    state.energy.kinetic = 0.5 * w_M_w;
+    step.kinetic = 0.5 * w_M_w;
     VectorType B_u(state.elasticity_times_displacement);
     B_u.add(k, products.elasticity);
-    state.energy.elastic = 0.5 * (B_u * state.displacement);
-    state.energy.viscous_dissipation +=
-      k * (products.viscosity * state.velocity);
-    state.energy.external_work += k * (state.load * state.velocity);
+    step.elastic             = 0.5 * (B_u * state.displacement);
+    step.viscous_dissipation = k * (products.viscosity * state.velocity);
+    step.external_work       = k * (state.load * state.velocity);
     const ContactBoundary<dim> &gamma3 = friction_solver->boundary();
     if (!friction_law.is_frictionless())
-      state.energy.friction_dissipation +=
+      step.friction_dissipation =
         k * (friction_solver->state().friction_force *
              gamma3.tangential_velocities(state.velocity));
+    state.energy.kinetic = step.kinetic;
+    state.energy.elastic = step.elastic;
+    state.energy.numerical_dissipation += step.numerical_dissipation;
+    state.energy.viscous_dissipation += step.viscous_dissipation;
+    state.energy.external_work += step.external_work;
+    state.energy.friction_dissipation += step.friction_dissipation;
   }
 
 

@@ -308,9 +308,9 @@ namespace Contact
   // a manufactured solution), with the quadrature of the assembly. The
   // loads are evaluated once for all fields (the velocity's power and the
   // rotation's moment), and with each the sum of the magnitudes of the
-  // products it adds up (of every cell's and node's entry), the scale of its
-  // round-off. A body force constant in time is integrated once
-  // (unconstrained_body_load).
+  // products it adds up (of every cell's and node's entry, and of every
+  // entry of a body force constant in time, which is integrated once:
+  // unconstrained_body_load), the scale of its round-off.
   template <int dim>
   std::vector<LoadPower>
   Loads<dim>::power(const double                           load_time,

@@ -133,6 +133,9 @@ namespace Contact
                                     products.mass,
                                     time_step,
                                     products.elasticity);
+    state.system_times_velocity_terms =
+      products.mass.l2_norm() / time_step + products.viscosity.l2_norm() +
+      time_step * products.elasticity.l2_norm();
     state.mass_times_velocity = products.mass;
     state.elasticity_times_displacement.add(time_step, products.elasticity);
     for (const auto &postprocessor : postprocessors)

@@ -1,13 +1,11 @@
-/* Gamma_3 as the self-checks see it: its nodes' dofs, weights and normals
-   from the mesh and the element, independently of the friction solver's
-   node list (contact_nodes.cc). */
+/* Gamma_3 as the self-checks see it: its nodes' dofs, weights and tangent
+   planes from the mesh, the element and the constraints of V_h,
+   independently of the friction solver's node list (contact_nodes.cc). */
 
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
 
 #include <deal.II/fe/fe_values.h>
-
-#include <deal.II/grid/manifold.h>
 
 #include <deal.II/numerics/rtree.h>
 
@@ -20,31 +18,61 @@
 
 namespace Contact
 {
+  namespace
+  {
+    // The directions in which the constraints of V_h fix a node with these
+    // dofs, orthonormal: the rows u_d - sum_e c_de u_e of its constrained
+    // dofs (a clamp, the normal of Gamma_3 or of a symmetry plane, or a
+    // normal that deal.II averaged over both where they meet).
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    fixed_directions(const std::array<types::global_dof_index, dim> &dofs,
+                     const AffineConstraints<double> &constraints)
+    {
+      std::vector<Tensor<1, dim>> directions;
+      for (unsigned int d = 0; d < dim; ++d)
+        if (constraints.is_constrained(dofs[d]))
+          {
+            Tensor<1, dim> row;
+            row[d] = 1;
+            for (const auto &[dof, weight] :
+                 *constraints.get_constraint_entries(dofs[d]))
+              for (unsigned int e = 0; e < dim; ++e)
+                if (dofs[e] == dof)
+                  row[e] -= weight;
+            for (const Tensor<1, dim> &direction : directions)
+              row -= (row * direction) * direction;
+            if (row.norm() > 1e-10)
+              directions.push_back(row / row.norm());
+          }
+      return directions;
+    }
+  } // namespace
+
+
   // @sect4{Gamma3Map::Gamma3Map}
 
-  // Each process integrates over the Gamma_3 faces of its own cells: the
-  // weight int phi_p ds with the space's face rule, and at the face's
-  // support points the normal that compute_no_normal_flux_constraints
-  // takes there (the manifold's, turned outward like the mapping's). The
-  // parts are gathered on every process and summed; a node's normal is
-  // the normalised sum of its faces' normals.
+  // Each process integrates over the Gamma_3 faces of its own cells the
+  // weight int phi_p ds with the space's face rule, and reads the
+  // constraints of the nodes there; the parts are gathered on every
+  // process and the weights summed.
   template <int dim>
   Gamma3Map<dim>::Gamma3Map(const DiscreteSpace<dim> &discrete_space,
                             const std::vector<types::boundary_id> &contact_ids)
     : space(discrete_space)
   {
-    const std::set<types::boundary_id> ids(contact_ids.begin(),
+    const std::set<types::boundary_id>   ids(contact_ids.begin(),
                                            contact_ids.end());
-    const FiniteElement<dim>          &fe = space.fe;
-    FEFaceValues<dim>                  integrals(*space.mapping,
+    const FiniteElement<dim>            &fe = space.fe;
+    FEFaceValues<dim>                    integrals(*space.mapping,
                                 fe,
                                 space.face_quadrature,
                                 update_values | update_JxW_values);
-    std::map<unsigned int, std::unique_ptr<FEFaceValues<dim>>> at_nodes;
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
 
-    // Per node and process: dofs, location, weight, normal.
-    constexpr unsigned int record_size = dim + dim + 1 + dim;
+    // Per node and process: dofs, location, weight, the number of fixed
+    // directions and the directions.
+    constexpr unsigned int record_size = dim + dim + 1 + 1 + dim * dim;
     std::vector<double>    records;
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -52,14 +80,6 @@ namespace Contact
           if (cell->face(f)->at_boundary() &&
               ids.count(cell->face(f)->boundary_id()) != 0)
             {
-              auto &support = at_nodes[f];
-              if (!support)
-                support = std::make_unique<FEFaceValues<dim>>(
-                  *space.mapping,
-                  fe,
-                  Quadrature<dim - 1>(fe.get_unit_face_support_points(f)),
-                  update_quadrature_points | update_normal_vectors);
-              support->reinit(cell, f);
               integrals.reinit(cell, f);
               cell->get_dof_indices(cell_dofs);
               for (unsigned int j = 0; j < fe.n_dofs_per_face(f); ++j)
@@ -69,10 +89,14 @@ namespace Contact
                     fe.system_to_component_index(i);
                   if (component != 0)
                     continue;
+                  std::array<types::global_dof_index, dim> dofs;
                   for (unsigned int d = 0; d < dim; ++d)
-                    records.push_back(
-                      cell_dofs[fe.component_to_system_index(d, base_index)]);
-                  const Point<dim> &x = support->quadrature_point(j);
+                    dofs[d] =
+                      cell_dofs[fe.component_to_system_index(d, base_index)];
+                  records.insert(records.end(), dofs.begin(), dofs.end());
+                  const Point<dim> x =
+                    space.mapping->transform_unit_to_real_cell(
+                      cell, fe.base_element(0).unit_support_point(base_index));
                   for (unsigned int d = 0; d < dim; ++d)
                     records.push_back(x[d]);
                   double weight = 0;
@@ -81,14 +105,12 @@ namespace Contact
                     weight += integrals.shape_value_component(i, q, 0) *
                               integrals.JxW(q);
                   records.push_back(weight);
-                  Tensor<1, dim> normal =
-                    cell->face(f)->get_manifold().normal_vector(cell->face(f),
-                                                                x);
-                  if (normal * support->normal_vector(j) < 0)
-                    normal *= -1.;
-                  normal /= normal.norm();
-                  for (unsigned int d = 0; d < dim; ++d)
-                    records.push_back(normal[d]);
+                  const auto fixed =
+                    fixed_directions<dim>(dofs, space.constraints);
+                  records.push_back(fixed.size());
+                  for (unsigned int r = 0; r < dim; ++r)
+                    for (unsigned int d = 0; d < dim; ++d)
+                      records.push_back(r < fixed.size() ? fixed[r][d] : 0.);
                 }
             }
 
@@ -97,18 +119,25 @@ namespace Contact
          Utilities::MPI::all_gather(space.mpi_communicator, records))
       for (auto r = part.begin(); r != part.end(); r += record_size)
         {
-          Node &node = by_dof[static_cast<types::global_dof_index>(r[0])];
+          const auto key   = static_cast<types::global_dof_index>(r[0]);
+          const bool first = (by_dof.count(key) == 0);
+          Node      &node  = by_dof[key];
+          node.weight += r[2 * dim];
+          if (!first)
+            continue;
           for (unsigned int d = 0; d < dim; ++d)
             {
               node.dofs[d]     = static_cast<types::global_dof_index>(r[d]);
               node.location[d] = r[dim + d];
-              node.normal[d] += r[2 * dim + 1 + d];
             }
-          node.weight += r[2 * dim];
+          node.fixed_directions.resize(
+            static_cast<unsigned int>(r[2 * dim + 1]));
+          for (unsigned int i = 0; i < node.fixed_directions.size(); ++i)
+            for (unsigned int d = 0; d < dim; ++d)
+              node.fixed_directions[i][d] = r[2 * dim + 2 + i * dim + d];
         }
     for (auto &[dof, node] : by_dof)
       {
-        node.normal /= node.normal.norm();
         node.locally_owned = space.locally_owned_dofs.is_element(dof);
         nodes.push_back(node);
       }
@@ -117,19 +146,23 @@ namespace Contact
 
   // @sect4{Gamma3Map::nodes_at}
 
+  // A location's node: the nearest, if it is there to round-off of the
+  // coordinates' size; no two locations may share one.
   template <int dim>
   std::vector<unsigned int>
   Gamma3Map<dim>::nodes_at(const std::vector<Point<dim>> &locations) const
   {
     std::vector<Point<dim>> points;
-    double                  extent = 0;
+    double                  size = 0;
     for (const Node &node : nodes)
       {
         points.push_back(node.location);
-        extent = std::max(extent, node.location.distance(points.front()));
+        size = std::max(
+          {size, node.location.norm(), node.location.distance(points.front())});
       }
     const auto                tree = pack_rtree_of_indices(points);
     std::vector<unsigned int> indices;
+    std::vector<bool>         taken(points.size(), false);
     for (const Point<dim> &x : locations)
       {
         std::vector<unsigned int> nearest;
@@ -138,11 +171,14 @@ namespace Contact
         std::ostringstream where;
         where << x;
         AssertThrow(!nearest.empty() &&
-                      points[nearest[0]].distance(x) <= 1e-10 * extent,
+                      points[nearest[0]].distance(x) <= 1e-10 * size &&
+                      !taken[nearest[0]],
                     ExcMessage("Self-check failed: the friction solver has a "
                                "node of Gamma_3 at (" +
                                where.str() +
-                               ") where the mesh has no node of Gamma_3."));
+                               ") where the mesh has no node of Gamma_3 that "
+                               "no other node of the solver has taken."));
+        taken[nearest[0]] = true;
         indices.push_back(nearest[0]);
       }
     return indices;

@@ -1,11 +1,13 @@
 /* The checks every run makes of its own results (doc/verification.md):
-   the energy identity of the scheme twice, from the matrices and by
-   quadrature of the fields, the equations (5.2) from the stored fields,
-   the friction law and the sticking nodes' rest at the stored velocities
-   (both through the checks' own map of Gamma_3), the sign of the friction
-   power, and the balance of moments about the z-axis where a rigid
-   rotation is admissible. A run that fails one of them ends with an error
-   instead of presenting its results as good. */
+   once, the matrices against the integrals of their forms; at every step,
+   each relative to a scale of that step, the step's energy identity from
+   the matrices, its load vector against the loads' integral, the
+   constraints of V_h, the equations (5.2) from the stored fields, the
+   friction law and the sticking nodes' rest at the stored velocities
+   (through the checks' own map of Gamma_3), the sign of the friction
+   power, and the balance of moments about the z-axis where it can be
+   stated. A run that fails one of them ends with an error instead of
+   presenting its results as good. */
 
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/exceptions.h>
@@ -48,8 +50,10 @@ namespace Contact
    *     loads or the friction law: it checks the solve and the bookkeeping.
    *   - load_power: the step's load power F_n . w_n with the assembled load
    *     vector against int f(t_n) . w_h from the loads' expressions
-   *     (Loads::power()), relative to the magnitudes of the products both
-   *     add up: a load vector that is not the loads' integral.
+   *     (Loads::power()), relative to |F_n| |w_n| plus the magnitudes of
+   *     the integral's products: a load vector that is not the loads'
+   *     integral (not where F . w vanishes, e.g. a pressure normal to the
+   *     motion).
    *   - constraints: how far w_n is from V_h (the constraints of the clamp
    *     and of the bilateral contact), relative to max |w_n|.
    *   - equation_residual: (5.2) at t_n from the stored fields,
@@ -381,7 +385,7 @@ namespace Contact
 
   // The force the solver reports at each node, sum_i eta_{p,i} t_{p,i}
   // with its tangents, at the node of the map at its place; zero where the
-  // solver has no node (where Gamma_3 meets the clamp).
+  // solver has no node (where V_h fixes the node in every direction).
   template <int dim>
   std::vector<Tensor<1, dim>> SelfChecks<dim>::friction_forces_on_map() const
   {
@@ -401,9 +405,9 @@ namespace Contact
   // the stored w_n (K w_n = ((1/k) M + A + k B) w_n from the step's products
   // of w_n with the three matrices, not from K or its factorisation) and the
   // step's right-hand side, with C^T eta_n put on the dofs of the map's
-  // nodes and condensed. Relative to the largest of
-  // the three vectors' norms: a step's own scale, which an error in one
-  // step cannot hide in.
+  // nodes and condensed. Relative to the largest of |M w_n| / k + |A w_n| +
+  // k |B w_n|, |step_rhs| and |C^T eta_n|: a step's own scale, which an
+  // error in one step cannot hide in.
   template <int dim>
   double SelfChecks<dim>::equation_residual(
     const std::vector<Tensor<1, dim>> &forces) const
@@ -420,8 +424,9 @@ namespace Contact
     residual = this->state().system_times_velocity;
     gamma3_map->add_nodal_forces(forces, friction);
     const VectorType &step_rhs = this->state().step_rhs;
-    const double      scale =
-      std::max({residual.l2_norm(), step_rhs.l2_norm(), friction.l2_norm()});
+    const double scale = std::max({this->state().system_times_velocity_terms,
+                                   step_rhs.l2_norm(),
+                                   friction.l2_norm()});
     residual -= step_rhs;
     residual += friction;
     return residual.l2_norm() /
@@ -432,12 +437,18 @@ namespace Contact
   // @sect4{SelfChecks::check_friction_law}
 
   // The friction law (5.3)-(5.4) at the stored velocities, through the
-  // map: at each node the tangential parts (to the map's normal) of the
-  // solver's force f_p and of w_n, and the bound g_p = m_p S mu(|v_p|) with
-  // the map's weight and the true law. Where the solver says the node
-  // slips, f_p must be g_p v_p / |v_p| (or, at a rate of zero, within
-  // g_p(0)); where it sticks, within g_p(0) and at rest. The friction power
-  // sum f_p . v_p of the slipping nodes must not be negative.
+  // map: at each node the parts of the solver's force f_p and of w_n in
+  // which V_h lets the node move, and the bound g_p = m_p S mu(|v_p|) with
+  // the map's weight and the true law, in the complementarity form
+  //   f_p = P_{B(g_p)}(f_p + c_p v_p),
+  // P the projection onto the ball of radius g_p: within the ball where
+  // v_p = 0, g_p v_p / |v_p| where v_p != 0. Its residual |f_p - P(...)|
+  // is relative to max_p g_p(0). c_p = m_p S mu(0) / (the step's speed
+  // scale) makes a velocity of round-off size give a force of round-off
+  // size, so that a node slipping by round-off, or at a slip front, gives
+  // no spurious direction. The nodes the solver says stick must be at
+  // rest, and the friction power sum f_p . v_p of those it says slip must
+  // not be negative.
   template <int dim>
   void
   SelfChecks<dim>::check_friction_law(const FastVector                  &w,
@@ -451,6 +462,9 @@ namespace Contact
 
     const FrictionLaw &law        = this->friction_law();
     const auto         velocities = gamma3_map->values_at_nodes(w);
+    const double       speed_scale =
+      std::max(this->state().velocity.linfty_norm(),
+               this->friction_solver().free_slip_speed());
     double largest_bound = std::numeric_limits<double>::min(), violation = 0,
            largest_speed = 0, power = 0;
     for (unsigned int k = 0; k < gamma3_map->nodes.size(); ++k)
@@ -458,26 +472,22 @@ namespace Contact
         const auto          &node         = gamma3_map->nodes[k];
         const Tensor<1, dim> force        = node.tangential(forces[k]);
         const Tensor<1, dim> v            = node.tangential(velocities[k]);
-        const double         speed        = v.norm();
         const double         static_bound = node.weight * law.bound(0.);
+        const double         bound        = node.weight * law.bound(v.norm());
         largest_bound = std::max(largest_bound, static_bound);
-        if (slips[k] && speed > 0)
-          {
-            violation = std::max(
-              violation,
-              (force - node.weight * law.bound(speed) / speed * v).norm());
-            power += force * v;
-          }
+        const Tensor<1, dim> z =
+          force + (speed_scale > 0 ? static_bound / speed_scale : 0.) * v;
+        const Tensor<1, dim> projection =
+          (z.norm() > bound ? (bound / z.norm()) * z : z);
+        violation = std::max(violation, (force - projection).norm());
+        if (slips[k])
+          power += force * v;
         else
-          violation = std::max(violation, force.norm() - static_bound);
-        if (!slips[k])
-          largest_speed = std::max(largest_speed, speed);
+          largest_speed = std::max(largest_speed, v.norm());
       }
     step_checks.friction_law = violation / largest_bound;
     step_checks.stick_motion =
-      largest_speed / std::max({this->state().velocity.linfty_norm(),
-                                this->friction_solver().free_slip_speed(),
-                                std::numeric_limits<double>::min()});
+      largest_speed / std::max(speed_scale, std::numeric_limits<double>::min());
     step_checks.negative_friction_power =
       std::abs(std::min(this->time_step() * power, 0.)) /
       std::max(step_energy_scale, std::numeric_limits<double>::min());
@@ -579,8 +589,8 @@ namespace Contact
   // int rho |x_h|^2, y^T A y against int A eps(y_h) : eps(y_h), x^T B x
   // and y^T B y against the same with B, for two fields x, y in V_h whose
   // free entries vary from dof to dof without a pattern (a wrong entry of
-  // a matrix shows in them) and are the same for every number of
-  // processes. The largest difference relative to the integral.
+  // a matrix shows in them). The largest difference relative to the
+  // integral.
   template <int dim>
   double SelfChecks<dim>::check_matrices() const
   {
@@ -656,31 +666,36 @@ namespace Contact
   // The step's part of the energy identity (5.7) of backward Euler, from
   // the products of the matrices with w_n (EnergyBalance), relative to the
   // sum of the magnitudes of its terms: the energies before and after the
-  // step, and what it dissipated and what the loads did in it. Then the
-  // load power F_n . w_n of the step with the assembled load vector
-  // against the loads' integral with w_h (Loads::power()), relative to the
-  // magnitudes of the products both add up; and the balance of moments.
+  // step, and what it dissipated and what the loads did in it (the step's
+  // own terms, StepState::step_energy, not differences of the sums over
+  // the steps, whose round-off would swamp a body that has come to rest).
+  // Then the load power F_n . w_n of the step with the assembled load
+  // vector against the loads' integral with w_h (Loads::power()), relative
+  // to |F_n| |w_n| (a bound of the magnitudes of the products F_i w_i)
+  // plus the magnitudes of the integral's products; and the balance of
+  // moments.
   template <int dim>
   void SelfChecks<dim>::check_energy_and_loads(
     const FastVector                  &w,
     const std::vector<Tensor<1, dim>> &forces)
   {
     const StepState     &state = this->state();
-    const EnergyBalance &now = state.energy, &before = last_energy;
+    const EnergyBalance &now = state.step_energy, &before = last_energy;
     const double         energy_terms =
       now.kinetic + before.kinetic + now.elastic + before.elastic +
-      (now.viscous_dissipation - before.viscous_dissipation) +
-      std::abs(now.friction_dissipation - before.friction_dissipation) +
-      (now.numerical_dissipation - before.numerical_dissipation) +
-      std::abs(now.external_work - before.external_work);
+      std::abs(now.viscous_dissipation) + std::abs(now.friction_dissipation) +
+      std::abs(now.numerical_dissipation) + std::abs(now.external_work);
     const auto relative = [](const double value, const double scale) {
       return std::abs(value) /
              std::max(scale, std::numeric_limits<double>::min());
     };
     step_checks.algebraic_energy =
-      relative(now.residual() - before.residual(), energy_terms);
+      relative(now.kinetic - before.kinetic + now.elastic - before.elastic +
+                 now.viscous_dissipation + now.friction_dissipation +
+                 now.numerical_dissipation - now.external_work,
+               energy_terms);
     step_energy_scale = energy_terms;
-    last_energy       = now;
+    last_energy       = state.energy;
 
     const std::vector<LoadPower> integrals =
       this->loads().power(state.time, {&w, &rotation});
@@ -710,7 +725,12 @@ namespace Contact
         {
           double value = line.inhomogeneity;
           for (const auto &[dof, weight] : line.entries)
-            value += weight * w(dof);
+            {
+              AssertThrow(space.locally_relevant_dofs.is_element(dof),
+                          ExcInternalError("A constraint of V_h refers to a "
+                                           "dof this process does not see."));
+              value += weight * w(dof);
+            }
           largest = std::max(largest, std::abs(w(line.index) - value));
         }
     largest = Utilities::MPI::max(largest, this->mpi_communicator());
@@ -866,7 +886,7 @@ namespace Contact
     add(largest_checks.algebraic_energy,
         "the energy identity of a step from the matrices, i.e. the steps' "
         "linear solves,",
-        "algebraic_energy_residual");
+        "algebraic_energy_residual, the sum over the steps in J,");
     add(largest_checks.load_power,
         "the load power of a step with the load vector against the loads' "
         "integral",
