@@ -25,6 +25,16 @@ namespace Contact
   std::vector<ContactNode<dim>>
   make_contact_nodes(const DiscreteSpace<dim>              &space,
                      const std::vector<types::boundary_id> &contact_ids);
+
+  /** The directions in which the constraints of V_h fix a node with these
+   *  dofs (a clamp, the normal of Gamma_3, of a symmetry plane, or the
+   *  normal deal.II averaged over both), orthonormal. The constraints
+   *  define V_h: the friction solver's tangents and the self-checks' map
+   *  of Gamma_3 both start from them. */
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  fixed_directions(const std::array<types::global_dof_index, dim> &dofs,
+                   const AffineConstraints<double>                &constraints);
 } // namespace Contact
 
 #endif

@@ -14,6 +14,35 @@
 
 namespace Contact
 {
+  // @sect4{fixed_directions}
+
+  // The rows of the constraints of one node's dofs, orthonormal
+  // (Gram-Schmidt): u_d - sum_e c_de u_e for each constrained dof d.
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  fixed_directions(const std::array<types::global_dof_index, dim> &dofs,
+                   const AffineConstraints<double>                &constraints)
+  {
+    std::vector<Tensor<1, dim>> directions;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (constraints.is_constrained(dofs[d]))
+        {
+          Tensor<1, dim> row;
+          row[d] = 1;
+          for (const auto &[dof, weight] :
+               *constraints.get_constraint_entries(dofs[d]))
+            for (unsigned int e = 0; e < dim; ++e)
+              if (dofs[e] == dof)
+                row[e] -= weight;
+          for (const Tensor<1, dim> &direction : directions)
+            row -= (row * direction) * direction;
+          if (row.norm() > 1e-10)
+            directions.push_back(row / row.norm());
+        }
+    return directions;
+  }
+
+
   // @sect4{The tangent basis of a node of Gamma_3}
 
   // The directions in which a node of Gamma_3 may not move are the rows of
@@ -55,31 +84,6 @@ namespace Contact
       first -= (first * normal) * normal;
       first /= first.norm();
       return {{first, cross_product_3d(normal, first)}};
-    }
-
-    // Orthonormal rows of the constraints of one node's dofs (Gram-Schmidt).
-    template <int dim>
-    std::vector<Tensor<1, dim>>
-    constrained_directions(const std::array<types::global_dof_index, dim> &dofs,
-                           const AffineConstraints<double> &constraints)
-    {
-      std::vector<Tensor<1, dim>> directions;
-      for (unsigned int d = 0; d < dim; ++d)
-        if (constraints.is_constrained(dofs[d]))
-          {
-            Tensor<1, dim> row;
-            row[d] = 1;
-            for (const auto &[dof, weight] :
-                 *constraints.get_constraint_entries(dofs[d]))
-              for (unsigned int e = 0; e < dim; ++e)
-                if (dofs[e] == dof)
-                  row[e] -= weight;
-            for (const Tensor<1, dim> &direction : directions)
-              row -= (row * direction) * direction;
-            if (row.norm() > 1e-10)
-              directions.push_back(row / row.norm());
-          }
-      return directions;
     }
 
     // The tangents of a node whose constraint rows are `constrained`
@@ -209,7 +213,7 @@ namespace Contact
     for (const auto &[key, node] : integrate_contact_faces(space, contact_ids))
       {
         const auto constrained =
-          constrained_directions<dim>(node.dofs, space.constraints);
+          fixed_directions<dim>(node.dofs, space.constraints);
         records.insert(records.end(), node.dofs.begin(), node.dofs.end());
         records.push_back(node.scalar_dof);
         for (unsigned int d = 0; d < dim; ++d)
@@ -282,9 +286,12 @@ namespace Contact
 
 
 
-#define INSTANTIATE(dim)                                     \
-  template std::vector<ContactNode<dim>> make_contact_nodes( \
-    const DiscreteSpace<dim> &, const std::vector<types::boundary_id> &);
+#define INSTANTIATE(dim)                                                  \
+  template std::vector<ContactNode<dim>> make_contact_nodes(              \
+    const DiscreteSpace<dim> &, const std::vector<types::boundary_id> &); \
+  template std::vector<Tensor<1, dim>> fixed_directions<dim>(             \
+    const std::array<types::global_dof_index, dim> &,                     \
+    const AffineConstraints<double> &);
 
   CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

@@ -10,6 +10,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <base/dimensions.h>
+#include <core/contact_nodes.h>
 #include <postprocess/gamma3_map.h>
 
 #include <map>
@@ -18,38 +19,6 @@
 
 namespace Contact
 {
-  namespace
-  {
-    // The directions in which the constraints of V_h fix a node with these
-    // dofs, orthonormal: the rows u_d - sum_e c_de u_e of its constrained
-    // dofs (a clamp, the normal of Gamma_3 or of a symmetry plane, or a
-    // normal that deal.II averaged over both where they meet).
-    template <int dim>
-    std::vector<Tensor<1, dim>>
-    fixed_directions(const std::array<types::global_dof_index, dim> &dofs,
-                     const AffineConstraints<double> &constraints)
-    {
-      std::vector<Tensor<1, dim>> directions;
-      for (unsigned int d = 0; d < dim; ++d)
-        if (constraints.is_constrained(dofs[d]))
-          {
-            Tensor<1, dim> row;
-            row[d] = 1;
-            for (const auto &[dof, weight] :
-                 *constraints.get_constraint_entries(dofs[d]))
-              for (unsigned int e = 0; e < dim; ++e)
-                if (dofs[e] == dof)
-                  row[e] -= weight;
-            for (const Tensor<1, dim> &direction : directions)
-              row -= (row * direction) * direction;
-            if (row.norm() > 1e-10)
-              directions.push_back(row / row.norm());
-          }
-      return directions;
-    }
-  } // namespace
-
-
   // @sect4{Gamma3Map::Gamma3Map}
 
   // Each process integrates over the Gamma_3 faces of its own cells the
