@@ -791,13 +791,12 @@ namespace Contact
   void SelfChecks<dim>::print_summary() const
   {
     // A value far below the tolerance is round-off, whose digits depend
-    // on the machine: only its bound is printed.
+    // on the machine (an exact zero on one BLAS kernel is round-off on
+    // another): only its bound is printed.
     const auto line =
       [&](const std::string &name, const double value, const double violation) {
         this->pcout() << "  " << name << ": " << std::setprecision(2);
-        if (value == 0.)
-          this->pcout() << 0;
-        else if (value < round_off_bound)
+        if (value < round_off_bound)
           this->pcout() << "below " << round_off_bound;
         else
           this->pcout() << value;
