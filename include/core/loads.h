@@ -102,7 +102,9 @@ namespace Contact
     const bool body_force_is_constant;
     VectorType constant_body_load;
     FastVector unconstrained_body_load;
-    // This process's cells at the boundary, which the surface loads visit.
+    // This process's cells, and those at the boundary, which the surface
+    // loads alone visit.
+    std::vector<typename DoFHandler<dim>::active_cell_iterator> owned_cells;
     std::vector<typename DoFHandler<dim>::active_cell_iterator> boundary_cells;
     // The FEValues of visit_loads().
     mutable std::unique_ptr<FEValues<dim>>     cell_values;

@@ -63,8 +63,12 @@ namespace Contact
   {
     gamma3 = &boundary;
     for (const auto &cell : space.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->at_boundary())
-        boundary_cells.push_back(cell);
+      if (cell->is_locally_owned())
+        {
+          owned_cells.push_back(cell);
+          if (cell->at_boundary())
+            boundary_cells.push_back(cell);
+        }
     if (body_force_is_constant)
       assemble_constant_body_load();
   }
@@ -173,12 +177,7 @@ namespace Contact
 
     // The surface loads alone (every step, when the body force is constant)
     // touch the boundary cells only.
-    std::vector<typename DoFHandler<dim>::active_cell_iterator> all_cells;
-    if (with_body_force)
-      for (const auto &cell : space.dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          all_cells.push_back(cell);
-    for (const auto &cell : (with_body_force ? all_cells : boundary_cells))
+    for (const auto &cell : (with_body_force ? owned_cells : boundary_cells))
       {
         cell_rhs    = 0;
         bool loaded = with_body_force;

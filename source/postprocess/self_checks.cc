@@ -140,11 +140,10 @@ namespace Contact
    *  which the check of the matrices compares them (self_checks.cc). */
   struct FieldIntegrals
   {
-    double kinetic       = 0; // 1/2 int rho |w_n|^2
-    double velocity_jump = 0; // 1/2 int rho |w_n - w_{n-1}|^2
-    double elastic       = 0; // 1/2 int B eps(u_n) : eps(u_n)
-    double viscous_power = 0; // int A eps(w_n) : eps(w_n)
-    double elastic_power = 0; // int B eps(w_n) : eps(w_n)
+    double kinetic       = 0; // 1/2 int rho |w|^2
+    double elastic       = 0; // 1/2 int B eps(u) : eps(u)
+    double viscous_power = 0; // int A eps(w) : eps(w)
+    double elastic_power = 0; // int B eps(w) : eps(w)
   };
 
 
@@ -223,8 +222,7 @@ namespace Contact
 
   private:
     FieldIntegrals              field_integrals(const FastVector &u,
-                                                const FastVector &w,
-                                                const FastVector &old_w) const;
+                                                const FastVector &w) const;
     void                        setup_gamma3_map();
     void                        setup_moment_balance();
     void                        start_self_checks();
@@ -255,13 +253,11 @@ namespace Contact
     std::vector<unsigned int>       map_node_of_solver_node;
     // The vectors of equation_residual().
     mutable VectorType residual_work, friction_work;
-    // The rotation r = e_z x x (interpolated), its tangential components on
-    // Gamma_3 (C r), how much the constraints change it relative to its
-    // size, whether it lies in V_h (the moment balance is then a
-    // self-check), and the moments of the last step.
+    // The rotation r = e_z x x (interpolated), its values at the nodes of
+    // the map of Gamma_3, whether the balance of moments is a self-check,
+    // and the moments of the last step.
     FastVector                  rotation;
     std::vector<Tensor<1, dim>> rotation_at_nodes;
-    double                      rotation_defect           = 0;
     bool                        moment_balance_is_checked = false;
     MomentBalance               moments;
     // |density of the angular momentum| and |w| of the last step checked.
@@ -281,8 +277,7 @@ namespace Contact
   // through FEValues' vector functions, which allocate at every call.
   template <int dim>
   FieldIntegrals SelfChecks<dim>::field_integrals(const FastVector &u,
-                                                  const FastVector &w,
-                                                  const FastVector &old_w) const
+                                                  const FastVector &w) const
   {
     const DiscreteSpace<dim> &space    = this->space();
     const auto               &material = this->parameters().material;
@@ -311,33 +306,26 @@ namespace Contact
                                 update_values | update_JxW_values);
     FEValues<dim>     &mass_values = (lumped ? lumped_values : strain_values);
     const unsigned int n_dofs      = space.fe.n_dofs_per_cell();
-    Vector<double>     u_cell(n_dofs), w_cell(n_dofs), old_w_cell(n_dofs);
+    Vector<double>     u_cell(n_dofs), w_cell(n_dofs);
     std::vector<unsigned int> component(n_dofs);
     for (unsigned int i = 0; i < n_dofs; ++i)
       component[i] = space.fe.system_to_component_index(i).first;
 
-    std::array<double, 5> sums{};
+    std::array<double, 4> sums{};
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           cell->get_dof_values(u, u_cell);
           cell->get_dof_values(w, w_cell);
-          cell->get_dof_values(old_w, old_w_cell);
           strain_values.reinit(cell);
           if (lumped)
             lumped_values.reinit(cell);
           for (const unsigned int q : mass_values.quadrature_point_indices())
             {
-              Tensor<1, dim> w_q, old_w_q;
+              Tensor<1, dim> w_q;
               for (unsigned int i = 0; i < n_dofs; ++i)
-                {
-                  const double phi = mass_values.shape_value(i, q);
-                  w_q[component[i]] += w_cell[i] * phi;
-                  old_w_q[component[i]] += old_w_cell[i] * phi;
-                }
+                w_q[component[i]] += w_cell[i] * mass_values.shape_value(i, q);
               sums[0] += 0.5 * rho * (w_q * w_q) * mass_values.JxW(q);
-              sums[1] +=
-                0.5 * rho * (w_q - old_w_q).norm_square() * mass_values.JxW(q);
             }
           for (const unsigned int q : strain_values.quadrature_point_indices())
             {
@@ -351,15 +339,15 @@ namespace Contact
               const SymmetricTensor<2, dim> eps_u = symmetrize(grad_u),
                                             eps_w = symmetrize(grad_w);
               const double JxW                    = strain_values.JxW(q);
-              sums[2] += 0.5 * form(lambda, two_G, eps_u) * JxW;
-              sums[3] += form(mu1, mu2, eps_w) * JxW;
-              sums[4] += form(lambda, two_G, eps_w) * JxW;
+              sums[1] += 0.5 * form(lambda, two_G, eps_u) * JxW;
+              sums[2] += form(mu1, mu2, eps_w) * JxW;
+              sums[3] += form(lambda, two_G, eps_w) * JxW;
             }
         }
     Utilities::MPI::sum(ArrayView<const double>(sums.data(), sums.size()),
                         this->mpi_communicator(),
                         ArrayView<double>(sums.data(), sums.size()));
-    return {sums[0], sums[1], sums[2], sums[3], sums[4]};
+    return {sums[0], sums[1], sums[2], sums[3]};
   }
 
 
@@ -523,10 +511,10 @@ namespace Contact
     VectorType constrained(r);
     space.constraints.distribute(constrained);
     constrained -= r;
-    const auto &parameters = this->parameters();
-    const auto &geometry   = parameters.geometry;
-    rotation_defect        = constrained.linfty_norm() / r.linfty_norm();
-    const bool must_admit_rotation =
+    const auto  &parameters      = this->parameters();
+    const auto  &geometry        = parameters.geometry;
+    const double rotation_defect = constrained.linfty_norm() / r.linfty_norm();
+    const bool   must_admit_rotation =
       geometry.domain == GeometryParameters::Domain::shell &&
       parameters.boundary.clamped_ids.empty();
     moment_balance_is_checked =
@@ -596,7 +584,7 @@ namespace Contact
   {
     const DiscreteSpace<dim> &space = this->space();
     VectorType x(space.locally_owned_dofs, this->mpi_communicator());
-    VectorType y(x), product(x), zero(x);
+    VectorType y(x), product(x);
     for (const types::global_dof_index i : space.locally_owned_dofs)
       {
         x[i] = std::sin(1.3 * i + 0.7);
@@ -606,9 +594,8 @@ namespace Contact
     y.compress(VectorOperation::insert);
     space.constraints.distribute(x);
     space.constraints.distribute(y);
-    const FieldIntegrals integrals = field_integrals(space.fast_ghosted(x),
-                                                     space.fast_ghosted(y),
-                                                     space.fast_ghosted(zero));
+    const FieldIntegrals integrals =
+      field_integrals(space.fast_ghosted(x), space.fast_ghosted(y));
     const auto form = [&](const MatrixType &matrix, const VectorType &field) {
       matrix.vmult(product, field);
       space.constraints.set_zero(product);
