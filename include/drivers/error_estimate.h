@@ -1,9 +1,10 @@
 /**
  * 'Accuracy/Estimate error': a run that also says how accurate it is. The
- * scene runs as given, then with h and k doubled and with h and k
- * quadrupled; from the three values of each quantity at T the error of the
- * given run is estimated by Richardson extrapolation with the order the
- * three runs show (error_estimate.cc).
+ * scene runs as given, then with h and k doubled, quadrupled and (where the
+ * mesh allows) multiplied by 8; from the differences of consecutive runs
+ * each quantity's error at T is estimated by Richardson extrapolation with
+ * the order the runs show, where they show one order consistently
+ * (error_estimate.cc).
  */
 #ifndef contact_error_estimate_h
 #define contact_error_estimate_h
@@ -19,75 +20,70 @@
 
 namespace Contact
 {
-  /** An observed order outside this range gets a warning: the scheme is
-   *  first order for smooth solutions, about 2/3 with the corner
-   *  singularity of the paper's scene, up to 2 in space with quadratic
-   *  elements. */
+  /** An observed order outside this range means the runs are not in the
+   *  asymptotic range: the scheme is first order for smooth solutions,
+   *  about 2/3 with the corner singularity of the paper's scene, up to 2 in
+   *  space with quadratic elements. */
   constexpr double min_plausible_order = 0.5;
   constexpr double max_plausible_order = 3;
-  /** The coarse runs take ceil(N / 2) and ceil(N / 4) steps; a ratio of
-   *  their time step to the run's that differs from 2 or 4 by more than
-   *  this (relative) gets a warning. */
+  /** Where every observed order is below this, the differences hardly
+   *  shrink (by less than 2^0.25 = 1.19 per halving): the quantity does not
+   *  converge on these runs. */
+  constexpr double min_converging_order = 0.25;
+  /** Two observed orders (of the pairs h, 2h, 4h and 2h, 4h, 8h) that
+   *  differ by more than this do not describe one power of h. */
+  constexpr double max_order_drift = 0.5;
+  /** The coarse runs take ceil(N / 2^l) steps; a ratio of their time step
+   *  to the run's that differs from 2^l by more than this (relative) gets a
+   *  warning. */
   constexpr double max_step_ratio_deviation = 0.05;
   /** Orders in h and k closer than this are not told apart: the estimate
    *  then uses the one order the runs show. */
   constexpr double min_order_separation = 0.25;
 
-  /** The estimate from one quantity's values on the run (h, k), with 2h
-   *  and with 4h, for differences d_fine = Q_h - Q_2h and d_coarse =
-   *  Q_2h - Q_4h (or their norms, for a field). */
+  /** The estimate from one quantity's differences between consecutive runs
+   *  of the sequence h, 2h, 4h (, 8h): d_0 = Q_h - Q_2h, d_1 = Q_2h - Q_4h,
+   *  d_2 = Q_4h - Q_8h (or the norms of the differences, for a field). */
   struct RichardsonEstimate
   {
-    /** log2(|d_coarse| / |d_fine|); NaN where it is not defined. */
-    double order = 0;
-    /** |d_fine| / (2^order - 1), or |d_fine| where the differences do not
-     *  shrink or change sign (no extrapolation then), or |d_coarse| / 2
-     *  where d_fine = 0. */
-    double error = 0;
-    /** For a field: the correlation c of the error fields of consecutive
-     *  runs that the three differences show (1: the error keeps its
-     *  shape, Richardson's assumption); NaN for a scalar. */
-    double correlation = std::numeric_limits<double>::quiet_NaN();
-    /** Why the three runs are not in the asymptotic range, or empty. */
-    std::string warning;
+    /** log2(|d_{i+1}| / |d_i|), finest pair first; NaN where a difference
+     *  is zero or not defined. */
+    std::vector<double> measured_orders;
+    /** The order the estimate uses, the smallest measured one (which gives
+     *  the larger estimate); NaN where there is no estimate. */
+    double order = std::numeric_limits<double>::quiet_NaN();
+    /** |d_0| / (2^order - 1); NaN where the runs give no estimate. */
+    double error = std::numeric_limits<double>::quiet_NaN();
+    /** Empty where the estimate rests on consistent runs; else a short
+     *  verdict ("not asymptotic", "does not converge", ...), with the reason
+     *  in `reason`. */
+    std::string status;
+    std::string reason;
   };
 
-  /** `signed_differences`: whether d_fine and d_coarse are differences of
-   *  a scalar (whose signs must agree) or norms of field differences. */
-  RichardsonEstimate richardson_estimate(const double d_fine,
-                                         const double d_coarse,
-                                         const bool   signed_differences);
-
-  /** The error of a quantity at T: Richardson's estimate with its own
-   *  order, or with the V-norm's `field_order` where its own is lower or
-   *  not defined (the differences do not shrink) but the differences keep
-   *  their sign (error_estimate.cc). */
-  RichardsonEstimate scalar_error_estimate(const double d_fine,
-                                           const double d_coarse,
-                                           const double field_order);
-
-  /** The error of a field from the norms of the differences of its three
-   *  runs, d_fine = ||u_h - u_2h||, d_coarse = ||u_2h - u_4h|| and d_across
-   *  = ||u_h - u_4h|| (error_estimate.cc explains the model). */
-  RichardsonEstimate field_error_estimate(const double d_fine,
-                                          const double d_coarse,
-                                          const double d_across);
+  /** The estimate from the differences of a sequence of runs (finest
+   *  first; two or three of them). `signed_differences`: differences of a
+   *  scalar, whose signs must agree, rather than norms of field
+   *  differences. An estimate is given only where every order is in
+   *  [min_plausible_order, max_plausible_order] and the orders agree within
+   *  max_order_drift; it then uses the smallest (error_estimate.cc). */
+  RichardsonEstimate richardson_estimate(const std::vector<double> &differences,
+                                         const bool signed_differences);
 
   /** One row of an estimate's table: a quantity's value (for the V-norm
-   *  ||eps(u_h(T))||), its differences to the runs with 2h and 4h (for the
-   *  V-norm the norms of the differences), the estimate, with the
-   *  separation its space and time parts, and with a manufactured solution
-   *  the exact error. */
+   *  ||eps(u_h(T))||), the differences of consecutive runs h vs 2h, 2h vs
+   *  4h (and 4h vs 8h; for the V-norm the norms of the differences), the
+   *  estimate, with the separation its space and time parts, and with a
+   *  manufactured solution the exact error. */
   struct EstimateRow
   {
-    std::string        name;
-    double             value;
-    double             d_fine;
-    double             d_coarse;
-    RichardsonEstimate estimate;
-    double             space_part  = std::numeric_limits<double>::quiet_NaN();
-    double             time_part   = std::numeric_limits<double>::quiet_NaN();
-    double             exact_error = std::numeric_limits<double>::quiet_NaN();
+    std::string         name;
+    double              value;
+    std::vector<double> differences;
+    RichardsonEstimate  estimate;
+    double              space_part  = std::numeric_limits<double>::quiet_NaN();
+    double              time_part   = std::numeric_limits<double>::quiet_NaN();
+    double              exact_error = std::numeric_limits<double>::quiet_NaN();
     /** For worst_V_error: the time of the largest estimate. */
     double time = std::numeric_limits<double>::quiet_NaN();
   };
@@ -151,15 +147,7 @@ namespace Contact
                       const ReferenceInterpolation<dim> *onto,
                       const unsigned int                 stride);
 
-  /** The estimate of a field from its three differences, with two known
-   *  orders where given (two_order_error_estimate) and else with the one
-   *  the runs show (field_error_estimate). */
-  RichardsonEstimate field_estimate(const double     d_fine,
-                                    const double     d_coarse,
-                                    const double     d_across,
-                                    const TwoOrders *known);
-
-  /** Runs the scene of `parameters` and its two coarse versions, and prints
+  /** Runs the scene of `parameters` and its coarse versions, and prints
    *  and writes the estimated errors (error_estimate.txt). A quantity with
    *  known orders in h and k is extrapolated with both (error_estimate.cc).
    */

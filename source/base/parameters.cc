@@ -905,15 +905,16 @@ namespace Contact
         "Estimate error",
         "false",
         Patterns::Bool(),
-        "Also run the scene with h and k doubled and with h and k "
-        "quadrupled (into <Output directory>/coarse-1 and coarse-2; in 2D "
-        "they cost about 1/8 and 1/64 of the run) and report the estimated "
-        "error of this run at T: in the V-norm, in the probe displacements, "
-        "the friction dissipation, the slipping share of Gamma_3 and where "
-        "its slip zone starts, each by Richardson extrapolation with the "
-        "order observed between the three runs, with a warning where the "
-        "runs are not in the asymptotic range. The table goes to the "
-        "console and to <Output directory>/error_estimate.txt.");
+        "Also run the scene with h and k doubled, quadrupled and (where "
+        "the mesh allows) multiplied by 8 (into <Output directory>/coarse-1, "
+        "coarse-2 and coarse-3; in 2D they cost about 1/8, 1/64 and 1/512 "
+        "of the run) and report the estimated error of this run at T: in "
+        "the V-norm, in the probe displacements, the friction dissipation, "
+        "the slipping share of Gamma_3, where its slip zone starts and the "
+        "time of the first slip, each by Richardson extrapolation with the "
+        "orders measured between consecutive runs. A row without "
+        "consistent orders gets no estimate and says why. The table goes to "
+        "the console and to <Output directory>/error_estimate.txt.");
       prm.declare_entry(
         "Separate space and time",
         "false",

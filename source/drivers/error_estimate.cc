@@ -4,17 +4,19 @@
  * The scheme converges as O(h^p + k^q) (Corollary 5.3, (5.26): p = q = 1
  * for smooth solutions and linear elements; less where the solution is
  * singular, about 2/3 on the paper's scene). Running the scene also with h
- * and k doubled and quadrupled gives, for any quantity Q at T, the
- * differences d_fine = Q_h - Q_2h and d_coarse = Q_2h - Q_4h. If the
- * error behaves like C h^p on all three runs, d_coarse / d_fine = 2^p,
- * and the error of the finest run is
+ * and k doubled, quadrupled and multiplied by 8 gives, for any quantity Q
+ * at T, the differences d_0 = Q_h - Q_2h, d_1 = Q_2h - Q_4h and d_2 =
+ * Q_4h - Q_8h. If the error behaves like C h^p on all runs, d_{i+1} / d_i
+ * = 2^p for every i, and the error of the finest run is
  *
- *   Q - Q_h = d_fine / (2^p - 1)               (Richardson extrapolation)
+ *   Q - Q_h = d_0 / (2^p - 1)                  (Richardson extrapolation)
  *
- * with p measured, not assumed (for the V-norm allowing for error fields
- * that change shape, below). Where the differences change sign the runs
- * are not in that range and the estimate is |d_fine|, with a warning; a
- * quantity whose own order is below the V-norm's takes the V-norm's.
+ * with p measured, not assumed. Each quantity is judged on its own
+ * differences: an estimate is given only where they have one sign, shrink
+ * at a plausible order, and the two orders agree (the run with 8h checks
+ * the order that the three finer runs show); otherwise the row says why
+ * there is none. Of two plausible orders the smaller is used, which gives
+ * the larger estimate.
  * --------------------------------------------------------------------- */
 
 #include <deal.II/base/conditional_ostream.h>
@@ -30,6 +32,7 @@
 #include <drivers/error_estimate.h>
 #include <drivers/reference_interpolation.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -45,145 +48,84 @@ namespace Contact
     // What an error estimate writes into its output directory: its table
     // and the coarse runs.
     const ResultFiles       estimate_table("error_estimate\\.txt");
-    const ResultDirectories coarse_runs("coarse-(1|2|space|time)");
+    const ResultDirectories coarse_runs("coarse-(1|2|3|space|time)");
+
+    // "0.65" or "0.65 and 0.71".
+    std::string orders_text(const std::vector<double> &orders)
+    {
+      std::ostringstream text;
+      text << std::fixed << std::setprecision(2);
+      for (unsigned int i = 0; i < orders.size(); ++i)
+        text << (i == 0 ? "" : " and ") << orders[i];
+      return text.str();
+    }
   } // namespace
 
 
   // @sect3{Richardson extrapolation with the observed order}
-
-  RichardsonEstimate richardson_estimate(const double d_fine,
-                                         const double d_coarse,
-                                         const bool   signed_differences)
+  //
+  // A field's differences are norms, so only their sizes are compared;
+  // Richardson's formula then assumes that the error keeps its shape from
+  // one run to the next. Where it does not (the oscillation of the
+  // gradient of Lagrange elements moves with the mesh), the differences
+  // are larger than (2^p - 1) ||e_h|| and the estimate errs on the safe
+  // side: by up to 3.2 for first order and orthogonal error fields
+  // (tests/unit/richardson_estimate).
+  RichardsonEstimate richardson_estimate(const std::vector<double> &differences,
+                                         const bool signed_differences)
   {
+    Assert(differences.size() >= 2, ExcInternalError());
     RichardsonEstimate estimate;
-    estimate.order = std::numeric_limits<double>::quiet_NaN();
-    estimate.error = std::abs(d_fine);
-    if (!std::isfinite(d_fine) || !std::isfinite(d_coarse))
-      {
-        estimate.error   = std::numeric_limits<double>::quiet_NaN();
-        estimate.warning = "not defined on every run";
-        return estimate;
-      }
-    if (d_fine == 0)
-      {
-        // A quantity that takes few values (a share of nodes, a node's
-        // position) can stay put between the finer runs and still have an
-        // error; first order would make it half the coarser difference.
-        estimate.error = std::abs(d_coarse) / 2;
-        if (d_coarse != 0)
-          estimate.warning = "the same on the two finer runs; the estimate "
-                             "|2h vs 4h| / 2 assumes first order";
-        return estimate;
-      }
-    if (signed_differences && d_fine * d_coarse < 0)
-      {
-        estimate.warning = "the differences between the runs change sign: "
-                           "not in the asymptotic range";
-        return estimate;
-      }
-    const double ratio = std::abs(d_coarse) / std::abs(d_fine);
-    estimate.order     = std::log2(ratio);
-    if (ratio <= 1)
-      {
-        estimate.warning = "the difference does not shrink from the coarser "
-                           "to the finer pair of runs: not in the "
-                           "asymptotic range";
-        return estimate;
-      }
-    estimate.error = std::abs(d_fine) / (ratio - 1);
-    // First order is what the scheme gives for smooth solutions; a corner
-    // singularity lowers it to about 2/3, quadratic elements raise the
-    // space part to 2. Orders far outside suggest that the three runs are
-    // not yet in the range where one power of h describes the error.
-    if (estimate.order < min_plausible_order ||
-        estimate.order > max_plausible_order)
-      estimate.warning =
-        "observed order outside [" + number_text(min_plausible_order) + ", " +
-        number_text(max_plausible_order) + "]: the estimate may be far off";
-    return estimate;
-  }
-
-
-  // @sect3{The error of a field}
-  //
-  // Richardson's formula assumes that the error keeps its shape from one
-  // run to the next, e_2h = 2^p e_h. The V-norm error of Lagrange elements
-  // is dominated by the oscillation of the gradient inside each cell,
-  // whose pattern moves with the mesh: the error fields of h and 2h are
-  // partly orthogonal, and d_fine = ||e_2h - e_h|| is then larger than
-  // (2^p - 1) ||e_h||. The model here: ||e_2h|| = r ||e_h||, ||e_4h|| =
-  // r^2 ||e_h||, the errors of consecutive runs correlate with c and those
-  // of h and 4h with c^2. Then, with E = ||e_h||,
-  //
-  //   d_fine^2   = E^2 (1 + r^2 - 2 r c),      d_coarse = r d_fine,
-  //   (u_h - u_2h).(u_2h - u_4h) / (d_fine d_coarse)
-  //              = (r^2 c - r - r c^2 + c) / (1 + r^2 - 2 r c) =: f(c),
-  //
-  // and the left side is known from the third difference, d_across, by
-  // polarisation. f grows from -r/(1 + r^2) at c = 0 to 1 at c = 1; solving
-  // f(c) for c in [0, 1] gives E = d_fine / sqrt(1 + r^2 - 2 r c), which is
-  // Richardson's d_fine / (r - 1) for c = 1.
-  RichardsonEstimate field_error_estimate(const double d_fine,
-                                          const double d_coarse,
-                                          const double d_across)
-  {
-    RichardsonEstimate estimate = richardson_estimate(d_fine, d_coarse, false);
-    const double       r        = d_coarse / d_fine;
-    if (!(d_fine > 0) || !(r > 1) || !std::isfinite(d_across))
+    const auto         verdict = [&](const std::string &status,
+                             const std::string &reason) {
+      estimate.status = status;
+      estimate.reason = reason;
       return estimate;
-    const auto f = [r](const double c) {
-      return (r * r * c - r - r * c * c + c) / (1 + r * r - 2 * r * c);
     };
-    const double cosine =
-      (d_across * d_across - d_fine * d_fine - d_coarse * d_coarse) /
-      (2 * d_fine * d_coarse);
-    double low = 0, high = 1;
-    if (cosine >= f(high))
-      low = high;
-    else if (cosine <= f(low))
-      high = low;
-    for (unsigned int i = 0; i < 60 && high - low > 1e-14; ++i)
+    for (unsigned int i = 0; i + 1 < differences.size(); ++i)
+      estimate.measured_orders.push_back(
+        differences[i] == 0 || differences[i + 1] == 0 ?
+          std::numeric_limits<double>::quiet_NaN() :
+          std::log2(std::abs(differences[i + 1]) / std::abs(differences[i])));
+    bool all_zero = true, some_zero = false, signs_differ = false;
+    for (const double d : differences)
       {
-        const double middle               = (low + high) / 2;
-        (f(middle) < cosine ? low : high) = middle;
+        if (!std::isfinite(d))
+          return verdict("not defined", "not defined on every run");
+        all_zero     = all_zero && d == 0;
+        some_zero    = some_zero || d == 0;
+        signs_differ = signs_differ || d * differences[0] < 0;
       }
-    estimate.correlation = (low + high) / 2;
+    if (all_zero)
+      return verdict("the same on every run", "the runs cannot show its error");
+    if (some_zero)
+      return verdict("not asymptotic",
+                     "the same on two consecutive runs but not on all");
+    if (signed_differences && signs_differ)
+      return verdict("not asymptotic",
+                     "the differences between consecutive runs change sign");
+    const auto [lowest, highest] =
+      std::minmax_element(estimate.measured_orders.begin(),
+                          estimate.measured_orders.end());
+    if (*highest < min_converging_order)
+      return verdict("does not converge",
+                     "the differences do not shrink (orders measured " +
+                       orders_text(estimate.measured_orders) + ")");
+    if (*lowest < min_plausible_order || *highest > max_plausible_order)
+      return verdict("not asymptotic",
+                     "orders measured " +
+                       orders_text(estimate.measured_orders) +
+                       ", not all in [" + number_text(min_plausible_order) +
+                       ", " + number_text(max_plausible_order) + "]");
+    if (*highest - *lowest > max_order_drift)
+      return verdict("not asymptotic",
+                     "orders measured " +
+                       orders_text(estimate.measured_orders) +
+                       ", which differ by more than " +
+                       number_text(max_order_drift));
+    estimate.order = *lowest;
     estimate.error =
-      d_fine / std::sqrt(1 + r * r - 2 * r * estimate.correlation);
-    return estimate;
-  }
-
-
-  // @sect3{The error of a quantity at T}
-  //
-  // Displacements at a point and integrals such as the dissipation converge
-  // at least as fast as the V-norm (for smooth solutions: second order in
-  // space against first; near a singularity 2 lambda against lambda). An
-  // order observed below the V-norm's, or differences that do not shrink,
-  // come from coarse runs that are not yet asymptotic for that quantity:
-  // then the V-norm's order, measured on the same runs, extrapolates
-  // instead, provided it is itself plausible. Where the quantity's own
-  // order is positive this gives the smaller of the two estimates: the
-  // choice trusts the theory over the quantity's pre-asymptotic order
-  // (bench/error_estimate.md compares both with a finer run).
-  RichardsonEstimate scalar_error_estimate(const double d_fine,
-                                           const double d_coarse,
-                                           const double field_order)
-  {
-    RichardsonEstimate estimate  = richardson_estimate(d_fine, d_coarse, true);
-    const bool         same_sign = d_fine * d_coarse > 0;
-    if (!same_sign || !std::isfinite(field_order) ||
-        field_order < min_plausible_order ||
-        field_order > max_plausible_order ||
-        (std::isfinite(estimate.order) && estimate.order >= field_order))
-      return estimate;
-    const double own_order = estimate.order;
-    estimate.error         = std::abs(d_fine) / (std::pow(2., field_order) - 1);
-    estimate.order         = field_order;
-    estimate.warning =
-      "its own order, " + number_text(own_order) + ", is below the V-norm's" +
-      (own_order <= 0 ? " (its differences do not shrink)" : "") +
-      ": extrapolated with the V-norm's order";
+      std::abs(differences[0]) / (std::pow(2., estimate.order) - 1);
     return estimate;
   }
 
@@ -284,61 +226,71 @@ namespace Contact
   }
 
 
-  RichardsonEstimate field_estimate(const double     d_fine,
-                                    const double     d_coarse,
-                                    const double     d_across,
-                                    const TwoOrders *known)
-  {
-    RichardsonEstimate estimate =
-      field_error_estimate(d_fine, d_coarse, d_across);
-    const double error =
-      known ? two_order_error_estimate(d_fine, d_coarse, *known, true) :
-              std::numeric_limits<double>::quiet_NaN();
-    if (std::isfinite(error))
-      estimate = {estimate.order,
-                  error,
-                  std::numeric_limits<double>::quiet_NaN(),
-                  ""};
-    return estimate;
-  }
-
-
   namespace
   {
-    // The error of a run over time: at each time that all three runs share,
-    // the estimate from the three differences; the row is that of the
-    // largest.
-    template <int dim>
-    EstimateRow worst_time_row(const ContactProblem<dim> &fine,
-                               const RunAtTimes          &f,
-                               const RunAtTimes          &m,
-                               const RunAtTimes          &c,
-                               const double               coarse_time_step,
-                               const TwoOrders           *known)
+    // The estimate of a row from its differences, with two known orders
+    // where a target's pilots measured them and they tell the parts apart
+    // (two_order_error_estimate), else with the order the runs show.
+    RichardsonEstimate estimate_of(const std::vector<double> &differences,
+                                   const bool                 field,
+                                   const TwoOrders           *known)
     {
-      const auto distance = [&](const VectorType &a, const VectorType &b) {
-        return strain_distance(fine, a, b);
-      };
-      EstimateRow worst{worst_V_error, 0, 0, 0, {}};
-      worst.estimate.error = -1;
-      const std::size_t n_times =
-        std::min({f.history.size(), m.history.size(), c.history.size()});
+      RichardsonEstimate estimate = richardson_estimate(differences, !field);
+      const double error = known ? two_order_error_estimate(differences[0],
+                                                            differences[1],
+                                                            *known,
+                                                            field) :
+                                   std::numeric_limits<double>::quiet_NaN();
+      if (std::isfinite(error))
+        {
+          estimate.error = error;
+          estimate.order = std::numeric_limits<double>::quiet_NaN();
+          // The report says so above the table.
+          estimate.status = "";
+          estimate.reason = "";
+        }
+      return estimate;
+    }
+
+
+    // The error of a run over time: at each time that all runs share, the
+    // estimate from the differences of consecutive runs; the row is that
+    // of the largest estimate (a time without an estimate counts by its
+    // difference h vs 2h).
+    template <int dim>
+    EstimateRow worst_time_row(const ContactProblem<dim>     &fine,
+                               const std::vector<RunAtTimes> &runs,
+                               const double                   coarse_time_step,
+                               const TwoOrders               *known)
+    {
+      EstimateRow worst{worst_V_error, 0, {}, {}};
+      double      largest = -1;
+      std::size_t n_times = runs[0].history.size();
+      for (const RunAtTimes &run : runs)
+        n_times = std::min(n_times, run.history.size());
       for (std::size_t j = 0; j < n_times; ++j)
         {
-          const double d_fine   = distance(f.history[j], m.history[j]);
-          const double d_coarse = distance(m.history[j], c.history[j]);
-          const RichardsonEstimate estimate = field_estimate(
-            d_fine, d_coarse, distance(f.history[j], c.history[j]), known);
-          if (estimate.error > worst.estimate.error)
-            worst = {worst_V_error,
-                     fine.strain_norm(f.history[j]),
-                     d_fine,
-                     d_coarse,
-                     estimate,
-                     std::numeric_limits<double>::quiet_NaN(),
-                     std::numeric_limits<double>::quiet_NaN(),
-                     f.summary.max_errors.displacement_V,
-                     (j + 1) * coarse_time_step};
+          std::vector<double> differences;
+          for (unsigned int r = 0; r + 1 < runs.size(); ++r)
+            differences.push_back(strain_distance(fine,
+                                                  runs[r].history[j],
+                                                  runs[r + 1].history[j]));
+          const RichardsonEstimate estimate =
+            estimate_of(differences, true, known);
+          const double size =
+            std::isfinite(estimate.error) ? estimate.error : differences[0];
+          if (size > largest)
+            {
+              largest = size;
+              worst   = {worst_V_error,
+                         fine.strain_norm(runs[0].history[j]),
+                         differences,
+                         estimate,
+                         std::numeric_limits<double>::quiet_NaN(),
+                         std::numeric_limits<double>::quiet_NaN(),
+                         runs[0].summary.max_errors.displacement_V,
+                         (j + 1) * coarse_time_step};
+            }
         }
       return worst;
     }
@@ -346,22 +298,46 @@ namespace Contact
 
     // @sect3{The coarse runs}
 
-    // The scene with h times `space_factor` and k times `time_factor`, its
-    // state at T and at the times of the run with 4k (every (4 /
-    // time_factor)-th step where N is a multiple of 4) on the given run's
-    // mesh.
+    // Whether the mesh allows the run with 8h, which checks the order the
+    // finer runs show: a box whose edges have a multiple of 8 cells, or a
+    // mesh refined at least three times (the runs with 2h and 4h are
+    // checked by Parameters::check_error_estimate()).
+    bool has_check_run(const Parameters &parameters)
+    {
+      const GeometryParameters &geometry = parameters.geometry;
+      if (!geometry.is_box())
+        return geometry.mesh_refinements >= 3;
+      for (unsigned int d = 0; d < parameters.dimension; ++d)
+        {
+          const double edge =
+            geometry.upper_corner[d] - geometry.lower_corner[d];
+          const long n = std::lround(edge / geometry.cell_size);
+          if (n % 8 != 0 ||
+              std::lround(edge / (8 * geometry.cell_size)) != n / 8)
+            return false;
+        }
+      return true;
+    }
+
+    // The scene with h and k times `factor` (space_only: only h; time_only:
+    // only k), its state at T and at the times of the coarsest run (every
+    // (coarsest / time factor)-th step where N is a multiple of the
+    // coarsest factor) on the given run's mesh.
     template <int dim>
     RunAtTimes run_coarse(const Parameters                  &base,
                           const unsigned int                 space_factor,
                           const unsigned int                 time_factor,
+                          const unsigned int                 coarsest_factor,
                           const std::string                 &name,
                           const ReferenceInterpolation<dim> &interpolate)
     {
-      // factors 1, 2 or 4: 0, 1 or 2 levels coarser; T / ceil(N / factor)
-      // steps, so that every run ends at T.
+      int halvings = 0;
+      while ((1u << -halvings) < space_factor)
+        --halvings;
+      // T / ceil(N / factor) steps, so that every run ends at T.
       ContactProblem<dim> coarse(
         parameters_of(base,
-                      {-static_cast<int>(space_factor / 2),
+                      {halvings,
                        (base.time.n_steps() + time_factor - 1) / time_factor,
                        base.geometry.fe_degree,
                        base.output.directory + "/" + name,
@@ -373,7 +349,9 @@ namespace Contact
                   << std::endl;
       return run_onto(coarse,
                       &interpolate,
-                      base.time.n_steps() % 4 == 0 ? 4 / time_factor : 0);
+                      base.time.n_steps() % coarsest_factor == 0 ?
+                        coarsest_factor / time_factor :
+                        0);
     }
 
 
@@ -381,12 +359,11 @@ namespace Contact
 
     // The part of the error that halving only h (or only k) removes: the
     // difference to the run with 2h (or 2k), scaled as the total is
-    // scaled from its difference (the same order, for a field the same
-    // correlation of consecutive errors). For a quantity it carries the
-    // sign of its difference relative to the total's: parts of opposite
-    // signs, or a part larger than the total, are space and time errors
-    // that cancel. Where the part's order is known (a target's pilots), the
-    // difference is extrapolated with it.
+    // scaled from its difference (the same order). For a quantity it
+    // carries the sign of its difference relative to the total's: parts of
+    // opposite signs, or a part larger than the total, are space and time
+    // errors that cancel. Where the part's order is known (a target's
+    // pilots), the difference is extrapolated with it.
     double part_of_error(const EstimateRow &row,
                          const double       difference,
                          const bool         is_field,
@@ -394,109 +371,98 @@ namespace Contact
     {
       if (std::isfinite(known_order))
         return difference / (std::pow(2., known_order) - 1);
-      if (!std::isfinite(difference) || row.d_fine == 0)
+      if (!std::isfinite(difference) || row.differences[0] == 0)
         return std::numeric_limits<double>::quiet_NaN();
-      const double ratio = difference / row.d_fine;
+      const double ratio = difference / row.differences[0];
       return row.estimate.error * (is_field ? std::abs(ratio) : ratio);
     }
 
-    // runs: the given one, 2h/2k, 4h/4k, and with the separation 2h/k and
-    // h/2k.
+    // The runs of an estimate: the given one and those with 2h, 4h (and
+    // 8h) in the sequence, then, with the separation, 2h/k and h/2k.
+    struct EstimateRuns
+    {
+      std::vector<RunAtTimes> sequence;
+      std::vector<RunAtTimes> separate;
+    };
+
+    // A quantity's value on a run, found by its name: a quantity that a
+    // coarse run does not have (e.g. one of the free nodes on Gamma_3 where
+    // the coarsest mesh has none) is NaN there.
+    double value_of(const RunSummary &summary, const std::string &name)
+    {
+      for (const auto &[quantity, value] : summary.final_quantities)
+        if (quantity == name)
+          return value;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
     template <int dim>
-    std::vector<EstimateRow> estimate_rows(const ContactProblem<dim>     &fine,
-                                           const std::vector<RunAtTimes> &runs,
-                                           const KnownOrders &orders)
+    std::vector<EstimateRow> estimate_rows(const ContactProblem<dim> &fine,
+                                           const EstimateRuns        &runs,
+                                           const KnownOrders         &orders)
     {
       const auto known = [&](const std::string &name) {
         const auto found = orders.find(name);
         return found == orders.end() ? nullptr : &found->second;
       };
-      const auto distance = [&](const unsigned int a, const unsigned int b) {
-        return strain_distance(fine,
-                               runs[a].displacement,
-                               runs[b].displacement);
-      };
       // The orders of a row's two parts where they are known and tell the
       // parts apart (the estimate then uses them), else NaN.
-      const auto two_orders = [&](const std::string &name) {
-        const TwoOrders *orders_of_row = known(name);
-        return orders_of_row &&
-                   std::abs(orders_of_row->space - orders_of_row->time) >=
-                     min_order_separation ?
-                 orders_of_row :
-                 nullptr;
+      const auto part_order = [&](const std::string &name, const bool space) {
+        const TwoOrders *o = known(name);
+        return o && std::abs(o->space - o->time) >= min_order_separation ?
+                 (space ? o->space : o->time) :
+                 std::numeric_limits<double>::quiet_NaN();
       };
-      const auto space_order = [&](const std::string &name) {
-        const TwoOrders *orders_of_row = two_orders(name);
-        return orders_of_row ? orders_of_row->space :
-                               std::numeric_limits<double>::quiet_NaN();
-      };
-      const auto time_order = [&](const std::string &name) {
-        const TwoOrders *orders_of_row = two_orders(name);
-        return orders_of_row ? orders_of_row->time :
-                               std::numeric_limits<double>::quiet_NaN();
-      };
-      const bool               separate = runs.size() == 5;
+      const std::vector<RunAtTimes> &sequence = runs.sequence;
+      const auto                     separate_parts =
+        [&](EstimateRow &row, const auto &difference_to, const bool field) {
+          if (runs.separate.empty())
+            return;
+          row.space_part = part_of_error(row,
+                                         difference_to(runs.separate[0]),
+                                         field,
+                                         part_order(row.name, true));
+          row.time_part  = part_of_error(row,
+                                        difference_to(runs.separate[1]),
+                                        field,
+                                        part_order(row.name, false));
+        };
+
       std::vector<EstimateRow> rows;
-      EstimateRow              v{V_norm,
-                    runs[0].summary.displacement_V_norm,
-                    distance(0, 1),
-                    distance(1, 2),
-                    {}};
-      v.estimate =
-        field_estimate(v.d_fine, v.d_coarse, distance(0, 2), known(v.name));
-      v.exact_error = runs[0].summary.final_errors.displacement_V;
-      if (separate)
-        {
-          v.space_part =
-            part_of_error(v, distance(0, 3), true, space_order(v.name));
-          v.time_part =
-            part_of_error(v, distance(0, 4), true, time_order(v.name));
-        }
-      rows.push_back(v);
-      if (!runs[2].history.empty())
+      {
+        const auto distance = [&](const RunAtTimes &a, const RunAtTimes &b) {
+          return strain_distance(fine, a.displacement, b.displacement);
+        };
+        EstimateRow v{V_norm, sequence[0].summary.displacement_V_norm, {}, {}};
+        for (unsigned int r = 0; r + 1 < sequence.size(); ++r)
+          v.differences.push_back(distance(sequence[r], sequence[r + 1]));
+        v.estimate    = estimate_of(v.differences, true, known(v.name));
+        v.exact_error = sequence[0].summary.final_errors.displacement_V;
+        separate_parts(
+          v,
+          [&](const RunAtTimes &other) { return distance(sequence[0], other); },
+          true);
+        rows.push_back(v);
+      }
+      if (!sequence.back().history.empty())
         rows.push_back(worst_time_row(fine,
-                                      runs[0],
-                                      runs[1],
-                                      runs[2],
-                                      runs[2].summary.time_step,
+                                      sequence,
+                                      sequence.back().summary.time_step,
                                       known(worst_V_error)));
 
-      const auto value = [&](const unsigned int run, const unsigned int q) {
-        return runs[run].summary.final_quantities[q].second;
-      };
-      for (unsigned int q = 0; q < runs[0].summary.final_quantities.size(); ++q)
+      for (const auto &[name, value] : sequence[0].summary.final_quantities)
         {
-          EstimateRow row{runs[0].summary.final_quantities[q].first,
-                          value(0, q),
-                          value(0, q) - value(1, q),
-                          value(1, q) - value(2, q),
-                          {}};
-          row.estimate =
-            scalar_error_estimate(row.d_fine, row.d_coarse, v.estimate.order);
-          if (const TwoOrders *orders_of_row = known(row.name))
-            {
-              const double error = two_order_error_estimate(row.d_fine,
-                                                            row.d_coarse,
-                                                            *orders_of_row,
-                                                            false);
-              if (std::isfinite(error))
-                row.estimate = {row.estimate.order,
-                                error,
-                                std::numeric_limits<double>::quiet_NaN(),
-                                ""};
-            }
-          if (separate)
-            {
-              row.space_part = part_of_error(row,
-                                             value(0, q) - value(3, q),
-                                             false,
-                                             space_order(row.name));
-              row.time_part  = part_of_error(row,
-                                            value(0, q) - value(4, q),
-                                            false,
-                                            time_order(row.name));
-            }
+          EstimateRow row{name, value, {}, {}};
+          for (unsigned int r = 0; r + 1 < sequence.size(); ++r)
+            row.differences.push_back(value_of(sequence[r].summary, name) -
+                                      value_of(sequence[r + 1].summary, name));
+          row.estimate = estimate_of(row.differences, false, known(name));
+          separate_parts(
+            row,
+            [&](const RunAtTimes &other) {
+              return value - value_of(other.summary, name);
+            },
+            false);
           rows.push_back(row);
         }
       return rows;
@@ -505,96 +471,139 @@ namespace Contact
 
     // @sect3{The report}
 
+    std::string scientific(const double value)
+    {
+      if (std::isnan(value))
+        return "-";
+      std::ostringstream text;
+      text << std::scientific << std::setprecision(3) << value;
+      return text.str();
+    }
+
+    std::string fixed(const double value)
+    {
+      if (std::isnan(value))
+        return "-";
+      std::ostringstream text;
+      text << std::fixed << std::setprecision(2) << value;
+      return text.str();
+    }
+
     void write_table(const std::vector<EstimateRow> &rows,
+                     const unsigned int              n_differences,
                      const bool                      with_exact,
                      const bool                      separate,
                      std::ostream                   &out)
     {
-      TableHandler             table;
-      std::vector<std::string> numbers = {"value",
-                                          "h vs 2h",
-                                          "2h vs 4h",
-                                          "estimated error"};
+      const std::array<std::string, 3> difference_names = {
+        {"h vs 2h", "2h vs 4h", "4h vs 8h"}};
+      TableHandler table;
       for (const EstimateRow &row : rows)
         {
           table.add_value("quantity", row.name);
-          table.add_value("value", row.value);
-          table.add_value("h vs 2h", row.d_fine);
-          table.add_value("2h vs 4h", row.d_coarse);
-          table.add_value("order", row.estimate.order);
-          table.add_value("estimated error", row.estimate.error);
+          table.add_value("value", scientific(row.value));
+          for (unsigned int i = 0; i < n_differences; ++i)
+            table.add_value(difference_names[i],
+                            scientific(row.differences[i]));
+          std::string measured;
+          for (const double order : row.estimate.measured_orders)
+            measured += (measured.empty() ? "" : ", ") + fixed(order);
+          table.add_value("orders measured", measured);
+          table.add_value("order used", fixed(row.estimate.order));
+          table.add_value("estimated error", scientific(row.estimate.error));
+          table.add_value("relative",
+                          row.value == 0 ? std::string("-") :
+                                           scientific(row.estimate.error /
+                                                      std::abs(row.value)));
           if (separate)
             {
-              table.add_value("space part", row.space_part);
-              table.add_value("time part", row.time_part);
+              table.add_value("space part", scientific(row.space_part));
+              table.add_value("time part", scientific(row.time_part));
             }
           if (with_exact)
-            table.add_value("exact error", row.exact_error);
+            table.add_value("exact error", scientific(row.exact_error));
+          table.add_value("status",
+                          row.estimate.status.empty() ?
+                            std::string("estimated") :
+                            row.estimate.status);
         }
-      if (separate)
-        numbers.insert(numbers.end(), {"space part", "time part"});
-      if (with_exact)
-        numbers.push_back("exact error");
-      for (const std::string &column : numbers)
-        {
-          table.set_scientific(column, true);
-          table.set_precision(column, 3);
-        }
-      table.set_precision("order", 2);
       table.write_text(out, TableHandler::TextOutputFormat::org_mode_table);
     }
 
     std::string report(const Parameters               &parameters,
-                       const std::vector<RunAtTimes>  &runs,
+                       const EstimateRuns             &runs,
                        const std::vector<EstimateRow> &rows,
                        const KnownOrders              &orders)
     {
-      const bool         exact    = parameters.verification.manufactured();
-      const bool         separate = runs.size() == 5;
-      std::ostringstream out;
+      const bool exact    = parameters.verification.manufactured();
+      const bool separate = !runs.separate.empty();
+      const std::vector<RunAtTimes> &sequence = runs.sequence;
+      std::ostringstream             out;
       out << "Error estimate of this run at T = " << parameters.time.end_time
-          << " (h = " << runs[0].summary.cell_size
-          << ", k = " << runs[0].summary.time_step << "), from the runs with";
-      for (unsigned int r = 1; r < runs.size(); ++r)
-        out << (r == 1               ? " " :
-                r + 1 == runs.size() ? " and " :
-                                       ", ")
-            << "h = " << runs[r].summary.cell_size
-            << ", k = " << runs[r].summary.time_step;
-      out << ": order = log2(|2h vs 4h| / |h vs 2h|), estimated error = "
-          << "|h vs 2h| / (2^order - 1); the V-norm of u is ||eps(u(T))||, "
-          << "its differences are the V-norms of the differences, and its "
-          << "estimate allows for error fields that change shape from run "
-          << "to run (correlation c below)"
+          << " (h = " << sequence[0].summary.cell_size
+          << ", k = " << sequence[0].summary.time_step
+          << "), from the runs with";
+      std::vector<const RunAtTimes *> others;
+      for (unsigned int r = 1; r < sequence.size(); ++r)
+        others.push_back(&sequence[r]);
+      for (const RunAtTimes &run : runs.separate)
+        others.push_back(&run);
+      for (unsigned int r = 0; r < others.size(); ++r)
+        out << (r == 0                 ? " " :
+                r + 1 == others.size() ? " and " :
+                                         ", ")
+            << "h = " << others[r]->summary.cell_size
+            << ", k = " << others[r]->summary.time_step;
+      out << ". Orders measured: log2(|2h vs 4h| / |h vs 2h|)"
+          << (sequence.size() == 4 ? " and log2(|4h vs 8h| / |2h vs 4h|)" : "")
+          << "; a row is estimated where the differences have one sign and "
+          << "shrink at orders in [" << number_text(min_plausible_order) << ", "
+          << number_text(max_plausible_order) << "]"
+          << (sequence.size() == 4 ?
+                " that agree within " + number_text(max_order_drift) :
+                std::string())
+          << ", as |h vs 2h| / (2^order - 1) with the smallest order; the "
+          << "V-norm of u is ||eps(u(T))||, its differences are the V-norms "
+          << "of the differences"
           << (separate ? "; space and time part: what halving only h or "
                          "only k removes" :
                          "")
           << (exact ? "; exact error: against the manufactured solution" : "")
-          << std::endl;
+          << "." << std::endl;
+      if (sequence.size() < 4)
+        out << "The order is not checked by a run with 8h and 8k: the mesh "
+            << "does not allow it ("
+            << (parameters.geometry.is_box() ?
+                  "every edge of the box needs a multiple of 8 cells" :
+                  "'" + Entry::mesh_refinements + "' needs to be at least 3")
+            << "); every estimate rests on one measured order." << std::endl;
       for (const auto &[name, known] : orders)
         out << name << ": the target's pilots measured the orders "
             << known.space << " in h and " << known.time << " in k; "
             << (std::abs(known.space - known.time) >= min_order_separation ?
                   "estimated as the sum of a space and a time part with "
-                  "these orders (the order column is what the three runs "
-                  "show)." :
+                  "these orders." :
                   "too close to tell the parts apart: one order, as for "
                   "the other rows.")
             << std::endl;
-      write_table(rows, exact, separate, out);
+      write_table(rows, sequence.size() - 1, exact, separate, out);
+      const unsigned int coarsest      = 1u << (sequence.size() - 1);
+      bool               has_worst_row = false;
       for (const EstimateRow &row : rows)
         if (std::isfinite(row.time))
-          out << row.name << ": the largest estimate over the times of the "
-              << "run with 4h and 4k is at t = " << row.time
-              << (exact ? "; its exact error: the largest over all steps" : "")
-              << "." << std::endl;
-      if (std::isfinite(rows[0].estimate.correlation))
-        out << "V-norm of u: the error fields of consecutive runs correlate "
-            << "with c = " << std::setprecision(2)
-            << rows[0].estimate.correlation
-            << " (c = 1 is Richardson's assumption; for order 1, c = 0, "
-            << "orthogonal errors, gives 0.45 times its estimate)." << std::endl
-            << std::setprecision(6);
+          {
+            has_worst_row = true;
+            out << row.name << ": the largest over the times of the run "
+                << "with " << coarsest << "h and " << coarsest
+                << "k is at t = " << row.time
+                << (exact ? "; its exact error: the largest over all steps" :
+                            "")
+                << "." << std::endl;
+          }
+      if (!has_worst_row)
+        out << worst_V_error << ": not estimated: it needs T/k a multiple of "
+            << coarsest << " (here " << parameters.time.n_steps()
+            << " steps), so that all runs share their times." << std::endl;
       if (separate)
         for (const EstimateRow &row : rows)
           if (row.space_part * row.time_part < 0 ||
@@ -605,25 +614,42 @@ namespace Contact
                 << "than the total)." << std::endl;
       if (exact)
         out << "Exact V-error at T of this run: "
-            << runs[0].summary.final_errors.displacement_V
+            << sequence[0].summary.final_errors.displacement_V
             << "; exact max V-error over the steps: "
-            << runs[0].summary.max_errors.displacement_V << std::endl;
-      // The time steps are T / ceil(N / 2^l): for N not a multiple of 4
-      // their ratios differ a little from 2 and 4.
-      for (unsigned int level = 1; level <= 2; ++level)
+            << sequence[0].summary.max_errors.displacement_V << std::endl;
+      // The time steps are T / ceil(N / 2^l): for N not a multiple of 2^l
+      // their ratios differ a little from 2^l.
+      for (unsigned int level = 1; level < sequence.size(); ++level)
         {
           const double ratio =
-            runs[level].summary.time_step / runs[0].summary.time_step;
+            sequence[level].summary.time_step / sequence[0].summary.time_step;
           if (std::abs(ratio / (1u << level) - 1) > max_step_ratio_deviation)
             out << "Warning: the time step of the run with " << (1u << level)
                 << "h is " << ratio << " times that of this run, not "
-                << (1u << level) << " (choose N = T/k a multiple of 4)."
-                << std::endl;
+                << (1u << level) << " (choose N = T/k a multiple of "
+                << coarsest << ")." << std::endl;
         }
+      // Where the runs are not asymptotic the error is bounded only under
+      // an assumption on runs not made: if the differences of the finer
+      // runs h/2, h/4, ... shrink at least at the smallest plausible order
+      // p, the error |Q - Q_h| is at most the sum of the geometric series
+      // |d_0| (2^-p + 2^-2p + ...) = |d_0| / (2^p - 1).
+      const double bound_factor = 1 / (std::pow(2., min_plausible_order) - 1);
       for (const EstimateRow &row : rows)
-        if (!row.estimate.warning.empty())
-          out << "Warning: " << row.name << ": " << row.estimate.warning << "."
-              << std::endl;
+        if (!row.estimate.reason.empty())
+          {
+            out << (row.estimate.status.empty() ? "Note: " : "No estimate: ")
+                << row.name << ": " << row.estimate.reason << ".";
+            if (row.estimate.status == "not asymptotic" &&
+                row.differences[0] != 0)
+              out << " If finer runs shrink its differences at order "
+                  << number_text(min_plausible_order)
+                  << " or more, its error is at most "
+                  << scientific(bound_factor * std::abs(row.differences[0]))
+                  << " (" << std::setprecision(3) << bound_factor
+                  << std::setprecision(6) << " |h vs 2h|).";
+            out << std::endl;
+          }
       return out.str();
     }
   } // namespace
@@ -638,21 +664,32 @@ namespace Contact
     Timer timer;
     // The run itself first; it stays, since the other runs' displacements
     // are interpolated onto its mesh.
-    ContactProblem<dim>     fine(parameters);
-    std::vector<RunAtTimes> runs = {
-      run_onto<dim>(fine, nullptr, parameters.time.n_steps() % 4 == 0 ? 4 : 0)};
+    const unsigned int  coarsest = has_check_run(parameters) ? 8 : 4;
+    const unsigned int  n_steps  = parameters.time.n_steps();
+    ContactProblem<dim> fine(parameters);
+    EstimateRuns        runs;
+    runs.sequence.push_back(
+      run_onto<dim>(fine, nullptr, n_steps % coarsest == 0 ? coarsest : 0));
     const ReferenceInterpolation<dim> interpolate(fine);
-    runs.push_back(run_coarse(parameters, 2, 2, "coarse-1", interpolate));
-    runs.push_back(run_coarse(parameters, 4, 4, "coarse-2", interpolate));
+    for (unsigned int factor = 2; factor <= coarsest; factor *= 2)
+      runs.sequence.push_back(
+        run_coarse(parameters,
+                   factor,
+                   factor,
+                   coarsest,
+                   "coarse-" + std::to_string(runs.sequence.size()),
+                   interpolate));
     if (parameters.accuracy.separate_space_and_time)
       {
-        runs.push_back(
-          run_coarse(parameters, 2, 1, "coarse-space", interpolate));
-        runs.push_back(
-          run_coarse(parameters, 1, 2, "coarse-time", interpolate));
+        runs.separate.push_back(
+          run_coarse(parameters, 2, 1, coarsest, "coarse-space", interpolate));
+        runs.separate.push_back(
+          run_coarse(parameters, 1, 2, coarsest, "coarse-time", interpolate));
       }
 
-    EstimatedRun result{runs[0].summary, estimate_rows(fine, runs, orders), 0};
+    EstimatedRun      result{runs.sequence[0].summary,
+                        estimate_rows(fine, runs, orders),
+                        0};
     const std::string text = report(parameters, runs, result.rows, orders);
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {

@@ -132,18 +132,24 @@ namespace Contact
       const auto value = [&](const Pilot &pilot) {
         return quantity_of(pilot.run.summary, quantity);
       };
-      const bool               field = quantity == V_norm;
-      const RichardsonEstimate V =
-        field_error_estimate(difference(f.run.displacement, m.run.displacement),
-                             difference(m.run.displacement, c.run.displacement),
-                             difference(f.run.displacement,
-                                        c.run.displacement));
+      const bool   field = quantity == V_norm;
       const double d_fine =
         field ? difference(f.run.displacement, m.run.displacement) :
                 value(f) - value(m);
-      const RichardsonEstimate estimate =
-        field ? V : scalar_error_estimate(d_fine, value(m) - value(c), V.order);
-      DirectionFit fit{estimate.error, estimate.order, estimate.warning};
+      const double d_coarse =
+        field ? difference(m.run.displacement, c.run.displacement) :
+                value(m) - value(c);
+      // The order measured, never another quantity's (none where the
+      // differences change sign); where the runs give no estimate, the
+      // order is taken as the least plausible one below.
+      RichardsonEstimate estimate =
+        richardson_estimate({d_fine, d_coarse}, !field);
+      estimate.order = !field && d_fine * d_coarse < 0 ?
+                         std::numeric_limits<double>::quiet_NaN() :
+                         estimate.measured_orders[0];
+      if (!std::isfinite(estimate.error))
+        estimate.error = std::abs(d_fine);
+      DirectionFit fit{estimate.error, estimate.order, estimate.reason};
       if (!(estimate.order >= min_plausible_order) ||
           estimate.order > max_order)
         {
@@ -575,7 +581,11 @@ namespace Contact
           << " steps); predicted error " << chosen.predicted_error
           << ", estimated error " << estimated << " (error_estimate.txt)"
           << std::endl;
-      if (!(estimated <= target))
+      if (std::isnan(estimated))
+        out << "Warning: the runs of the chosen run's estimate give no "
+            << "estimate of " << quantity << " (error_estimate.txt says "
+            << "why)." << std::endl;
+      else if (!(estimated <= target))
         out << "Warning: the estimated error of the chosen run is above the "
             << "target: the pilots were not in the asymptotic range (see the "
             << "warnings of the estimate); run with a smaller '"
