@@ -81,9 +81,15 @@ namespace Contact
     double              value;
     std::vector<double> differences;
     RichardsonEstimate  estimate;
-    double              space_part  = std::numeric_limits<double>::quiet_NaN();
-    double              time_part   = std::numeric_limits<double>::quiet_NaN();
-    double              exact_error = std::numeric_limits<double>::quiet_NaN();
+    /** With the separation: the parts of the error that halving only h
+     *  and only k remove (signed for a quantity), each with the order its
+     *  own runs show, and whether the estimate is their sum. */
+    double space_part  = std::numeric_limits<double>::quiet_NaN();
+    double time_part   = std::numeric_limits<double>::quiet_NaN();
+    double space_order = std::numeric_limits<double>::quiet_NaN();
+    double time_order  = std::numeric_limits<double>::quiet_NaN();
+    bool   from_parts  = false;
+    double exact_error = std::numeric_limits<double>::quiet_NaN();
     /** For worst_V_error: the time of the largest estimate. */
     double time = std::numeric_limits<double>::quiet_NaN();
   };

@@ -919,10 +919,13 @@ namespace Contact
         "Separate space and time",
         "false",
         Patterns::Bool(),
-        "With 'Estimate error': also run with 2h and k and with h and 2k "
-        "(coarse-space, coarse-time; in 2D about 1/4 and 1/2 of the run) "
-        "and split every estimate into the part that halving h removes "
-        "and the part that halving k does.");
+        "With 'Estimate error': also run with 2h and 4h at k and with 2k "
+        "and 4k at h (coarse-space-1, -2, coarse-time-1, -2; in 2D about "
+        "1/4, 1/16, 1/2 and 1/4 of the run) and split every estimate into "
+        "the part that halving h removes and the part that halving k does, "
+        "each extrapolated with its own order; a row's estimate is their "
+        "sum where that is larger. Needed where the orders in h and k "
+        "differ (degree 2).");
       prm.declare_entry(
         "Target error",
         "0",
