@@ -119,6 +119,8 @@ namespace Contact
     inline const std::string target_error_type = "Accuracy/Target error type";
     inline const std::string target_quantity   = "Accuracy/Target quantity";
     inline const std::string cost_model        = "Accuracy/Cost model";
+    inline const std::string max_predicted_time =
+      "Accuracy/Maximum predicted time";
 
     /** All of the above, for the test. */
     inline std::vector<std::string> all()
@@ -178,7 +180,8 @@ namespace Contact
               target_error,
               target_error_type,
               target_quantity,
-              cost_model};
+              cost_model,
+              max_predicted_time};
     }
   } // namespace Entry
 
@@ -484,6 +487,10 @@ namespace Contact
       unknowns_times_steps
     };
     CostModel cost_model;
+    /** The longest predicted wall time [s] of the run a target chooses (0:
+     *  no limit); beyond it the program stops and says what it would have
+     *  chosen. */
+    double max_predicted_time;
 
     /** The names of the choices of 'Target error type' and 'Cost
      *  model'. */

@@ -963,6 +963,15 @@ namespace Contact
                         "the pilots' measured wall times (a + b unknowns "
                         "steps, per degree), or unknowns times steps "
                         "(the same choice on every machine).");
+      prm.declare_entry("Maximum predicted time",
+                        "0",
+                        Patterns::Double(0),
+                        "0: no limit. Otherwise the longest predicted wall "
+                        "time [s] of the run that 'Target error' chooses "
+                        "(with its estimate's coarse runs, from the "
+                        "pilots' measured wall times: needs 'Cost model' = "
+                        "measured). Beyond it the program stops before "
+                        "that run and says what it would have chosen.");
     }
     prm.leave_subsection();
   }
@@ -976,8 +985,9 @@ namespace Contact
       target_error            = prm.get_double("Target error");
       target_error_type =
         target_error_types().parse(prm.get("Target error type"));
-      target_quantity = Quantity::parse(prm.get("Target quantity"));
-      cost_model      = cost_models().parse(prm.get("Cost model"));
+      target_quantity    = Quantity::parse(prm.get("Target quantity"));
+      cost_model         = cost_models().parse(prm.get("Cost model"));
+      max_predicted_time = prm.get_double("Maximum predicted time");
     }
     prm.leave_subsection();
   }
@@ -1158,17 +1168,37 @@ namespace Contact
                            "it is '" +
                            Entry::estimate_error + "' = true or '" +
                            Entry::target_error + "' > 0."));
+    AssertThrow(accuracy.max_predicted_time == 0 ||
+                  (target && accuracy.cost_model ==
+                               AccuracyParameters::CostModel::measured),
+                ExcMessage("Entry '" + Entry::max_predicted_time +
+                           "' = " + number_text(accuracy.max_predicted_time) +
+                           " limits the run that a target chooses by its "
+                           "predicted wall time: allowed with it are '" +
+                           Entry::target_error + "' > 0 and '" +
+                           Entry::cost_model + "' = " +
+                           AccuracyParameters::cost_models().name(
+                             AccuracyParameters::CostModel::measured) +
+                           " (or 0 for no limit)."));
     if (target)
       {
         check_target_quantity();
-        check_entry(time.n_steps() % 4 == 0,
-                    Entry::time_step,
-                    time.end_time / time.n_steps(),
-                    "a step that divides '" + Entry::end_time +
-                      "' into a multiple of 4 steps with '" +
-                      Entry::target_error +
-                      "' > 0 (the pilots run with 2k and 4k on the same "
-                      "time grid)");
+        // The nearest valid steps: T / N for the multiples N of 4 around
+        // the N = ceil(T / k) that the entry gives.
+        const unsigned int n     = time.n_steps();
+        const unsigned int below = std::max(4u, n / 4 * 4);
+        check_entry(
+          n % 4 == 0,
+          Entry::time_step,
+          time.time_step,
+          "a step that divides '" + Entry::end_time +
+            "' into a multiple of 4 steps with '" + Entry::target_error +
+            "' > 0 (the pilots run with 2k and 4k on the same "
+            "time grid); this one gives " +
+            std::to_string(n) + " steps, the nearest valid ones are T/" +
+            std::to_string(below) + " = " + number_text(time.end_time / below) +
+            " and T/" + std::to_string(below + 4) + " = " +
+            number_text(time.end_time / (below + 4)));
       }
     if (!accuracy.estimate_error && !target)
       return;

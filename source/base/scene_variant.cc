@@ -89,8 +89,10 @@ namespace Contact
         !quiet && (accuracy.estimate_error || accuracy.target_error > 0));
       entries[Entry::separate_space_and_time] =
         bool_text(!quiet && accuracy.separate_space_and_time);
-      entries[Entry::target_error] =
-        quiet ? "0" : exact_text(accuracy.target_error);
+      // No variant chooses again: the run that a target chose writes the
+      // parameters.prm that reproduces it, with its error estimate.
+      entries[Entry::target_error]       = "0";
+      entries[Entry::max_predicted_time] = "0";
       if (quiet)
         {
           entries[Entry::vtu_interval]   = "0";

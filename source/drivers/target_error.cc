@@ -87,9 +87,9 @@ namespace Contact
     // The error of one direction (h or k) at the pilots' H or K, with the
     // order used to extrapolate it, from the three pilots f (H), m (2H)
     // and c (4H) (or K, 2K, 4K): the estimate of error_estimate.cc for the
-    // target quantity, with the order kept within what the scheme can give
-    // (`max_order`) and at least min_plausible_order (a note says when it
-    // was not).
+    // target quantity, with the order lowered to what the scheme can give
+    // (`max_order`), never raised: below min_plausible_order the direction
+    // predicts nothing (error NaN; a note says why).
     struct DirectionFit
     {
       double      error = 0;
@@ -149,23 +149,34 @@ namespace Contact
                          estimate.measured_orders[0];
       if (!std::isfinite(estimate.error))
         estimate.error = std::abs(d_fine);
-      DirectionFit fit{estimate.error, estimate.order, estimate.reason};
-      if (!(estimate.order >= min_plausible_order) ||
-          estimate.order > max_order)
+      DirectionFit fit{estimate.error, estimate.order, ""};
+      if (d_fine == 0 && d_coarse == 0)
         {
-          fit.order =
-            std::isfinite(estimate.order) ?
-              std::clamp(estimate.order, min_plausible_order, max_order) :
-              min_plausible_order;
-          // Without an order (differences that change sign, or a quantity
-          // equal on the two finer runs) the estimate's own error stays.
-          if (std::isfinite(estimate.order))
-            fit.error = std::abs(d_fine) / (std::pow(2., fit.order) - 1);
-          fit.note =
-            "measured order " + number_text(estimate.order) + " taken as " +
-            number_text(fit.order) +
-            (estimate.order > max_order ? " (the scheme gives at most that)" :
-                                          " (the least plausible one)");
+          // No error seen in this direction: it limits nothing (the order
+          // is then irrelevant).
+          fit.order = min_plausible_order;
+          fit.note  = "the same on the three pilots";
+        }
+      else if (!(estimate.order >= min_plausible_order))
+        {
+          // An order below what the scheme shows in the asymptotic range
+          // (or none) is never raised: it would make the predicted error
+          // fall faster than measured. This direction predicts nothing.
+          fit.error = std::numeric_limits<double>::quiet_NaN();
+          fit.note  = (std::isnan(estimate.order) ?
+                         estimate.reason :
+                         "measured order " + number_text(estimate.order) +
+                          ", below " + number_text(min_plausible_order)) +
+                     ": the pilots are not in the asymptotic range, no "
+                     "prediction";
+        }
+      else if (estimate.order > max_order)
+        {
+          fit.order = max_order;
+          fit.error = std::abs(d_fine) / (std::pow(2., fit.order) - 1);
+          fit.note  = "measured order " + number_text(estimate.order) +
+                     " taken as " + number_text(fit.order) +
+                     " (the scheme gives at most that)";
         }
       return fit;
     }
@@ -239,10 +250,10 @@ namespace Contact
       double                  predicted_cost;
     };
 
-    // For h = H / 2^m the largest k = T / N (N a multiple of 4, for the
-    // estimate's runs with N / 2 and N / 4 steps) whose predicted error
-    // stays within the allowed one; the cost is that of the run and of its
-    // estimate's two coarse runs.
+    // For h = H / 2^m the largest k = T / N (N a multiple of 8, so that the
+    // estimate's runs with N / 2, N / 4 and N / 8 steps share their times)
+    // whose predicted error stays within the allowed one; the cost is that
+    // of the run and of its estimate's three coarse runs.
     std::optional<Candidate> candidate(const DegreeModel  &model,
                                        const DirectionFit &time,
                                        const double        cosine,
@@ -268,14 +279,15 @@ namespace Contact
         k = std::min(k,
                      K * std::pow(time_error_allowed / time.error,
                                   1. / time.order));
-      const double steps = 4 * std::ceil(end_time / k / 4 - 1e-9);
+      const double steps = 8 * std::ceil(end_time / k / 8 - 1e-9);
       if (!(steps <= max_steps))
         return std::nullopt;
       const unsigned int n_steps =
-        std::max(static_cast<unsigned int>(steps), 4u);
+        std::max(static_cast<unsigned int>(steps), 8u);
       const double n_dofs = double(model.n_dofs) * std::pow(2., dim * m);
-      const double work = n_dofs * (n_steps + std::pow(0.5, dim) * n_steps / 2 +
-                                    std::pow(0.25, dim) * n_steps / 4);
+      double       work   = 0;
+      for (unsigned int factor = 1; factor <= 8; factor *= 2)
+        work += n_dofs * std::pow(1. / factor, dim) * n_steps / factor;
       const double time_error =
         time.error * std::pow(end_time / n_steps / K, time.order);
       return Candidate{model.degree,
@@ -283,7 +295,7 @@ namespace Contact
                        n_steps,
                        static_cast<types::global_dof_index>(n_dofs),
                        combined_error(space_error, time_error, cosine),
-                       3 * model.a + model.b * work};
+                       4 * model.a + model.b * work};
     }
 
 
@@ -604,8 +616,7 @@ namespace Contact
     double target_of(const AccuracyParameters &accuracy,
                      const PilotResults       &pilots)
     {
-      AssertThrow(std::isfinite(pilots.size) &&
-                    std::isfinite(pilots.time.error),
+      AssertThrow(std::isfinite(pilots.size),
                   ExcMessage("Entry '" + Entry::target_quantity + "' = '" +
                              accuracy.target_quantity.name() +
                              "' is not defined on the pilots (e.g. no slip "
@@ -674,6 +685,22 @@ namespace Contact
     const std::optional<Candidate> chosen =
       choose(pilots, parameters, dim, target, choice);
     print(choice.str());
+    bool predicts = std::isfinite(pilots.time.error);
+    for (const DegreeModel &model : pilots.models)
+      predicts = predicts && std::isfinite(model.space.error);
+    AssertThrow(chosen || predicts,
+                ExcMessage(
+                  "Entry '" + Entry::target_error +
+                  "' = " + number_text(parameters.accuracy.target_error) +
+                  ": the pilots are not in the asymptotic range for "
+                  "'" +
+                  parameters.accuracy.target_quantity.name() +
+                  "' (see the lines above: an order below " +
+                  number_text(min_plausible_order) +
+                  " or differences that change sign), so they "
+                  "predict nothing. Start from a smaller '" +
+                  Entry::cell_size + "' and '" + Entry::time_step +
+                  "', or choose another '" + Entry::target_quantity + "'."));
     AssertThrow(chosen,
                 ExcMessage("Entry '" + Entry::target_error + "' = " +
                            number_text(parameters.accuracy.target_error) +
@@ -688,10 +715,29 @@ namespace Contact
                            "' if the pilots are not yet in the asymptotic "
                            "range."));
 
-    print("Target error: the chosen run, degree " +
-          std::to_string(chosen->degree) + ", h = H/" +
-          std::to_string(1u << chosen->halvings) + ", k = T/" +
-          std::to_string(chosen->n_steps) + ", with its error estimate\n");
+    const bool measured =
+      parameters.accuracy.cost_model == AccuracyParameters::CostModel::measured;
+    std::ostringstream choice_line;
+    choice_line << std::setprecision(3)
+                << "Target error: the chosen run, degree " << chosen->degree
+                << ", h = H/" << (1u << chosen->halvings) << ", k = T/"
+                << chosen->n_steps << ", predicted error "
+                << chosen->predicted_error;
+    if (measured && parameters.output.print_timings)
+      choice_line << ", predicted wall time " << chosen->predicted_cost << " s";
+    choice_line << ", with its error estimate" << std::endl;
+    print(choice_line.str());
+    const double limit = parameters.accuracy.max_predicted_time;
+    AssertThrow(limit == 0 || !measured || chosen->predicted_cost <= limit,
+                ExcMessage("Entry '" + Entry::max_predicted_time +
+                           "' = " + number_text(limit) +
+                           " s: the run chosen above is predicted to take " +
+                           (parameters.output.print_timings ?
+                              number_text(chosen->predicted_cost) + " s" :
+                              std::string("longer")) +
+                           " with its estimate; it was not run. Raise the "
+                           "limit, or ask for a larger '" +
+                           Entry::target_error + "'."));
     const Timer        chosen_timer;
     const EstimatedRun result = run_with_error_estimate<dim>(
       parameters_of(parameters,

@@ -1,0 +1,102 @@
+/* What a target leaves behind must be usable: the manufactured solution
+   with stick and slip and a target of 3e-3 times the size of ||eps(u_h)||
+   (as verification/target_error_manufactured, cost model unknowns times
+   steps).
+   - The parameters.prm that the target run writes is the chosen run's,
+     with its error estimate and without the target: running it again must
+     reproduce the chosen run (the same time_series.csv) and choose nothing.
+   - With 'Accuracy/Maximum predicted time' below the chosen run's predicted
+     wall time (measured cost model), the program must stop before that run,
+     naming the entry, and leave no estimate of a run behind. */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <app/run.h>
+#include <drivers/error_estimate.h>
+#include <drivers/target_error.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace Contact;
+
+namespace
+{
+  std::string contents(const std::string &path)
+  {
+    std::ifstream      file(path);
+    std::ostringstream text;
+    text << file.rdbuf();
+    return text.str();
+  }
+
+  std::vector<std::string> target_settings(const std::string &directory)
+  {
+    return {"Convergence study/Levels=0",
+            "Accuracy/Target error=3e-3",
+            "Output/Progress interval=0",
+            "Output/Print timings=false",
+            "Output/Output directory=" + directory};
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string scene = CONTACT_PRM_DIR "/manufactured_slip_front.prm";
+  std::ostringstream console_output;
+  auto *const        console = std::cout.rdbuf(console_output.rdbuf());
+
+  std::vector<std::string> settings = target_settings("run-target");
+  settings.push_back("Accuracy/Cost model=unknowns times steps");
+  run_to_target<2>(read_parameters(scene, settings));
+  const Parameters again =
+    read_parameters("run-target/parameters.prm",
+                    {"Output/Output directory=run-again"});
+  run_with_error_estimate<2>(again);
+
+  settings = target_settings("run-limited");
+  settings.push_back("Accuracy/Maximum predicted time=1e-9");
+  std::string message;
+  try
+    {
+      run_to_target<2>(read_parameters(scene, settings));
+    }
+  catch (const dealii::ExceptionBase &error)
+    {
+      std::ostringstream text;
+      error.print_info(text);
+      message = text.str();
+    }
+  std::cout.rdbuf(console);
+
+  std::cout << "the written parameters.prm has no target: "
+            << (again.accuracy.target_error == 0 ? "yes" : "no")
+            << "; runs with its error estimate: "
+            << (again.accuracy.estimate_error ? "yes" : "no") << std::endl;
+  const std::string chosen = contents("run-target/time_series.csv");
+  std::cout << "running it again reproduces the chosen run's "
+            << "time_series.csv: "
+            << (!chosen.empty() &&
+                    chosen == contents("run-again/time_series.csv") ?
+                  "yes" :
+                  "no")
+            << std::endl;
+  std::cout << "a predicted time above the limit stops before the chosen "
+            << "run: "
+            << (message.find("'Accuracy/Maximum predicted time'") !=
+                    std::string::npos &&
+                  message.find("it was not run") != std::string::npos ?
+                  "yes" :
+                  "no: " + message)
+            << "; no estimate of a run left behind: "
+            << (std::filesystem::exists("run-limited/error_estimate.txt") ?
+                  "no" :
+                  "yes")
+            << std::endl;
+}
