@@ -579,6 +579,10 @@ namespace Contact
 
     /** The .prm text of all entries as they were used, for the results. */
     std::string used_parameters;
+    /** Not an entry: set for the run that a target chose
+     *  (parameters_of()), which keeps the pilots in its directory; its
+     *  parameters.prm, run again, is a plain run. */
+    bool keeps_pilots = false;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);

@@ -147,11 +147,19 @@ namespace Contact
   class ReferenceInterpolation;
 
   /** Runs `problem`, keeping its displacement at every `stride`-th step
-   *  (none for 0) and at T, interpolated by `onto` (its own for null). */
+   *  (none for 0) and at T, interpolated by `onto` (its own for null). With
+   *  a `log_file` the run's console output goes there instead (a sub-run of
+   *  an estimate or a target, which the console shows in one line). */
   template <int dim>
   RunAtTimes run_onto(ContactProblem<dim>               &problem,
                       const ReferenceInterpolation<dim> *onto,
-                      const unsigned int                 stride);
+                      const unsigned int                 stride,
+                      const std::string                 &log_file = "");
+
+  /** The line that stands for a sub-run on the console: its unknowns and
+   *  steps, and where its log is. */
+  std::string sub_run_line(const RunSummary  &summary,
+                           const std::string &log_file);
 
   /** Runs the scene of `parameters` and its coarse versions, and prints
    *  and writes the estimated errors (error_estimate.txt). A quantity with

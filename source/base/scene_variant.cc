@@ -143,6 +143,7 @@ namespace Contact
         }
     Parameters parameters;
     parameters.parse_parameters(prm);
+    parameters.keeps_pilots = !variant.quiet && scene.accuracy.target_error > 0;
     return parameters;
   }
 } // namespace Contact

@@ -147,9 +147,7 @@ namespace Contact
       return;
     if (!parameters.output.resume)
       // The run that a target chose keeps the pilots it was chosen by.
-      remove_results(directory,
-                     parameters.accuracy.target_error > 0,
-                     mpi_communicator);
+      remove_results(directory, parameters.keeps_pilots, mpi_communicator);
     // Output that is written in pieces (VTU) is written here first and
     // renamed into the directory when complete.
     std::error_code error;

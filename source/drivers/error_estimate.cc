@@ -51,7 +51,7 @@ namespace Contact
     // and the coarse runs.
     const ResultFiles estimate_table("error_estimate\\.txt");
     const ResultDirectories
-      coarse_runs("coarse-(1|2|3|space-1|space-2|time-1|time-2)");
+      coarse_runs("coarse-(1|2|3|space|time|space-1|space-2|time-1|time-2)");
 
     // "0.65" or "0.65 and 0.71".
     std::string orders_text(const std::vector<double> &orders)
@@ -77,7 +77,7 @@ namespace Contact
   RichardsonEstimate richardson_estimate(const std::vector<double> &differences,
                                          const bool signed_differences)
   {
-    Assert(differences.size() >= 2, ExcInternalError());
+    AssertThrow(differences.size() >= 2, ExcInternalError());
     RichardsonEstimate estimate;
     const auto         verdict = [&](const std::string &status,
                              const std::string &reason) {
@@ -199,11 +199,54 @@ namespace Contact
 
   // @sect3{Runs and their histories}
 
+  namespace
+  {
+    // The console output of a sub-run, kept while it runs and written to
+    // its log file when it ends, however it ends (the directory exists by
+    // then, since the run made it).
+    class ConsoleToFile
+    {
+    public:
+      explicit ConsoleToFile(const std::string &file)
+        : log_file(file)
+        , console(file.empty() ? nullptr : std::cout.rdbuf(captured.rdbuf()))
+      {}
+      ~ConsoleToFile()
+      {
+        if (!console)
+          return;
+        std::cout.rdbuf(console);
+        if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          std::ofstream(log_file) << captured.str();
+      }
+      ConsoleToFile(const ConsoleToFile &)            = delete;
+      ConsoleToFile &operator=(const ConsoleToFile &) = delete;
+
+    private:
+      const std::string  log_file;
+      std::ostringstream captured;
+      std::streambuf    *console;
+    };
+  } // namespace
+
+
+  std::string sub_run_line(const RunSummary  &summary,
+                           const std::string &log_file)
+  {
+    std::ostringstream line;
+    line << summary.n_dofs << " unknowns, " << summary.n_steps
+         << " steps; log in " << log_file;
+    return line.str();
+  }
+
+
   template <int dim>
   RunAtTimes run_onto(ContactProblem<dim>               &problem,
                       const ReferenceInterpolation<dim> *onto,
-                      const unsigned int                 stride)
+                      const unsigned int                 stride,
+                      const std::string                 &log_file)
   {
+    const ConsoleToFile log(log_file);
     using NodesInCells =
       std::vector<typename ReferenceInterpolation<dim>::NodeInCell>;
     RunAtTimes                  result;
@@ -231,26 +274,26 @@ namespace Contact
 
   namespace
   {
-    // The estimate of a row from its differences, with two known orders
-    // where a target's pilots measured them and they tell the parts apart
-    // (two_order_error_estimate), else with the order the runs show.
+    // The estimate of a row from its differences. Where a target's pilots
+    // measured two orders that tell the parts apart, the two-order
+    // estimate (two_order_error_estimate) may raise the row's own, never
+    // lower it, and never replaces a verdict of the row's own runs.
     RichardsonEstimate estimate_of(const std::vector<double> &differences,
                                    const bool                 field,
                                    const TwoOrders           *known)
     {
       RichardsonEstimate estimate = richardson_estimate(differences, !field);
-      const double error = known ? two_order_error_estimate(differences[0],
-                                                            differences[1],
-                                                            *known,
-                                                            field) :
-                                   std::numeric_limits<double>::quiet_NaN();
-      if (std::isfinite(error))
+      if (!known || !estimate.status.empty())
+        return estimate;
+      const double error =
+        two_order_error_estimate(differences[0], differences[1], *known, field);
+      if (error > estimate.error)
         {
           estimate.error = error;
           estimate.order = std::numeric_limits<double>::quiet_NaN();
-          // The report says so above the table.
-          estimate.status = "";
-          estimate.reason = "";
+          estimate.reason =
+            "the sum of a space and a time part with the pilots' orders, "
+            "larger than the estimate of its own order";
         }
       return estimate;
     }
@@ -258,8 +301,7 @@ namespace Contact
 
     // The error of a run over time: at each time that all runs share, the
     // estimate from the differences of consecutive runs; the row is that
-    // of the largest estimate (a time without an estimate counts by its
-    // difference h vs 2h).
+    // of the largest estimate, and has none where a time has none.
     template <int dim>
     EstimateRow worst_time_row(const ContactProblem<dim>     &fine,
                                const std::vector<RunAtTimes> &runs,
@@ -268,6 +310,7 @@ namespace Contact
     {
       EstimateRow worst{worst_V_error, 0, {}, {}};
       double      largest = -1;
+      std::string without_estimate;
       std::size_t n_times = runs[0].history.size();
       for (const RunAtTimes &run : runs)
         n_times = std::min(n_times, run.history.size());
@@ -280,6 +323,10 @@ namespace Contact
                                                   runs[r + 1].history[j]));
           const RichardsonEstimate estimate =
             estimate_of(differences, true, known);
+          if (!estimate.status.empty() && without_estimate.empty())
+            without_estimate =
+              "at t = " + number_text((j + 1) * coarse_time_step) + ": " +
+              estimate.reason;
           const double size =
             std::isfinite(estimate.error) ? estimate.error : differences[0];
           if (size > largest)
@@ -292,6 +339,14 @@ namespace Contact
               worst.exact_error = runs[0].summary.max_errors.displacement_V;
               worst.time        = (j + 1) * coarse_time_step;
             }
+        }
+      // One time without an estimate leaves the largest unknown.
+      if (!without_estimate.empty())
+        {
+          worst.estimate.error  = std::numeric_limits<double>::quiet_NaN();
+          worst.estimate.order  = std::numeric_limits<double>::quiet_NaN();
+          worst.estimate.status = "not asymptotic";
+          worst.estimate.reason = without_estimate;
         }
       return worst;
     }
@@ -343,16 +398,24 @@ namespace Contact
                        base.geometry.fe_degree,
                        base.output.directory + "/" + name,
                        true}));
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        std::cout << std::endl
-                  << "Error estimate: the scene with h times " << space_factor
-                  << " and k times " << time_factor << " (" << name << ")"
-                  << std::endl;
-      return run_onto(coarse,
-                      &interpolate,
-                      base.time.n_steps() % coarsest_factor == 0 ?
-                        coarsest_factor / time_factor :
-                        0);
+      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      if (root)
+        std::cout << "Error estimate: the scene with h times " << space_factor
+                  << " and k times " << time_factor << " (" << name
+                  << "): " << std::flush;
+      const std::string log_file =
+        base.output.directory + "/" + name + "/console.log";
+      RunAtTimes run = run_onto(coarse,
+                                &interpolate,
+                                // Only the sequence's runs keep histories.
+                                base.time.n_steps() % coarsest_factor == 0 &&
+                                    space_factor == time_factor ?
+                                  coarsest_factor / time_factor :
+                                  0,
+                                log_file);
+      if (root)
+        std::cout << sub_run_line(run.summary, log_file) << std::endl;
+      return run;
     }
 
 
@@ -418,14 +481,15 @@ namespace Contact
                       runs.time,
                       field,
                       apart ? known->time : nan);
+      // The parts raise an estimate of the sequence, never replace its
+      // verdict: each rests on one order that no run checks.
       const double sum = std::abs(row.space_part) + std::abs(row.time_part);
-      if (std::isfinite(sum) && !(row.estimate.error >= sum))
+      if (row.estimate.status.empty() && std::isfinite(sum) &&
+          sum > row.estimate.error)
         {
-          row.estimate.error  = sum;
-          row.estimate.order  = nan;
-          row.estimate.status = "";
-          row.estimate.reason = "";
-          row.from_parts      = true;
+          row.estimate.error = sum;
+          row.estimate.order = nan;
+          row.from_parts     = true;
         }
     }
 
@@ -638,6 +702,11 @@ namespace Contact
                             "")
                 << "." << std::endl;
           }
+      if (has_worst_row && separate && parameters.geometry.fe_degree >= 2)
+        out << "Note: " << worst_V_error << ": from the sequence's one order "
+            << "(the separation splits the rows at T only); with degree "
+            << parameters.geometry.fe_degree << " it may be too small."
+            << std::endl;
       if (!has_worst_row)
         out << worst_V_error << ": not estimated: it needs T/k a multiple of "
             << coarsest << " (here " << parameters.time.n_steps()
@@ -756,7 +825,8 @@ namespace Contact
 #define INSTANTIATE(dim)                                                   \
   template RunAtTimes   run_onto<dim>(ContactProblem<dim> &,               \
                                     const ReferenceInterpolation<dim> *, \
-                                    const unsigned int);                 \
+                                    const unsigned int,                  \
+                                    const std::string &);                \
   template EstimatedRun run_with_error_estimate<dim>(const Parameters &,   \
                                                      const KnownOrders &);
   CONTACT_INSTANTIATE(INSTANTIATE)

@@ -154,7 +154,7 @@ namespace Contact
         {
           // No error seen in this direction: it limits nothing (the order
           // is then irrelevant).
-          fit.order = min_plausible_order;
+          fit.order = std::numeric_limits<double>::quiet_NaN();
           fit.note  = "the same on the three pilots";
         }
       else if (!(estimate.order >= min_plausible_order))
@@ -253,7 +253,7 @@ namespace Contact
     // For h = H / 2^m the largest k = T / N (N a multiple of 8, so that the
     // estimate's runs with N / 2, N / 4 and N / 8 steps share their times)
     // whose predicted error stays within the allowed one; the cost is that
-    // of the run and of its estimate's three coarse runs.
+    // of the run and of its estimate's coarse runs.
     std::optional<Candidate> candidate(const DegreeModel  &model,
                                        const DirectionFit &time,
                                        const double        cosine,
@@ -262,10 +262,14 @@ namespace Contact
                                        const double        end_time,
                                        const double        K,
                                        const double        allowed,
-                                       const unsigned int  max_steps)
+                                       const unsigned int  max_steps,
+                                       const bool          separate)
     {
+      // (A direction without error has no order.)
       const double space_error =
-        model.space.error * std::pow(2., -model.space.order * m);
+        model.space.error == 0 ?
+          0. :
+          model.space.error * std::pow(2., -model.space.order * m);
       if (!(space_error < allowed) || !std::isfinite(time.error))
         return std::nullopt;
       // The time error E_k that makes |e_h + e_k| = allowed:
@@ -285,17 +289,29 @@ namespace Contact
       const unsigned int n_steps =
         std::max(static_cast<unsigned int>(steps), 8u);
       const double n_dofs = double(model.n_dofs) * std::pow(2., dim * m);
+      // The run and its estimate's runs with 2h, 4h, 8h, and with the
+      // separation those with 2h, 4h at k and 2k, 4k at h.
       double       work   = 0;
-      for (unsigned int factor = 1; factor <= 8; factor *= 2)
-        work += n_dofs * std::pow(1. / factor, dim) * n_steps / factor;
+      unsigned int n_runs = 0;
+      const auto   add    = [&](const double space, const double in_time) {
+        work += n_dofs * std::pow(1. / space, dim) * n_steps / in_time;
+        ++n_runs;
+      };
+      for (const double factor : {1., 2., 4., 8.})
+        add(factor, factor);
+      if (separate)
+        for (const double factor : {2., 4.})
+          add(factor, 1.), add(1., factor);
       const double time_error =
-        time.error * std::pow(end_time / n_steps / K, time.order);
+        time.error == 0 ?
+          0. :
+          time.error * std::pow(end_time / n_steps / K, time.order);
       return Candidate{model.degree,
                        m,
                        n_steps,
                        static_cast<types::global_dof_index>(n_dofs),
                        combined_error(space_error, time_error, cosine),
-                       4 * model.a + model.b * work};
+                       n_runs * model.a + model.b * work};
     }
 
 
@@ -405,16 +421,23 @@ namespace Contact
           "pilot-q" + std::to_string(degree) + "-" +
           (space_factor > 1 ? std::to_string(space_factor) : "") + "h-" +
           (time_factor > 1 ? std::to_string(time_factor) : "") + "k";
-        print("Target error: pilot " + name);
-        auto problem = std::make_unique<ContactProblem<dim>>(
+        const std::string directory = parameters.output.directory + "/" + name;
+        auto              problem   = std::make_unique<ContactProblem<dim>>(
           parameters_of(parameters,
                         {-static_cast<int>(space_factor / 2),
-                         N0 / time_factor,
-                         degree,
-                         parameters.output.directory + "/" + name,
-                         true}));
-        pilots.push_back(
-          {name, degree, run_onto(*problem, interpolate.get(), 1)});
+                                        N0 / time_factor,
+                                        degree,
+                                        directory,
+                                        true}));
+        pilots.push_back({name,
+                          degree,
+                          run_onto(*problem,
+                                   interpolate.get(),
+                                   1,
+                                   directory + "/console.log")});
+        print(
+          "Target error: pilot " + name + ": " +
+          sub_run_line(pilots.back().run.summary, directory + "/console.log"));
         // The cost model, and so the choice, must be the same on every
         // process.
         double &wall_time = pilots.back().run.summary.wall_time;
@@ -504,15 +527,17 @@ namespace Contact
         {
           std::optional<Candidate> best;
           for (unsigned int m = 0; m <= max_halvings; ++m)
-            if (const auto c = candidate(model,
-                                         results.time,
-                                         results.cosine,
-                                         m,
-                                         dim,
-                                         parameters.time.end_time,
-                                         K,
-                                         allowed,
-                                         parameters.time.max_steps))
+            if (const auto c =
+                  candidate(model,
+                            results.time,
+                            results.cosine,
+                            m,
+                            dim,
+                            parameters.time.end_time,
+                            K,
+                            allowed,
+                            parameters.time.max_steps,
+                            parameters.accuracy.separate_space_and_time))
               if (!best || c->predicted_cost < best->predicted_cost)
                 best = c;
           out << "Degree " << model.degree << ": "
@@ -685,9 +710,12 @@ namespace Contact
     const std::optional<Candidate> chosen =
       choose(pilots, parameters, dim, target, choice);
     print(choice.str());
-    bool predicts = std::isfinite(pilots.time.error);
+    bool some_degree_predicts = false;
     for (const DegreeModel &model : pilots.models)
-      predicts = predicts && std::isfinite(model.space.error);
+      some_degree_predicts =
+        some_degree_predicts || std::isfinite(model.space.error);
+    const bool predicts =
+      std::isfinite(pilots.time.error) && some_degree_predicts;
     AssertThrow(chosen || predicts,
                 ExcMessage(
                   "Entry '" + Entry::target_error +

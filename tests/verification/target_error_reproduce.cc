@@ -2,6 +2,7 @@
    with stick and slip and a target of 3e-3 times the size of ||eps(u_h)||
    (as verification/target_error_manufactured, cost model unknowns times
    steps).
+   - The chosen run keeps the pilots' directories next to it.
    - The parameters.prm that the target run writes is the chosen run's,
      with its error estimate and without the target: running it again must
      reproduce the chosen run (the same time_series.csv) and choose nothing.
@@ -48,7 +49,7 @@ namespace
 int main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::string scene = CONTACT_PRM_DIR "/manufactured_slip_front.prm";
+  const std::string  scene = CONTACT_PRM_DIR "/manufactured_slip_front.prm";
   std::ostringstream console_output;
   auto *const        console = std::cout.rdbuf(console_output.rdbuf());
 
@@ -80,6 +81,12 @@ int main(int argc, char **argv)
             << "; runs with its error estimate: "
             << (again.accuracy.estimate_error ? "yes" : "no") << std::endl;
   const std::string chosen = contents("run-target/time_series.csv");
+  std::cout << "the chosen run keeps the pilots it was chosen by: "
+            << (std::filesystem::exists(
+                  "run-target/pilot-q2-h-k/parameters.prm") ?
+                  "yes" :
+                  "no")
+            << std::endl;
   std::cout << "running it again reproduces the chosen run's "
             << "time_series.csv: "
             << (!chosen.empty() &&
@@ -90,8 +97,8 @@ int main(int argc, char **argv)
   std::cout << "a predicted time above the limit stops before the chosen "
             << "run: "
             << (message.find("'Accuracy/Maximum predicted time'") !=
-                    std::string::npos &&
-                  message.find("it was not run") != std::string::npos ?
+                      std::string::npos &&
+                    message.find("it was not run") != std::string::npos ?
                   "yes" :
                   "no: " + message)
             << "; no estimate of a run left behind: "
