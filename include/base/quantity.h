@@ -41,6 +41,10 @@ namespace Contact
     /** As the estimate's table and the .prm file spell it. */
     std::string name() const;
 
+    /** Its SI unit in `dim` dimensions ("1" for a share); in 2D the
+     *  integrals are per metre of thickness (plane strain). */
+    std::string unit(const unsigned int dim) const;
+
     /** The quantity called `text`; an error names 'Accuracy/Target
      *  quantity' and the allowed names. */
     static Quantity parse(const std::string &text);

@@ -33,6 +33,30 @@ namespace Contact
   // @sect4{Quantity::name}
 
   // A probe's displacement is 'probe <i> u_<x|y|z>', i counted from 1.
+  // The V-norm ||eps(u)|| is the L2 norm of a strain over the body:
+  // m^(dim/2); the friction dissipation an energy, per metre of thickness
+  // in 2D.
+  std::string Quantity::unit(const unsigned int dim) const
+  {
+    switch (kind)
+      {
+        case Kind::worst_V_error:
+        case Kind::V_norm:
+          return dim == 2 ? "m" : "m^1.5";
+        case Kind::friction_dissipation:
+          return dim == 2 ? "J/m" : "J";
+        case Kind::slipping_share:
+          return "1";
+        case Kind::first_slip_time:
+          return "s";
+        case Kind::slip_zone_start:
+        case Kind::probe_displacement:
+          return "m";
+      }
+    return "";
+  }
+
+
   std::string Quantity::name() const
   {
     if (kind == Kind::probe_displacement)

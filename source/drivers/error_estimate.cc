@@ -25,6 +25,7 @@
 #include <deal.II/base/timer.h>
 
 #include <base/dimensions.h>
+#include <base/quantity.h>
 #include <base/scene_variant.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
@@ -576,6 +577,7 @@ namespace Contact
     }
 
     void write_table(const std::vector<EstimateRow> &rows,
+                     const unsigned int              dim,
                      const unsigned int              n_differences,
                      const bool                      with_exact,
                      const bool                      separate,
@@ -587,6 +589,7 @@ namespace Contact
       for (const EstimateRow &row : rows)
         {
           table.add_value("quantity", row.name);
+          table.add_value("unit", Quantity::parse(row.name).unit(dim));
           table.add_value("value", scientific(row.value));
           for (unsigned int i = 0; i < n_differences; ++i)
             table.add_value(difference_names[i],
@@ -688,7 +691,8 @@ namespace Contact
                   "too close to tell the parts apart: one order, as for "
                   "the other rows.")
             << std::endl;
-      write_table(rows, sequence.size() - 1, exact, separate, out);
+      write_table(
+        rows, parameters.dimension, sequence.size() - 1, exact, separate, out);
       const unsigned int coarsest      = 1u << (sequence.size() - 1);
       bool               has_worst_row = false;
       for (const EstimateRow &row : rows)
