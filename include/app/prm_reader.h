@@ -16,8 +16,8 @@
 
 namespace Contact
 {
-  /** The scene of `file` with the overrides ('Section/Entry', value)
-   *  applied, read and checked; `prm` (declared by
+  /** The scene of `file` (empty: the defaults) with the overrides
+   *  ('Section/Entry', value) applied, read and checked; `prm` (declared by
    *  Parameters::declare_parameters) holds its entries afterwards. User
    *  errors are thrown as dealii::ExceptionBase. */
   Parameters

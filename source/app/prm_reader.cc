@@ -308,7 +308,9 @@ namespace Contact
              const std::string                                      &file,
              const std::vector<std::pair<std::string, std::string>> &overrides)
   {
-    parse_parameter_file(prm, file);
+    // (No file: the defaults, e.g. for --print-parameters.)
+    if (!file.empty())
+      parse_parameter_file(prm, file);
     for (const auto &[path, value] : overrides)
       apply_override(prm, path, value);
     Parameters parameters;

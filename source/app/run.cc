@@ -57,14 +57,23 @@ namespace Contact
             {
               const std::string assignment = argv[++i];
               const auto        equal      = assignment.find('=');
-              AssertThrow(equal != std::string::npos,
+              const std::string path =
+                equal == std::string::npos ?
+                  "" :
+                  Utilities::trim(assignment.substr(0, equal));
+              // An empty path, or an empty section or entry name in it
+              // ('=3', '/Dimension=2', 'Time//End time=1'), is no entry.
+              AssertThrow(!path.empty() && path.front() != '/' &&
+                            path.back() != '/' &&
+                            path.find("//") == std::string::npos,
                           ExcMessage("'--set " + assignment +
                                      "' is not of the form "
-                                     "'Section/Entry=value'.\n" +
+                                     "'Section/Entry=value' (or 'Entry=value' "
+                                     "for an entry outside the subsections, "
+                                     "such as 'Dimension=3').\n" +
                                      usage));
               command_line.overrides.emplace_back(
-                Utilities::trim(assignment.substr(0, equal)),
-                Utilities::trim(assignment.substr(equal + 1)));
+                path, Utilities::trim(assignment.substr(equal + 1)));
             }
           else
             {
@@ -111,8 +120,7 @@ namespace Contact
     Parameters::declare_parameters(prm);
     if (command_line.print_parameters)
       {
-        if (!command_line.parameter_file.empty())
-          read_scene(prm, command_line.parameter_file, command_line.overrides);
+        read_scene(prm, command_line.parameter_file, command_line.overrides);
         prm.print_parameters(std::cout,
                              ParameterHandler::PRM |
                                ParameterHandler::KeepDeclarationOrder);

@@ -108,7 +108,15 @@ int main(int argc, char *argv[])
                              << "end\n";
   run({"--print-parameters", "scene.prm"}, "set End time");
   run({"--print-parameters"}, "set End time");
+  // --set applies to the listing too, and an undeclared entry is refused.
+  run({"--print-parameters", "--set", "Time/End time=2"}, "set End time");
+  run({"--print-parameters", "--set", "Time/Nothing=2"});
   compare_documented_parameters();
+
+  // An empty entry path, or an empty name in it (crashed inside
+  // ParameterHandler, or gave its internal-error text).
+  run({"--set", "=3", "scene.prm"});
+  run({"--set", "/Dimension=2", "scene.prm"});
 
   // A line break in the output directory (possible with --set only).
   run({"--set", "Output/Output directory=first\nsecond", "scene.prm"});
