@@ -101,13 +101,22 @@ namespace Contact
   {
     const auto  &geometry = this->parameters.geometry;
     const double inner = geometry.inner_radius, outer = geometry.outer_radius;
-    // In 3D as many cells along z as keep them about as long as wide.
+    // In 3D as many cells along z as keep them about as long as wide, at
+    // most max_axial_cells (the count is formed as a double first: a cast
+    // of a huge length to unsigned would be undefined).
+    const double cell_width = 2 * numbers::PI * inner / geometry.cells_around;
+    const double axial      = std::round(geometry.shell_length / cell_width);
+    const unsigned int max_axial_cells = 10000;
+    check_entry(dim == 2 || axial <= max_axial_cells,
+                Entry::shell_length,
+                geometry.shell_length,
+                "a length of at most " +
+                  number_text(max_axial_cells * cell_width) + " (" +
+                  std::to_string(max_axial_cells) +
+                  " cells along the axis, each about as long as wide at "
+                  "this 'Inner radius' and 'Cells around')");
     const unsigned int n_axial =
-      dim == 2 ? 1 :
-                 std::max(1u,
-                          static_cast<unsigned int>(std::round(
-                            geometry.shell_length / (2 * numbers::PI * inner /
-                                                     geometry.cells_around))));
+      dim == 2 ? 1 : std::max(1u, static_cast<unsigned int>(axial));
     const double cells = std::pow(2., dim * geometry.mesh_refinements) *
                          geometry.cells_around * n_axial;
     this->check_memory(cells,
