@@ -558,22 +558,27 @@ namespace Contact
 
     // @sect3{The report}
 
-    std::string scientific(const double value)
+    // A number of the table, or "-" where there is none.
+    std::string table_text(const double value, const bool scientific)
     {
       if (std::isnan(value))
         return "-";
       std::ostringstream text;
-      text << std::scientific << std::setprecision(3) << value;
+      if (scientific)
+        text << std::scientific << std::setprecision(3) << value;
+      else
+        text << std::fixed << std::setprecision(2) << value;
       return text.str();
+    }
+
+    std::string scientific(const double value)
+    {
+      return table_text(value, true);
     }
 
     std::string fixed(const double value)
     {
-      if (std::isnan(value))
-        return "-";
-      std::ostringstream text;
-      text << std::fixed << std::setprecision(2) << value;
-      return text.str();
+      return table_text(value, false);
     }
 
     void write_table(const std::vector<EstimateRow> &rows,

@@ -139,46 +139,37 @@ namespace Contact
       const double d_coarse =
         field ? difference(m.run.displacement, c.run.displacement) :
                 value(m) - value(c);
-      // The order measured, never another quantity's (none where the
-      // differences change sign); where the runs give no estimate, the
-      // order is taken as the least plausible one below.
-      RichardsonEstimate estimate =
+      const RichardsonEstimate estimate =
         richardson_estimate({d_fine, d_coarse}, !field);
-      estimate.order = !field && d_fine * d_coarse < 0 ?
-                         std::numeric_limits<double>::quiet_NaN() :
-                         estimate.measured_orders[0];
-      if (!std::isfinite(estimate.error))
-        estimate.error = std::abs(d_fine);
-      DirectionFit fit{estimate.error, estimate.order, ""};
+      // The order measured, never another quantity's (none where the
+      // differences change sign).
+      const double order = !field && d_fine * d_coarse < 0 ?
+                             std::numeric_limits<double>::quiet_NaN() :
+                             estimate.measured_orders[0];
+      // No error seen in this direction: it limits nothing, and has no
+      // order.
       if (d_fine == 0 && d_coarse == 0)
-        {
-          // No error seen in this direction: it limits nothing (the order
-          // is then irrelevant).
-          fit.order = std::numeric_limits<double>::quiet_NaN();
-          fit.note  = "the same on the three pilots";
-        }
-      else if (!(estimate.order >= min_plausible_order))
-        {
-          // An order below what the scheme shows in the asymptotic range
-          // (or none) is never raised: it would make the predicted error
-          // fall faster than measured. This direction predicts nothing.
-          fit.error = std::numeric_limits<double>::quiet_NaN();
-          fit.note  = (std::isnan(estimate.order) ?
-                         estimate.reason :
-                         "measured order " + number_text(estimate.order) +
-                          ", below " + number_text(min_plausible_order)) +
-                     ": the pilots are not in the asymptotic range, no "
-                     "prediction";
-        }
-      else if (estimate.order > max_order)
-        {
-          fit.order = max_order;
-          fit.error = std::abs(d_fine) / (std::pow(2., fit.order) - 1);
-          fit.note  = "measured order " + number_text(estimate.order) +
-                     " taken as " + number_text(fit.order) +
-                     " (the scheme gives at most that)";
-        }
-      return fit;
+        return {0.,
+                std::numeric_limits<double>::quiet_NaN(),
+                "the same on the three pilots"};
+      // An order below what the scheme shows in the asymptotic range (or
+      // none) is never raised: it would make the predicted error fall
+      // faster than measured. This direction predicts nothing.
+      if (!(order >= min_plausible_order))
+        return {std::numeric_limits<double>::quiet_NaN(),
+                order,
+                (std::isnan(order) ?
+                   estimate.reason :
+                   "measured order " + number_text(order) + ", below " +
+                     number_text(min_plausible_order)) +
+                  ": the pilots are not in the asymptotic range, no "
+                  "prediction"};
+      if (order > max_order)
+        return {std::abs(d_fine) / (std::pow(2., max_order) - 1),
+                max_order,
+                "measured order " + number_text(order) + " taken as " +
+                  number_text(max_order) + " (the scheme gives at most that)"};
+      return {estimate.error, order, ""};
     }
 
     // What a degree's pilots say: the space part of the V-norm and of the

@@ -25,17 +25,17 @@ using namespace Contact;
 int main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::vector<std::pair<int, int>> cases = {{16, 16},
-                                                  {16, 32},
-                                                  {32, 16},
-                                                  {8, 32}};
+  const std::vector<std::pair<int, int>>   cases = {{16, 16},
+                                                    {16, 32},
+                                                    {32, 16},
+                                                    {8, 32}};
   for (const unsigned int degree : {1u, 2u})
     for (const auto &[h, k] : cases)
       for (const bool separate : {false, true})
         {
-          const std::string name = "Q" + std::to_string(degree) +
-                                   ", h = 1/" + std::to_string(h) +
-                                   ", k = 1/" + std::to_string(k) +
+          const std::string name = "Q" + std::to_string(degree) + ", h = 1/" +
+                                   std::to_string(h) + ", k = 1/" +
+                                   std::to_string(k) +
                                    (separate ? ", separated" : ", one order");
           const Parameters parameters = read_parameters(
             CONTACT_PRM_DIR "/manufactured_slip_front.prm",
