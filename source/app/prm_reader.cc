@@ -247,7 +247,11 @@ namespace Contact
             line.erase(0, 3);
           const std::string statement =
             Utilities::trim(line.substr(0, line.find('#')));
-          const std::string keyword = statement.substr(0, statement.find(' '));
+          // A keyword ends at any white space: ParameterHandler reads
+          // "include<TAB>file" as an include too, but relative to the
+          // working directory and past the cycle check.
+          const std::string keyword =
+            statement.substr(0, statement.find_first_of(" \t\v\f\r"));
           if (keyword == "subsection")
             ++depth;
           else if (keyword == "end" && depth > 0)
