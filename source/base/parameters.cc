@@ -284,6 +284,17 @@ namespace Contact
                 refinement_radius,
                 "0 with 'Cell shape = simplex' (local refinement of "
                 "simplices is not available)");
+    AssertThrow(!simplices || refinement_points.empty(),
+                ExcMessage("Entry 'Geometry/Refinement points': allowed is "
+                           "none with 'Cell shape = simplex' (local "
+                           "refinement of simplices is not available)."));
+    // Points with R = 0 would grade nothing without a word.
+    check_entry(refinement_points.empty() || refinement_radius > 0.,
+                "Geometry/Refinement radius",
+                refinement_radius,
+                "a radius > 0 where 'Geometry/Refinement points' gives "
+                "points (0 switches the grading off: remove the points to "
+                "run without it)");
   }
 
 

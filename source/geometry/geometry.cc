@@ -4,7 +4,11 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <deal.II/fe/mapping_q1.h>
+
 #include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/physics/transformations.h>
 
 #include <base/dimensions.h>
 #include <geometry/box.h>
@@ -84,6 +88,73 @@ namespace Contact
           flagged = Utilities::MPI::logical_or(flagged, communicator);
           if (flagged)
             mesh.execute_coarsening_and_refinement();
+        }
+    }
+
+
+    // @sect4{check_points_in_body}
+
+    // A refinement point outside the body grades nothing near it, or cells
+    // far from where the user meant: each must lie in the body. The cells of
+    // a box or a mesh file have straight sides, so the mesh (each process
+    // searches its own cells) decides; a shell's cells only approximate its
+    // circles, so its radii decide (in the shell's own coordinates, before
+    // the rotation; to 1e-6 of the outer radius).
+    template <int dim>
+    void check_points_in_body(const GeometryParameters &geometry,
+                              const MPI_Comm            communicator,
+                              const Triangulation<dim> &mesh)
+    {
+      const double angle = geometry.rotation_angle * numbers::PI / 180.;
+      Tensor<2, dim> unrotate = unit_symmetric_tensor<dim>();
+      if constexpr (dim == 2)
+        unrotate = Physics::Transformations::Rotations::rotation_matrix_2d(
+          -angle);
+      else if (angle != 0.)
+        {
+          const Point<3> axis(geometry.rotation_axis[0],
+                              geometry.rotation_axis[1],
+                              geometry.rotation_axis[2]);
+          unrotate = Physics::Transformations::Rotations::rotation_matrix_3d(
+            axis / axis.norm(), -angle);
+        }
+      for (const auto &coordinates : geometry.refinement_points)
+        {
+          Point<dim> point;
+          for (unsigned int d = 0; d < dim; ++d)
+            point[d] = coordinates[d];
+          bool inside = false;
+          if (geometry.domain == GeometryParameters::Domain::shell &&
+              geometry.mesh_file.empty())
+            {
+              const Point<dim> p     = Point<dim>(unrotate * point);
+              const double     slack = 1e-6 * geometry.outer_radius;
+              const double     r     = std::hypot(p[0], p[1]);
+              inside = r >= geometry.inner_radius - slack &&
+                       r <= geometry.outer_radius + slack &&
+                       (dim == 2 || (p[dim - 1] >= -slack &&
+                                     p[dim - 1] <= geometry.shell_length + slack));
+            }
+          else
+            {
+              try
+                {
+                  inside = !GridTools::find_all_active_cells_around_point(
+                              MappingQ1<dim>(), mesh, point, 1e-10)
+                              .empty();
+                }
+              catch (const ExceptionBase &)
+                {}
+              inside = Utilities::MPI::logical_or(inside, communicator);
+            }
+          std::ostringstream text;
+          text << point;
+          AssertThrow(inside,
+                      ExcMessage("Entry '" + Entry::refinement_points +
+                                 "': the point " + text.str() +
+                                 " is not in the body; allowed are points "
+                                 "of the body (its corners and boundary "
+                                 "included)."));
         }
     }
 
@@ -196,6 +267,7 @@ namespace Contact
     mesh.refine_global(n_refinements);
     if (!geometry.refinement_points.empty() && geometry.refinement_radius != 0.)
       {
+        check_points_in_body(geometry, communicator, mesh);
         grade_towards_points(geometry, communicator, mesh);
         check_grading_misses_contact(parameters.boundary, communicator, mesh);
       }
