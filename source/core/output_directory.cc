@@ -17,6 +17,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <vector>
 
 namespace Contact
 {
@@ -109,6 +110,54 @@ namespace Contact
     {
       alternatives += (alternatives.empty() ? "" : "|") + pattern;
     }
+
+    // The locks this process holds, by the canonical path of their
+    // directory.
+    std::map<std::string, std::weak_ptr<const int>> &held_locks()
+    {
+      static std::map<std::string, std::weak_ptr<const int>> held;
+      return held;
+    }
+
+    std::string canonical_key(const std::filesystem::path &directory)
+    {
+      std::error_code error;
+      return std::filesystem::weakly_canonical(
+               std::filesystem::absolute(directory), error)
+        .string();
+    }
+
+    // The first directory in or below `directory` whose lock another
+    // process holds, with that process's pid; empty if there is none.
+    std::pair<std::string, std::string>
+    locked_by_another_run(const std::filesystem::path &directory)
+    {
+      std::error_code error;
+      for (auto entry =
+             std::filesystem::recursive_directory_iterator(directory, error);
+           !error && entry != std::filesystem::recursive_directory_iterator();
+           entry.increment(error))
+        {
+          if (entry->path().filename() != ".lock")
+            continue;
+          const std::filesystem::path owner = entry->path().parent_path();
+          if (held_locks()[canonical_key(owner)].lock())
+            continue;
+          const int fd = open(entry->path().c_str(), O_RDONLY);
+          if (fd < 0)
+            continue;
+          const bool free = flock(fd, LOCK_EX | LOCK_NB) == 0;
+          close(fd);
+          if (!free && errno == EWOULDBLOCK)
+            {
+              std::ifstream holder(entry->path());
+              std::string   pid;
+              std::getline(holder, pid);
+              return {owner.string(), pid.empty() ? "unknown" : pid};
+            }
+        }
+      return {};
+    }
   } // namespace
 
 
@@ -119,8 +168,8 @@ namespace Contact
   std::shared_ptr<const int> lock_output_directory(const std::string &directory,
                                                    const MPI_Comm communicator)
   {
-    static std::map<std::string, std::weak_ptr<const int>> held;
-    std::shared_ptr<const int>                             lock;
+    auto                      &held = held_locks();
+    std::shared_ptr<const int> lock;
     std::string                                            failure;
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
@@ -128,9 +177,7 @@ namespace Contact
         std::error_code error;
         const bool      created = !std::filesystem::exists(directory, error);
         std::filesystem::create_directories(directory, error);
-        const std::string key = std::filesystem::weakly_canonical(
-                                  std::filesystem::absolute(directory), error)
-                                  .string();
+        const std::string key = canonical_key(directory);
         lock = held[key].lock();
         if (!lock)
           {
@@ -152,7 +199,8 @@ namespace Contact
       return;
     const std::regex files(registry().files),
       directories(registry().directories), pilots(registry().pilots);
-    std::error_code error;
+    std::error_code                    error;
+    std::vector<std::filesystem::path> removed;
     for (const auto &entry :
          std::filesystem::directory_iterator(directory, error))
       {
@@ -162,11 +210,26 @@ namespace Contact
           std::filesystem::exists(entry.path() / "parameters.prm") &&
           (std::regex_match(name, directories) ||
            (!keep_pilots && std::regex_match(name, pilots)));
-        if (entry.is_regular_file() && std::regex_match(name, files))
-          std::filesystem::remove(entry.path(), error);
-        else if (run_directory)
-          std::filesystem::remove_all(entry.path(), error);
+        if ((entry.is_regular_file() && std::regex_match(name, files)) ||
+            run_directory)
+          removed.push_back(entry.path());
+        // A run still writing into one of them keeps it, and this run
+        // stops before it has removed anything.
+        if (run_directory)
+          {
+            const auto [owner, pid] = locked_by_another_run(entry.path());
+            AssertThrow(owner.empty(),
+                        ExcMessage(
+                          "The output directory '" + directory +
+                          "' holds '" + owner +
+                          "', which another run is using (process " + pid +
+                          "): a fresh run here would remove its results. "
+                          "Wait for it to end, or give this run another '" +
+                          Entry::output_directory + "'."));
+          }
       }
+    for (const std::filesystem::path &path : removed)
+      std::filesystem::remove_all(path, error);
     std::filesystem::remove_all(directory + "/.partial", error);
   }
 

@@ -13,7 +13,8 @@
    - a write that fails (a full disk, here a file size limit) names the
      file and the system's error;
    - a second run in a directory that a running one uses is refused,
-     naming the first run's process;
+     naming the first run's process, and so is a fresh run into a
+     directory around it (which would remove its results);
    - a run refused in its setup (a probe point outside the body) leaves
      no directory behind where there was none. */
 
@@ -101,6 +102,42 @@ void report(const std::string &what, const std::pair<int, std::string> &result)
             << std::endl;
   if (result.first != 0 && text != std::string::npos)
     std::cout << "  " << result.second.substr(text) << std::endl;
+}
+
+// Starts a long run (h = k = 1/128) into `directory` in the background and
+// returns once it holds the directory's lock and has written its
+// parameters.
+pid_t start_long_run(const std::string &directory)
+{
+  const pid_t pid = fork();
+  if (pid == 0)
+    {
+      execl("/bin/sh",
+            "sh",
+            "-c",
+            (std::string("exec ") + CONTACT_BINARY +
+             " --set 'Output/Output directory=" + directory +
+             "' --set 'Output/VTU interval=0' " + scene + " > /dev/null 2>&1")
+              .c_str(),
+            nullptr);
+      _exit(127);
+    }
+  while (!fs::exists(directory + "/.lock") ||
+         fs::file_size(directory + "/.lock") == 0 ||
+         !fs::exists(directory + "/parameters.prm"))
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  return pid;
+}
+
+// The run's result with the pid of `first` replaced by a name.
+std::pair<int, std::string> without_pid(std::pair<int, std::string> result,
+                                        const pid_t                 first)
+{
+  const std::string pid = std::to_string(first);
+  const auto        at  = result.second.find(pid);
+  if (at != std::string::npos)
+    result.second.replace(at, pid.size(), "<pid of the first run>");
+  return result;
 }
 
 void copy(const std::string &from, const std::string &to)
@@ -213,29 +250,22 @@ int main()
   // Two runs in one directory at once: the first one runs long enough
   // (h = k = 1/128) for the second to start while it holds the lock.
   fs::remove_all("common_output");
-  const pid_t first = fork();
-  if (first == 0)
-    {
-      execl("/bin/sh",
-            "sh",
-            "-c",
-            (std::string("exec ") + CONTACT_BINARY +
-             " --set 'Output/Output directory=common_output' --set "
-             "'Output/VTU interval=0' " +
-             scene + " > /dev/null 2>&1")
-              .c_str(),
-            nullptr);
-      _exit(127);
-    }
-  while (!fs::exists("common_output/.lock") ||
-         fs::file_size("common_output/.lock") == 0)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  auto              second = run("common_output", {});
-  const std::string pid    = std::to_string(first);
-  const auto        at     = second.second.find(pid);
-  if (at != std::string::npos)
-    second.second.replace(at, pid.size(), "<pid of the first run>");
-  report("second run in the directory of a running one", second);
+  pid_t first = start_long_run("common_output");
+  report("second run in the directory of a running one",
+         without_pid(run("common_output", {}), first));
+  kill(first, SIGKILL);
+  waitpid(first, nullptr, 0);
+
+  // A run in a directory of the kind a fresh run removes ('level-2', as a
+  // convergence study writes), and a fresh run into the directory around
+  // it: refused before it removes anything.
+  fs::remove_all("around");
+  first = start_long_run("around/level-2");
+  report("fresh run around the directory of a running one",
+         without_pid(run("around", {}), first));
+  std::cout << "  the running one's parameters.prm kept: "
+            << (fs::exists("around/level-2/parameters.prm") ? "yes" : "no")
+            << std::endl;
   kill(first, SIGKILL);
   waitpid(first, nullptr, 0);
 }
