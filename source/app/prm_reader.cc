@@ -230,16 +230,18 @@ namespace Contact
     // outside subsections) is read relative to it. The text between
     // includes goes to ParameterHandler with the lines before it blanked,
     // so that its error messages keep the line numbers of the file.
-    void parse_parameter_file(ParameterHandler                  &prm,
-                              const std::string                 &file,
-                              std::vector<std::filesystem::path> chain = {})
+    // Returns the number of 'set' statements, its includes' counted.
+    unsigned int
+    parse_parameter_file(ParameterHandler                  &prm,
+                         const std::string                 &file,
+                         std::vector<std::filesystem::path> chain = {})
     {
       enter_chain(file, chain);
       std::ifstream in(file);
       AssertThrow(in,
                   ExcMessage("Cannot open the parameter file '" + file + "'."));
       std::string  chunk, blank_lines;
-      unsigned int depth = 0, line_number = 0;
+      unsigned int depth = 0, line_number = 0, n_sets = 0;
       for (std::string line; std::getline(in, line);)
         {
           // A UTF-8 byte order mark, as some editors write it, is no text.
@@ -252,6 +254,8 @@ namespace Contact
           // working directory and past the cycle check.
           const std::string keyword =
             statement.substr(0, statement.find_first_of(" \t\v\f\r"));
+          if (keyword == "set" || keyword == "SET")
+            ++n_sets;
           if (keyword == "subsection")
             ++depth;
           else if (keyword == "end" && depth > 0)
@@ -267,9 +271,10 @@ namespace Contact
                                  "': 'include' is allowed "
                                  "only outside of subsections."));
           parse_text(prm, chunk, file);
-          parse_parameter_file(prm,
-                               included_file(statement, file, line_number),
-                               chain);
+          n_sets +=
+            parse_parameter_file(prm,
+                                 included_file(statement, file, line_number),
+                                 chain);
           blank_lines += '\n';
           chunk = blank_lines;
         }
@@ -279,6 +284,7 @@ namespace Contact
                              std::to_string(line_number) + ": " +
                              std::strerror(errno) + "."));
       parse_text(prm, chunk, file);
+      return n_sets;
     }
 
 
@@ -312,9 +318,17 @@ namespace Contact
              const std::string                                      &file,
              const std::vector<std::pair<std::string, std::string>> &overrides)
   {
-    // (No file: the defaults, e.g. for --print-parameters.)
+    // (No file: the defaults, e.g. for --print-parameters.) A file that
+    // sets nothing would run the default scene into its output directory,
+    // replacing what is there: a file emptied by mistake, not a scene.
     if (!file.empty())
-      parse_parameter_file(prm, file);
+      AssertThrow(parse_parameter_file(prm, file) > 0,
+                  ExcMessage("The parameter file '" + file +
+                             "' sets no entry (it is empty or holds only "
+                             "comments and subsections). Give a scene: for "
+                             "the paper's example 'prm/barboteu2015.prm'; "
+                             "'contact --print-parameters' lists every "
+                             "entry with its default."));
     for (const auto &[path, value] : overrides)
       apply_override(prm, path, value);
     Parameters parameters;

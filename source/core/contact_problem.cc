@@ -10,6 +10,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <base/dimensions.h>
+#include <base/scene_variant.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
@@ -21,6 +22,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <map>
+#include <sstream>
+#include <vector>
 
 namespace Contact
 {
@@ -131,6 +135,54 @@ namespace Contact
   }
 
 
+  namespace
+  {
+    // @sect4{say_what_is_replaced}
+
+    // The results of an earlier run of other parameters that a fresh run
+    // replaces, with the first entries that differ.
+    void say_what_is_replaced(const Parameters &parameters, std::ostream &out)
+    {
+      const std::string earlier_file =
+        parameters.output.directory + "/parameters.prm";
+      std::ifstream earlier_text(earlier_file);
+      if (!earlier_text)
+        return;
+      std::ostringstream text;
+      text << earlier_text.rdbuf();
+      const auto earlier = read_printed_entries(text.str());
+      const auto now     = read_printed_entries(parameters.used_parameters);
+      std::map<std::string, std::string> all(earlier);
+      all.insert(now.begin(), now.end());
+      std::vector<std::string> differing;
+      for (const auto &[entry, unused] : all)
+        if (earlier.count(entry) == 0 || now.count(entry) == 0 ||
+            earlier.at(entry) != now.at(entry))
+          differing.push_back(entry);
+      // (A run again of the same parameters replaces nothing new.)
+      if (differing.empty())
+        return;
+      out << "Replacing the results of an earlier run in '"
+          << parameters.output.directory << "'";
+      constexpr unsigned int shown = 4;
+      for (unsigned int i = 0; i < std::min<std::size_t>(shown, differing.size());
+           ++i)
+        {
+          const std::string &entry = differing[i];
+          const auto         value = [&](const auto &entries) {
+            return entries.count(entry) ? "'" + entries.at(entry) + "'" :
+                                                  std::string("(not set)");
+          };
+          out << (i == 0 ? ", whose parameters differ: " : "; ") << entry
+                << " was " << value(earlier) << ", now " << value(now);
+        }
+      if (differing.size() > shown)
+        out << "; and " << differing.size() - shown << " more entries";
+      out << "." << std::endl;
+    }
+  } // namespace
+
+
   // @sect4{ContactProblem::prepare_output_directory}
 
   // A fresh run first removes the results an earlier run left in the
@@ -146,8 +198,11 @@ namespace Contact
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
     if (!parameters.output.resume)
-      // The run that a target chose keeps the pilots it was chosen by.
-      remove_results(directory, parameters.keeps_pilots, mpi_communicator);
+      {
+        say_what_is_replaced(parameters, std::cout);
+        // The run that a target chose keeps the pilots it was chosen by.
+        remove_results(directory, parameters.keeps_pilots, mpi_communicator);
+      }
     // Output that is written in pieces (VTU) is written here first and
     // renamed into the directory when complete.
     std::error_code error;

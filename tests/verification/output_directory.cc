@@ -8,8 +8,9 @@
      time_series.csv was deleted (a new one starts with its header);
    - a checkpoint of one process resumed on two says so;
    - a fresh run in a directory holding another run's results (VTU files of
-     more steps, a checkpoint) removes them: its PVD lists only its own
-     files, and a later --resume finds no checkpoint of the earlier run;
+     more steps, a checkpoint) says which entries differ and removes them:
+     its PVD lists only its own files, and a later --resume finds no
+     checkpoint of the earlier run;
    - a write that fails (a full disk, here a file size limit) names the
      file and the system's error;
    - a second run in a directory that a running one uses is refused,
@@ -213,6 +214,14 @@ int main()
     std::ofstream("reused/" + name) << "a user's file\n";
   report("fresh run of 4 steps in a directory of a 12-step run",
          run("reused", {"Time/End time=0.25", "Output/VTU interval=2"}));
+  // It says what it replaces.
+  const std::size_t replacing = whole_output.find("Replacing");
+  std::cout << "  "
+            << (replacing == std::string::npos ?
+                  "(says nothing of the earlier run)\n" :
+                  whole_output.substr(replacing,
+                                      whole_output.find('\n', replacing) + 1 -
+                                        replacing));
   unsigned int vtu = 0;
   for (const auto &entry : fs::directory_iterator("reused"))
     vtu += (entry.path().extension() == ".pvtu");
