@@ -342,12 +342,17 @@ namespace Contact
       return out.str();
     }
 
-    std::string
-    fit_text(const std::string &what, const DirectionFit &fit, const double at)
+    // `unit`: of the error, with its leading space; `at_unit`: of h or k.
+    std::string fit_text(const std::string  &what,
+                         const DirectionFit &fit,
+                         const double        at,
+                         const std::string  &unit,
+                         const std::string  &at_unit)
     {
       std::ostringstream out;
-      out << std::setprecision(3) << what << " " << fit.error << " at " << at
-          << ", order " << fit.order;
+      out << std::setprecision(3) << what << " " << fit.error
+          << (std::isfinite(fit.error) ? unit : std::string()) << " at " << at
+          << " " << at_unit << ", order " << fit.order;
       if (!fit.note.empty())
         out << " (" << fit.note << ")";
       return out.str();
@@ -498,6 +503,15 @@ namespace Contact
     }
 
 
+    // " m" after an error of the target quantity; nothing for a share.
+    std::string unit_of_target(const Parameters &parameters)
+    {
+      const std::string unit =
+        parameters.accuracy.target_quantity.unit(parameters.dimension);
+      return unit == "1" ? std::string() : " " + unit;
+    }
+
+
     // @sect3{The choice}
 
     // Per degree the cheapest candidate, with a line on what its pilots
@@ -513,6 +527,7 @@ namespace Contact
       const bool   timings = parameters.output.print_timings;
       const double K = parameters.time.end_time / parameters.time.n_steps();
       const double allowed = target_safety * target;
+      const std::string        unit    = unit_of_target(parameters);
       std::optional<Candidate> chosen;
       for (const DegreeModel &model : results.models)
         {
@@ -534,16 +549,19 @@ namespace Contact
           out << "Degree " << model.degree << ": "
               << fit_text("space error E_h",
                           model.space,
-                          results.pilots.front().run.summary.cell_size);
+                          results.pilots.front().run.summary.cell_size,
+                          unit,
+                          "m");
           if (measured && timings)
             out << "; cost " << model.a << " s + " << model.b
                 << " s * unknowns * steps";
           if (best)
             {
-              out << "; cheapest run predicted within " << allowed << ": h = H/"
-                  << (1u << best->halvings) << ", k = T/" << best->n_steps
-                  << ", about " << best->n_dofs << " unknowns, predicted error "
-                  << best->predicted_error;
+              out << "; cheapest run predicted within " << allowed << unit
+                  << ": h = H/" << (1u << best->halvings) << ", k = T/"
+                  << best->n_steps << ", about " << best->n_dofs
+                  << " unknowns, predicted error " << best->predicted_error
+                  << unit;
               if (!measured)
                 out << ", " << best->predicted_cost << " unknowns * steps";
               else if (timings)
@@ -551,7 +569,7 @@ namespace Contact
             }
           else
             out << "; no run up to h = H/" << (1u << max_halvings)
-                << " is predicted within " << allowed;
+                << " is predicted within " << allowed << unit;
           out << std::endl;
           if (best &&
               (!chosen || best->predicted_cost < chosen->predicted_cost))
@@ -570,19 +588,20 @@ namespace Contact
       const auto       &accuracy = parameters.accuracy;
       const std::string quantity = accuracy.target_quantity.name();
       const double K = parameters.time.end_time / parameters.time.n_steps();
+      const std::string  unit = unit_of_target(parameters);
       std::ostringstream out;
       out << std::setprecision(3) << "Target error: " << quantity << " within "
-          << target;
+          << target << unit;
       if ((accuracy.target_error_type ==
            AccuracyParameters::TargetErrorType::relative))
         out << " (" << accuracy.target_error << " times its size "
-            << results.size << ")";
+            << results.size << unit << ")";
       out << "; pilots on H = " << results.pilots.front().run.summary.cell_size
           << ", K = " << K << ":" << std::endl
           << pilot_table(results.pilots,
                          quantity,
                          parameters.output.print_timings)
-          << "Time error: " << fit_text("E_k", results.time, K);
+          << "Time error: " << fit_text("E_k", results.time, K, unit, "s");
       if (results.cosine < 1)
         out << "; space and time errors combine as |e_h + e_k|^2 = E_h^2 + "
             << "E_k^2 + 2 c E_h E_k with c = " << results.cosine;
@@ -600,15 +619,16 @@ namespace Contact
       for (const EstimateRow &row : result.rows)
         if (row.name == quantity)
           estimated = row.estimate.error;
-      const RunSummary  &run = result.summary;
+      const RunSummary  &run  = result.summary;
+      const std::string  unit = unit_of_target(parameters);
       std::ostringstream out;
-      out << std::setprecision(3) << "Target error " << target << " for "
-          << quantity << ": chosen degree " << chosen.degree
-          << ", h = " << run.cell_size << ", k = " << run.time_step << " ("
-          << run.n_dofs << " unknowns, " << run.n_steps
-          << " steps); predicted error " << chosen.predicted_error
-          << ", estimated error " << estimated << " (error_estimate.txt)"
-          << std::endl;
+      out << std::setprecision(3) << "Target error " << target << unit
+          << " for " << quantity << ": chosen degree " << chosen.degree
+          << ", h = " << run.cell_size << " m, k = " << run.time_step
+          << " s (" << run.n_dofs << " unknowns, " << run.n_steps
+          << " steps); predicted error " << chosen.predicted_error << unit
+          << ", estimated error " << estimated << unit
+          << " (error_estimate.txt)" << std::endl;
       if (std::isnan(estimated))
         out << "Warning: the runs of the chosen run's estimate give no "
             << "estimate of " << quantity << " (error_estimate.txt says "
@@ -741,7 +761,7 @@ namespace Contact
                 << "Target error: the chosen run, degree " << chosen->degree
                 << ", h = H/" << (1u << chosen->halvings) << ", k = T/"
                 << chosen->n_steps << ", predicted error "
-                << chosen->predicted_error;
+                << chosen->predicted_error << unit_of_target(parameters);
     if (measured && parameters.output.print_timings)
       choice_line << ", predicted wall time " << chosen->predicted_cost << " s";
     choice_line << ", with its error estimate" << std::endl;
