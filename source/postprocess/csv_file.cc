@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 
 namespace Contact
 {
@@ -53,24 +54,66 @@ namespace Contact
   }
 
 
-  // The killed run may have written rows after its last checkpoint; the
-  // resumed run recomputes those steps, so the file keeps the rows up to
-  // the checkpoint's step. It is rewritten atomically.
+  namespace
+  {
+    // The step a row starts with, if its first field is one.
+    std::optional<unsigned int> step_of(const std::string &row)
+    {
+      const std::string field = row.substr(0, row.find(','));
+      if (field.empty() || field.size() > 9 ||
+          field.find_first_not_of("0123456789") != std::string::npos)
+        return std::nullopt;
+      return std::stoul(field);
+    }
+  } // namespace
+
+
+  // The killed run may have written rows after its last checkpoint (the
+  // last one perhaps cut short); the resumed run recomputes those steps,
+  // so the file keeps the rows up to the checkpoint's step. Those rows
+  // must all be there, one step after the other (a step may have several
+  // rows): a damaged file is refused, naming its line, before anything is
+  // rewritten. It is rewritten atomically.
   void CsvFile::cut_back(const unsigned int step) const
   {
-    std::ifstream in(name);
-    std::ofstream out(name + ".tmp");
-    std::string   line;
-    if (std::getline(in, line))
-      out << line << '\n';
-    while (std::getline(in, line) && in.good() && !line.empty())
+    std::ifstream               in(name);
+    std::string                 kept, line;
+    std::optional<unsigned int> previous;
+    unsigned int                line_number = 1;
+    const auto                  damaged     = [&](const std::string &what) {
+      return ExcMessage("'" + name + "', line " + std::to_string(line_number) +
+                        ", " + what + ": resuming would lose the rows after "
+                        "it. Restore the file, or delete it: the resumed "
+                        "run then starts a new one at the checkpoint's step.");
+    };
+    AssertThrow(std::getline(in, line), damaged("the header, is missing"));
+    kept = line + '\n';
+    while (std::getline(in, line))
       {
-        const unsigned int row_step =
-          std::stoul(line.substr(0, line.find(',')));
-        if (row_step > step)
+        ++line_number;
+        const std::optional<unsigned int> row_step = step_of(line);
+        // Past the checkpoint's rows anything may follow.
+        if (previous == step && row_step != step)
           break;
-        out << line << '\n';
+        AssertThrow(row_step,
+                    damaged(line.empty() ? "is blank" :
+                                           "does not start with a step"));
+        AssertThrow(!previous || (*row_step >= *previous &&
+                                  *row_step <= *previous + 1),
+                    damaged("has step " + std::to_string(*row_step) +
+                            " after step " + std::to_string(*previous)));
+        // (A file begun after the checkpoint, by an earlier resume.)
+        if (*row_step > step)
+          break;
+        kept += line + '\n';
+        previous = row_step;
       }
+    AssertThrow(!previous || *previous == step,
+                damaged("ends at step " + std::to_string(*previous) +
+                        ", before the checkpoint's step " +
+                        std::to_string(step)));
+    std::ofstream out(name + ".tmp");
+    out << kept;
     out.flush();
     AssertThrow(out,
                 ExcMessage("Cannot write '" + name +

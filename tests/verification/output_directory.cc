@@ -5,7 +5,9 @@
    - a checkpoint of another problem (other Young's modulus, other friction
      bound S) with the same mesh and time step is refused, naming the
      entries that differ; a longer End time is accepted, also where
-     time_series.csv was deleted (a new one starts with its header);
+     time_series.csv was deleted (a new one starts with its header), and
+     a time series damaged before the checkpoint's step is refused, naming
+     the line;
    - a checkpoint of one process resumed on two says so;
    - a fresh run in a directory holding another run's results (VTU files of
      more steps, a checkpoint) says which entries differ and removes them:
@@ -194,6 +196,36 @@ int main()
   std::cout << "  time_series.csv: header "
             << (header.rfind("step,time", 0) == 0 ? "yes" : "no") << ", rows "
             << rows << " (steps 13 to 16)" << std::endl;
+  // A time series damaged before the checkpoint's step (its line 4, the
+  // row of step 2, blank or without its step): refused, naming the line,
+  // before the file is touched.
+  for (const auto &[what, damage] :
+       std::vector<std::pair<std::string, std::string>>{
+         {"a blank line", ""}, {"a row without its step", "x,0"}})
+    {
+      copy("original", "damaged");
+      std::vector<std::string> lines;
+      {
+        std::ifstream in("damaged/time_series.csv");
+        for (std::string line; std::getline(in, line);)
+          lines.push_back(line);
+      }
+      lines[3] = damage;
+      {
+        std::ofstream out("damaged/time_series.csv");
+        for (const std::string &line : lines)
+          out << line << '\n';
+      }
+      const auto size = fs::file_size("damaged/time_series.csv");
+      report("resume with " + what + " in time_series.csv",
+             run("damaged", {"Output/Resume=true", "Time/End time=1"}));
+      std::cout << "  time_series.csv unchanged: "
+                << (fs::file_size("damaged/time_series.csv") == size ? "yes" :
+                                                                        "no")
+                << ", time_series.csv.tmp left: "
+                << (fs::exists("damaged/time_series.csv.tmp") ? "yes" : "no")
+                << std::endl;
+    }
   // (Both processes report; their lines may interleave, so only the
   // point of the message is printed.)
   copy("original", "two");
