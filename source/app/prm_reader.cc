@@ -198,7 +198,7 @@ namespace Contact
     }
 
     // Parses the text of `file` between two includes. A relative
-    // 'Geometry/Mesh file' that it sets is made relative to `file`, as an
+    // 'Geometry/Mesh file' that it sets is taken relative to `file`, as an
     // include is.
     void parse_text(ParameterHandler  &prm,
                     const std::string &text,
@@ -218,8 +218,11 @@ namespace Contact
       if (!mesh.empty() && mesh.string() != mesh_before && mesh.is_relative())
         {
           prm.enter_subsection("Geometry");
+          // Absolute, so that the parameters.prm a run writes into its
+          // output directory finds the mesh when it is run again.
           prm.set("Mesh file",
-                  (std::filesystem::path(file).parent_path() / mesh)
+                  std::filesystem::absolute(
+                    std::filesystem::path(file).parent_path() / mesh)
                     .lexically_normal()
                     .string());
           prm.leave_subsection();

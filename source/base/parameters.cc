@@ -1335,11 +1335,21 @@ namespace Contact
                            "resumed; allowed is Resume = false there."));
     check_error_estimate();
 
+    // The parameters a run writes run it again from its start: a resumed
+    // run computes what the run without the break computes
+    // (verification/kill_and_resume), and its checkpoint may be gone.
+    const auto set_resume = [&](const bool resume) {
+      prm.enter_subsection("Output");
+      prm.set("Resume", resume);
+      prm.leave_subsection();
+    };
+    set_resume(false);
     std::ostringstream text;
     prm.print_parameters(text,
                          ParameterHandler::ShortPRM |
                            ParameterHandler::KeepDeclarationOrder);
     used_parameters = text.str();
+    set_resume(output.resume);
   }
 
 

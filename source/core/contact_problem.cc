@@ -165,7 +165,8 @@ namespace Contact
       out << "Replacing the results of an earlier run in '"
           << parameters.output.directory << "'";
       constexpr unsigned int shown = 4;
-      for (unsigned int i = 0; i < std::min<std::size_t>(shown, differing.size());
+      for (unsigned int i = 0;
+           i < std::min<std::size_t>(shown, differing.size());
            ++i)
         {
           const std::string &entry = differing[i];
@@ -174,7 +175,7 @@ namespace Contact
                                                   std::string("(not set)");
           };
           out << (i == 0 ? ", whose parameters differ: " : "; ") << entry
-                << " was " << value(earlier) << ", now " << value(now);
+              << " was " << value(earlier) << ", now " << value(now);
         }
       if (differing.size() > shown)
         out << "; and " << differing.size() - shown << " more entries";

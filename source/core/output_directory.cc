@@ -170,7 +170,7 @@ namespace Contact
   {
     auto                      &held = held_locks();
     std::shared_ptr<const int> lock;
-    std::string                                            failure;
+    std::string                failure;
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         // The key of a directory that exists: 'out/' and 'out' alike.
@@ -178,7 +178,7 @@ namespace Contact
         const bool      created = !std::filesystem::exists(directory, error);
         std::filesystem::create_directories(directory, error);
         const std::string key = canonical_key(directory);
-        lock = held[key].lock();
+        lock                  = held[key].lock();
         if (!lock)
           {
             failure   = flock_output_directory(directory, created, lock);
@@ -220,9 +220,9 @@ namespace Contact
             const auto [owner, pid] = locked_by_another_run(entry.path());
             AssertThrow(owner.empty(),
                         ExcMessage(
-                          "The output directory '" + directory +
-                          "' holds '" + owner +
-                          "', which another run is using (process " + pid +
+                          "The output directory '" + directory + "' holds '" +
+                          owner + "', which another run is using (process " +
+                          pid +
                           "): a fresh run here would remove its results. "
                           "Wait for it to end, or give this run another '" +
                           Entry::output_directory + "'."));

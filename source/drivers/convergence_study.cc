@@ -316,6 +316,17 @@ namespace Contact
     const auto lock =
       lock_output_directory(scene.output.directory, MPI_COMM_WORLD);
     remove_results(scene.output.directory, false, MPI_COMM_WORLD);
+    // The study's parameters run it again (each level's run is in its
+    // directory's).
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      {
+        std::ofstream file(scene.output.directory + "/parameters.prm");
+        file << scene.used_parameters;
+        file.flush();
+        AssertThrow(file,
+                    ExcMessage("Cannot write '" + scene.output.directory +
+                               "/parameters.prm'."));
+      }
 
     std::unique_ptr<ContactProblem<dim>> reference;
     const std::vector<LevelResult>  results = run_levels(levels, reference);

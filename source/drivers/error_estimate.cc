@@ -295,8 +295,8 @@ namespace Contact
           estimate.reason = "one measured order, " +
                             orders_text(estimate.measured_orders) +
                             ", which no run with 8h checks";
-          estimate.error  = std::numeric_limits<double>::quiet_NaN();
-          estimate.order  = std::numeric_limits<double>::quiet_NaN();
+          estimate.error = std::numeric_limits<double>::quiet_NaN();
+          estimate.order = std::numeric_limits<double>::quiet_NaN();
         }
       if (!known || !estimate.status.empty())
         return estimate;
@@ -419,14 +419,14 @@ namespace Contact
                   << "): " << std::flush;
       const std::string log_file =
         base.output.directory + "/" + name + "/console.log";
-      RunAtTimes run = run_onto(coarse,
-                                &interpolate,
-                                // Only the sequence's runs keep histories.
-                                space_factor == time_factor &&
-                                    time_factor <= history_factor ?
-                                  history_factor / time_factor :
-                                  0,
-                                log_file);
+      RunAtTimes run =
+        run_onto(coarse,
+                 &interpolate,
+                 // Only the sequence's runs keep histories.
+                 space_factor == time_factor && time_factor <= history_factor ?
+                   history_factor / time_factor :
+                   0,
+                 log_file);
       if (root)
         std::cout << sub_run_line(run.summary, log_file) << std::endl;
       return run;
@@ -567,9 +567,9 @@ namespace Contact
               const double exact_error = worst.exact_error;
               worst                    = at_T;
               worst.name               = worst_V_error;
-              worst.time               = sequence[0].summary.n_steps *
-                           sequence[0].summary.time_step;
-              worst.exact_error        = exact_error;
+              worst.time =
+                sequence[0].summary.n_steps * sequence[0].summary.time_step;
+              worst.exact_error = exact_error;
               if (!worst.estimate.reason.empty())
                 worst.estimate.reason = "at T: " + worst.estimate.reason;
             }
@@ -748,7 +748,7 @@ namespace Contact
       for (const EstimateRow &row : rows)
         if (std::isfinite(row.time))
           {
-            has_worst_row = true;
+            has_worst_row              = true;
             const unsigned int n_steps = parameters.time.n_steps();
             const unsigned int factor  = n_steps % coarsest == 0 ? coarsest : 4;
             out << row.name << ": the largest over the times of the run "
@@ -762,8 +762,7 @@ namespace Contact
                   << coarsest << "h, which shares the times of the others "
                   << "only for T/k a multiple of " << coarsest << " (here "
                   << n_steps << " steps): the estimate rests on one measured "
-                  << "order at the other times."
-                  << std::endl;
+                  << "order at the other times." << std::endl;
           }
       if (has_worst_row && separate && parameters.geometry.fe_degree >= 2)
         out << "Note: " << worst_V_error << ": from the sequence's one order "
@@ -836,10 +835,10 @@ namespace Contact
     // coarsest run with a history: that of all runs where N = T/k is a
     // multiple of `coarsest`, else that of the run with 4h and 4k where N
     // is a multiple of 4.
-    const unsigned int n_steps        = parameters.time.n_steps();
-    const unsigned int history_factor = n_steps % coarsest == 0 ? coarsest :
-                                        n_steps % 4 == 0        ? 4 :
-                                                                  0;
+    const unsigned int  n_steps        = parameters.time.n_steps();
+    const unsigned int  history_factor = n_steps % coarsest == 0 ? coarsest :
+                                         n_steps % 4 == 0        ? 4 :
+                                                                   0;
     ContactProblem<dim> fine(parameters);
     EstimateRuns        runs;
     runs.sequence.push_back(run_onto<dim>(fine, nullptr, history_factor));

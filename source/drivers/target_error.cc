@@ -526,8 +526,8 @@ namespace Contact
                             AccuracyParameters::CostModel::measured;
       const bool   timings = parameters.output.print_timings;
       const double K = parameters.time.end_time / parameters.time.n_steps();
-      const double allowed = target_safety * target;
-      const std::string        unit    = unit_of_target(parameters);
+      const double allowed          = target_safety * target;
+      const std::string        unit = unit_of_target(parameters);
       std::optional<Candidate> chosen;
       for (const DegreeModel &model : results.models)
         {
@@ -624,8 +624,8 @@ namespace Contact
       std::ostringstream out;
       out << std::setprecision(3) << "Target error " << target << unit
           << " for " << quantity << ": chosen degree " << chosen.degree
-          << ", h = " << run.cell_size << " m, k = " << run.time_step
-          << " s (" << run.n_dofs << " unknowns, " << run.n_steps
+          << ", h = " << run.cell_size << " m, k = " << run.time_step << " s ("
+          << run.n_dofs << " unknowns, " << run.n_steps
           << " steps); predicted error " << chosen.predicted_error << unit
           << ", estimated error " << estimated << unit
           << " (error_estimate.txt)" << std::endl;

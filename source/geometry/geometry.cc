@@ -105,11 +105,11 @@ namespace Contact
                               const MPI_Comm            communicator,
                               const Triangulation<dim> &mesh)
     {
-      const double angle = geometry.rotation_angle * numbers::PI / 180.;
+      const double   angle    = geometry.rotation_angle * numbers::PI / 180.;
       Tensor<2, dim> unrotate = unit_symmetric_tensor<dim>();
       if constexpr (dim == 2)
-        unrotate = Physics::Transformations::Rotations::rotation_matrix_2d(
-          -angle);
+        unrotate =
+          Physics::Transformations::Rotations::rotation_matrix_2d(-angle);
       else if (angle != 0.)
         {
           const Point<3> axis(geometry.rotation_axis[0],
@@ -130,10 +130,11 @@ namespace Contact
               const Point<dim> p     = Point<dim>(unrotate * point);
               const double     slack = 1e-6 * geometry.outer_radius;
               const double     r     = std::hypot(p[0], p[1]);
-              inside = r >= geometry.inner_radius - slack &&
-                       r <= geometry.outer_radius + slack &&
-                       (dim == 2 || (p[dim - 1] >= -slack &&
-                                     p[dim - 1] <= geometry.shell_length + slack));
+              inside =
+                r >= geometry.inner_radius - slack &&
+                r <= geometry.outer_radius + slack &&
+                (dim == 2 || (p[dim - 1] >= -slack &&
+                              p[dim - 1] <= geometry.shell_length + slack));
             }
           else
             {

@@ -82,9 +82,10 @@ namespace Contact
     unsigned int                line_number = 1;
     const auto                  damaged     = [&](const std::string &what) {
       return ExcMessage("'" + name + "', line " + std::to_string(line_number) +
-                        ", " + what + ": resuming would lose the rows after "
-                        "it. Restore the file, or delete it: the resumed "
-                        "run then starts a new one at the checkpoint's step.");
+                        ", " + what +
+                        ": resuming would lose the rows after "
+                                             "it. Restore the file, or delete it: the resumed "
+                                             "run then starts a new one at the checkpoint's step.");
     };
     AssertThrow(std::getline(in, line), damaged("the header, is missing"));
     kept = line + '\n';
@@ -98,8 +99,8 @@ namespace Contact
         AssertThrow(row_step,
                     damaged(line.empty() ? "is blank" :
                                            "does not start with a step"));
-        AssertThrow(!previous || (*row_step >= *previous &&
-                                  *row_step <= *previous + 1),
+        AssertThrow(!previous ||
+                      (*row_step >= *previous && *row_step <= *previous + 1),
                     damaged("has step " + std::to_string(*row_step) +
                             " after step " + std::to_string(*previous)));
         // (A file begun after the checkpoint, by an earlier resume.)

@@ -221,7 +221,7 @@ int main()
              run("damaged", {"Output/Resume=true", "Time/End time=1"}));
       std::cout << "  time_series.csv unchanged: "
                 << (fs::file_size("damaged/time_series.csv") == size ? "yes" :
-                                                                        "no")
+                                                                       "no")
                 << ", time_series.csv.tmp left: "
                 << (fs::exists("damaged/time_series.csv.tmp") ? "yes" : "no")
                 << std::endl;
