@@ -8,6 +8,7 @@
 #include <base/dimensions.h>
 #include <app/prm_reader.h>
 #include <app/run.h>
+#include <base/version.h>
 #include <core/contact_problem.h>
 #include <drivers/convergence_study.h>
 #include <drivers/error_estimate.h>
@@ -27,6 +28,7 @@ namespace Contact
       "scene.prm\n"
       "       contact --print-parameters [scene.prm]\n"
       "       contact --help\n"
+      "       contact --version\n"
       "  --resume continues from the checkpoint in the output directory\n"
       "  --set overrides an entry of the .prm file, e.g.\n"
       "  --set 'Friction/Friction bound S=2.5'\n"
@@ -37,6 +39,7 @@ namespace Contact
     {
       bool                                             print_parameters = false;
       bool                                             help             = false;
+      bool                                             version          = false;
       std::string                                      parameter_file;
       std::vector<std::pair<std::string, std::string>> overrides;
     };
@@ -51,6 +54,8 @@ namespace Contact
             command_line.print_parameters = true;
           else if (argument == "--help" || argument == "-h")
             command_line.help = true;
+          else if (argument == "--version")
+            command_line.version = true;
           else if (argument == "--resume")
             command_line.overrides.emplace_back(Entry::resume, "true");
           else if (argument == "--set" && i + 1 < argc)
@@ -84,7 +89,8 @@ namespace Contact
               command_line.parameter_file = argument;
             }
         }
-      AssertThrow(command_line.help || command_line.print_parameters ||
+      AssertThrow(command_line.help || command_line.version ||
+                    command_line.print_parameters ||
                     !command_line.parameter_file.empty(),
                   ExcMessage(std::string("No parameter file given.\n") +
                              usage));
@@ -114,6 +120,11 @@ namespace Contact
     if (command_line.help)
       {
         std::cout << usage << std::endl;
+        return;
+      }
+    if (command_line.version)
+      {
+        std::cout << version_text() << std::endl;
         return;
       }
     ParameterHandler prm;

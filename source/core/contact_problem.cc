@@ -11,6 +11,7 @@
 
 #include <base/dimensions.h>
 #include <base/scene_variant.h>
+#include <base/version.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
@@ -212,7 +213,7 @@ namespace Contact
                 ExcMessage("Cannot create '" + directory +
                            "/.partial': " + error.message()));
     std::ofstream used(directory + "/parameters.prm");
-    used << parameters.used_parameters;
+    used << parameter_file_header() << parameters.used_parameters;
     used.flush();
     AssertThrow(used,
                 ExcMessage("Cannot write '" + directory +

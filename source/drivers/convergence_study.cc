@@ -20,6 +20,7 @@
 
 #include <base/dimensions.h>
 #include <base/scene_variant.h>
+#include <base/version.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
@@ -321,7 +322,7 @@ namespace Contact
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
         std::ofstream file(scene.output.directory + "/parameters.prm");
-        file << scene.used_parameters;
+        file << parameter_file_header() << scene.used_parameters;
         file.flush();
         AssertThrow(file,
                     ExcMessage("Cannot write '" + scene.output.directory +

@@ -1,10 +1,11 @@
 /* The command line of `contact` where no scene runs: --help prints the
-   usage; --print-parameters with a scene prints the scene's values, not
-   the defaults; a directory or a file that cannot be read as the scene is
-   an error naming it, not a run of the default scene; an output directory
-   with a line break is refused; doc/parameters.prm, the documented list of
-   every entry, is what --print-parameters prints (regenerate it with
-   `cmake --build build --target parameters_doc`). */
+   usage; --version the version, commit and deal.II version; --print-parameters
+   with a scene prints the scene's values, not the defaults; a directory or a
+   file that cannot be read as the scene is an error naming it, not a run of the
+   default scene; an output directory with a line break is refused;
+   doc/parameters.prm, the documented list of every entry, is what
+   --print-parameters prints (regenerate it with `cmake --build build --target
+   parameters_doc`). */
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -13,6 +14,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -102,6 +104,19 @@ int main(int argc, char *argv[])
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   run({"--help"});
+  // The version, the commit where the build knew it, deal.II's version
+  // (which change from build to build, so only their form is printed).
+  const std::string version = output_of({"--version"});
+  std::cout << "contact --version\n  names the version, the commit and "
+            << "deal.II's version: "
+            << (std::regex_match(version,
+                                 std::regex(
+                                   "contact [0-9]+\\.[0-9]+\\.[0-9]+ "
+                                   "\\(commit ([0-9a-f]+\\+?|unknown), "
+                                   "deal\\.II [0-9.]+\\)\n")) ?
+                  "yes" :
+                  "no: " + version)
+            << std::endl;
 
   std::ofstream("scene.prm") << "subsection Time\n"
                              << "  set End time = 0.5\n"

@@ -10,7 +10,9 @@
      without its wall times);
    - a run resumed from its checkpoint with a later End time (run again, it
      must compute the whole run, not resume, and give the same
-     time_series.csv). */
+     time_series.csv).
+   Each parameters.prm begins with a comment that names the program's
+   version and the date it was written. */
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -160,6 +162,9 @@ int main(int argc, char **argv)
       resumed = reproduces(paper, sets, "run-resumed", "time_series.csv");
     }
   std::cout.rdbuf(console);
+  std::ifstream written("run-estimate/parameters.prm");
+  std::string   first_line;
+  std::getline(written, first_line);
 
   std::cout << "a scene with a relative mesh file, run again from its "
             << "parameters.prm, gives the same time_series.csv: " << mesh_file
@@ -169,5 +174,12 @@ int main(int argc, char **argv)
             << "a convergence study, run again, gives the same table: " << study
             << std::endl
             << "a resumed run, run again, computes the whole run with the "
-            << "same time_series.csv: " << resumed << std::endl;
+            << "same time_series.csv: " << resumed << std::endl
+            << "parameters.prm begins with the program's version and the "
+            << "date: "
+            << (first_line.rfind("# Written by contact ", 0) == 0 &&
+                    first_line.find(" UTC. ") != std::string::npos ?
+                  "yes" :
+                  "no: " + first_line)
+            << std::endl;
 }

@@ -1,0 +1,19 @@
+# Writes contact_version.h with the commit of the source tree where it is a
+# git checkout ("unknown" elsewhere, e.g. an unpacked archive), and "+" for
+# uncommitted changes. Run at every build (CMakeLists.txt, target
+# contact_version); configure_file rewrites the header only when its text
+# changes, so an unchanged commit recompiles nothing.
+set(COMMIT "unknown")
+find_package(Git QUIET)
+if(GIT_FOUND AND EXISTS "${SOURCE_DIR}/.git")
+  execute_process(COMMAND ${GIT_EXECUTABLE} -C ${SOURCE_DIR}
+    describe --always --abbrev=12 --dirty=+
+    OUTPUT_VARIABLE COMMIT OUTPUT_STRIP_TRAILING_WHITESPACE
+    RESULT_VARIABLE GIT_RESULT ERROR_QUIET)
+  if(NOT GIT_RESULT EQUAL 0)
+    set(COMMIT "unknown")
+  endif()
+endif()
+file(WRITE ${OUTPUT}.in
+  "#define CONTACT_VERSION \"@VERSION@\"\n#define CONTACT_COMMIT \"@COMMIT@\"\n")
+configure_file(${OUTPUT}.in ${OUTPUT} @ONLY)
