@@ -31,6 +31,7 @@
 #include <core/postprocessor.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -129,6 +130,64 @@ namespace Contact
            << " process(es), k = " << std::setprecision(17) << time_step
            << (manufactured ? ", manufactured solution" : "");
       return text.str();
+    }
+
+    // The mesh's vertices, summed with weights over the locally owned
+    // cells (a moved vertex of a mesh file changes it; the same mesh on
+    // the same processes gives the same sum), to 12 digits.
+    template <int dim>
+    std::string mesh_fingerprint(const DoFHandler<dim> &dof_handler,
+                                 const MPI_Comm         communicator)
+    {
+      double sum = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int d = 0; d < dim; ++d)
+              sum += (1 + d + 0.1 * v) * cell->vertex(v)[d];
+      std::ostringstream text;
+      text << ", mesh vertex sum " << std::setprecision(12)
+           << Utilities::MPI::sum(sum, communicator);
+      return text.str();
+    }
+
+    // The refusal of a checkpoint whose shape differs from the run's; where
+    // only k differs, what changed it: k is T/N, so a new End time that is
+    // not a multiple of the checkpoint's k shortens the steps.
+    std::string another_problem(const std::string &name,
+                                const std::string &stored_shape,
+                                const std::string &problem_shape,
+                                const double       end_time,
+                                const double       time_step)
+    {
+      const auto without_k = [](const std::string &text) {
+        const std::size_t k = text.find(", k = ");
+        return k == std::string::npos ?
+                 text :
+                 text.substr(0, k) +
+                   text.substr(std::min(text.find(',', k + 6), text.size()));
+      };
+      const std::size_t k = stored_shape.find(", k = ");
+      if (without_k(stored_shape) == without_k(problem_shape) &&
+          k != std::string::npos)
+        {
+          const double stored_k = std::stod(stored_shape.substr(k + 6));
+          const double below    = std::floor(end_time / stored_k) * stored_k,
+                       above    = below + stored_k;
+          return "The checkpoint '" + name +
+                 "' has the time step k = " + number_text(stored_k) +
+                 ", this run k = T/N = " + number_text(time_step) + ": '" +
+                 Entry::end_time + "' = " + number_text(end_time) +
+                 " is not a multiple of the checkpoint's k, and the steps "
+                 "are shortened to end there. Resume with an End time that "
+                 "is, e.g. " +
+                 number_text(below) + " or " + number_text(above) + ".";
+        }
+      return "The checkpoint '" + name +
+             "' belongs to another discrete problem (" + stored_shape +
+             ") than this .prm gives (" + problem_shape +
+             "): resume with the scene, mesh, time step and number of "
+             "processes of the checkpointed run.";
     }
 
     // One file per process.
@@ -260,7 +319,8 @@ namespace Contact
               friction_solver->boundary().nodes.size(),
               time_step,
               exact_solution != nullptr,
-              mpi_communicator);
+              mpi_communicator) +
+        mesh_fingerprint(space.dof_handler, mpi_communicator);
       std::map<std::string, std::string> entries =
         problem_entries(parameters.used_parameters);
       FrictionState friction_state = friction_solver->state();
@@ -303,20 +363,21 @@ namespace Contact
     std::string                        stored_shape;
     std::map<std::string, std::string> stored_entries;
     archive &stored_shape             &stored_entries;
-    const std::string                  problem_shape =
-      shape(space.dof_handler,
-            friction_solver->boundary().nodes.size(),
-            time_step,
-            exact_solution != nullptr,
-            mpi_communicator);
+    // (A checkpoint written before the mesh was part of the shape has
+    // none to compare.)
+    std::string problem_shape = shape(space.dof_handler,
+                                      friction_solver->boundary().nodes.size(),
+                                      time_step,
+                                      exact_solution != nullptr,
+                                      mpi_communicator);
+    if (stored_shape.find(", mesh vertex sum ") != std::string::npos)
+      problem_shape += mesh_fingerprint(space.dof_handler, mpi_communicator);
     AssertThrow(stored_shape == problem_shape,
-                ExcMessage("The checkpoint '" + name +
-                           "' belongs to another "
-                           "discrete problem (" +
-                           stored_shape + ") than this .prm gives (" +
-                           problem_shape +
-                           "): resume with the scene, mesh, time step and "
-                           "number of processes of the checkpointed run."));
+                ExcMessage(another_problem(name,
+                                           stored_shape,
+                                           problem_shape,
+                                           parameters.time.end_time,
+                                           time_step)));
     const std::string differences =
       differing_entries(stored_entries,
                         problem_entries(parameters.used_parameters));

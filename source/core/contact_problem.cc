@@ -237,7 +237,7 @@ namespace Contact
         AssertThrow(std::isfinite(state.velocity.linfty_norm()) &&
                       std::isfinite(state.energy.residual()),
                     ExcMessage("Step " + std::to_string(state.step_number) +
-                               " (t = " + std::to_string(state.time) +
+                               " (t = " + number_text(state.time) +
                                ") produced a velocity or energy that is not "
                                "a finite number; the results up to step " +
                                std::to_string(state.step_number - 1) +

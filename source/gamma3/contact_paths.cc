@@ -386,7 +386,7 @@ namespace Contact
                     ExcMessage(
                       "The Delassus operator C K^{-1} C^T is not "
                       "symmetric beyond round-off (largest deviation " +
-                      std::to_string(asymmetry / largest) +
+                      number_text(asymmetry / largest) +
                       " of its largest entry): the solves with K are "
                       "not accurate enough for the Delassus path; "
                       "choose '" +

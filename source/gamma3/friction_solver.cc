@@ -524,7 +524,7 @@ namespace Contact
             "The active set method for the Tresca problem did not converge "
             "in step " +
             std::to_string(label.step_number) +
-            " (t = " + std::to_string(label.time) +
+            " (t = " + number_text(label.time) +
             ", convexification iteration " + std::to_string(iterations) +
             ") within " + std::to_string(solver.max_active_set_iterations) +
             " iterations ('" + Entry::max_active_set_iterations +

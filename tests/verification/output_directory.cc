@@ -46,7 +46,8 @@ std::string whole_output;
 // exit status and its last line of output (the error, if it failed).
 std::pair<int, std::string> run(const std::string              &directory,
                                 const std::vector<std::string> &sets,
-                                const std::string              &launcher = "")
+                                const std::string              &launcher = "",
+                                const std::string &scene_file = scene)
 {
   std::string command = launcher + CONTACT_BINARY;
   for (const std::string &set :
@@ -58,7 +59,7 @@ std::pair<int, std::string> run(const std::string              &directory,
     command += " --set \"" + set + "\"";
   for (const std::string &set : sets)
     command += " --set \"" + set + "\"";
-  command += " " + scene + " 2>&1";
+  command += " " + scene_file + " 2>&1";
   whole_output.clear();
   FILE                  *pipe = popen(command.c_str(), "r");
   std::string            last, error;
@@ -181,6 +182,8 @@ int main()
               "Time/End time=0.75",
               "Material/Young's modulus=3000",
               "Friction/Friction bound S=50"}));
+  report("End time 1.1, not a multiple of the checkpoint's k",
+         run("other", {"Output/Resume=true", "Time/End time=1.1"}));
   report("longer End time (16 steps of the same k)",
          run("other", {"Output/Resume=true", "Time/End time=1"}));
   copy("original", "no_series");
@@ -196,6 +199,46 @@ int main()
   std::cout << "  time_series.csv: header "
             << (header.rfind("step,time", 0) == 0 ? "yes" : "no") << ", rows "
             << rows << " (steps 13 to 16)" << std::endl;
+  // A mesh file whose vertex moved after the checkpoint was written: the
+  // same numbers of cells and unknowns, another problem.
+  fs::create_directories("moved");
+  for (const std::string name : {"barboteu2015.prm",
+                                 "inclined_foundation.prm",
+                                 "inclined_foundation.msh"})
+    fs::copy_file(std::string(CONTACT_PRM_DIR) + "/" + name,
+                  "moved/" + name,
+                  fs::copy_options::overwrite_existing);
+  const std::vector<std::string> mesh_file_run = {
+    "Geometry/Mesh refinements=1",
+    "Time/Time step=0.1375",
+    "Output/Checkpoint interval=4",
+    "Time/End time=0.55"};
+  run("moved/run", mesh_file_run, "", "moved/inclined_foundation.prm");
+  {
+    // Node 81, inside the body, moved by 0.01 in x.
+    std::ifstream            in("moved/inclined_foundation.msh");
+    std::vector<std::string> lines;
+    bool                     nodes = false;
+    for (std::string line; std::getline(in, line);)
+      {
+        nodes = (nodes || line == "$Nodes") && line != "$EndNodes";
+        lines.push_back(nodes && line.rfind("81 ", 0) == 0 ?
+                          "81 0.3225000000004771 0.3906250000006179 0" :
+                          line);
+      }
+    std::ofstream out("moved/inclined_foundation.msh");
+    for (const std::string &line : lines)
+      out << line << '\n';
+  }
+  report("resume after a vertex of the mesh file moved",
+         run("moved/run",
+             {"Geometry/Mesh refinements=1",
+              "Time/Time step=0.1375",
+              "Output/Resume=true",
+              "Time/End time=1.1"},
+             "",
+             "moved/inclined_foundation.prm"));
+
   // A time series damaged before the checkpoint's step (its line 4, the
   // row of step 2, blank or without its step): refused, naming the line,
   // before the file is touched.
