@@ -1277,6 +1277,22 @@ namespace Contact
                 ExcMessage(
                   "Entry '" + Entry::target_quantity + "' = '" + target +
                   "' is not a quantity of this scene; allowed: " + list + "."));
+    // Found out before the pilots run: a closed Gamma_3 has no start of
+    // its slip zone, and its x has no scale of its own.
+    if (accuracy.target_quantity.kind != Quantity::Kind::slip_zone_start)
+      return;
+    AssertThrow(geometry.domain != GeometryParameters::Domain::shell,
+                ExcMessage("Entry '" + Entry::target_quantity + "' = '" +
+                           target +
+                           "' is not defined on a shell (its Gamma_3 is a "
+                           "closed circle); allowed there are the others of " +
+                           list + "."));
+    AssertThrow(accuracy.target_error_type ==
+                  AccuracyParameters::TargetErrorType::absolute,
+                ExcMessage("Entry '" + Entry::target_error_type +
+                           "': a relative target on '" + target +
+                           "' would depend on where x = 0 is; allowed for "
+                           "it is absolute (a length in m)."));
   }
 
   void Parameters::parse_parameters(ParameterHandler &prm)

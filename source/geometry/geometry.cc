@@ -8,7 +8,6 @@
 
 #include <deal.II/grid/grid_tools.h>
 
-#include <deal.II/physics/transformations.h>
 
 #include <base/dimensions.h>
 #include <geometry/box.h>
@@ -98,26 +97,13 @@ namespace Contact
     // far from where the user meant: each must lie in the body. The cells of
     // a box or a mesh file have straight sides, so the mesh (each process
     // searches its own cells) decides; a shell's cells only approximate its
-    // circles, so its radii decide (in the shell's own coordinates, before
-    // the rotation; to 1e-6 of the outer radius).
+    // circles, so its radii decide (to 1e-6 of the outer radius; a shell
+    // is not rotated).
     template <int dim>
     void check_points_in_body(const GeometryParameters &geometry,
                               const MPI_Comm            communicator,
                               const Triangulation<dim> &mesh)
     {
-      const double   angle    = geometry.rotation_angle * numbers::PI / 180.;
-      Tensor<2, dim> unrotate = unit_symmetric_tensor<dim>();
-      if constexpr (dim == 2)
-        unrotate =
-          Physics::Transformations::Rotations::rotation_matrix_2d(-angle);
-      else if (angle != 0.)
-        {
-          const Point<3> axis(geometry.rotation_axis[0],
-                              geometry.rotation_axis[1],
-                              geometry.rotation_axis[2]);
-          unrotate = Physics::Transformations::Rotations::rotation_matrix_3d(
-            axis / axis.norm(), -angle);
-        }
       for (const auto &coordinates : geometry.refinement_points)
         {
           Point<dim> point;
@@ -127,9 +113,9 @@ namespace Contact
           if (geometry.domain == GeometryParameters::Domain::shell &&
               geometry.mesh_file.empty())
             {
-              const Point<dim> p     = Point<dim>(unrotate * point);
-              const double     slack = 1e-6 * geometry.outer_radius;
-              const double     r     = std::hypot(p[0], p[1]);
+              const Point<dim> &p     = point;
+              const double      slack = 1e-6 * geometry.outer_radius;
+              const double      r     = std::hypot(p[0], p[1]);
               inside =
                 r >= geometry.inner_radius - slack &&
                 r <= geometry.outer_radius + slack &&

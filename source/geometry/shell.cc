@@ -71,6 +71,31 @@ namespace Contact
                   Entry::shell_length,
                   geometry.shell_length,
                   "a length > 0" + with_shell + " in 3D");
+      // Cells far thinner than wide make K singular to working precision:
+      // on prm/bushing_3d.prm a width 4000 times the length along z passes
+      // the self-checks, 39 000 times fails them.
+      const double max_aspect_ratio = 1e4;
+      const double cell_width =
+        2 * numbers::PI * geometry.inner_radius / geometry.cells_around;
+      const std::string thinnest = number_text(cell_width / max_aspect_ratio);
+      const std::string why =
+        " (1e-4 of a coarse cell's width 2 pi r / 'Cells around' = " +
+        number_text(cell_width) +
+        "; thinner cells make the stiffness matrix singular to working "
+        "precision)";
+      check_entry(geometry.outer_radius - geometry.inner_radius >=
+                    cell_width / max_aspect_ratio,
+                  Entry::outer_radius,
+                  geometry.outer_radius,
+                  "a radius at least " + thinnest +
+                    " above the Inner radius (here " +
+                    number_text(geometry.outer_radius - geometry.inner_radius) +
+                    " above)" + why);
+      check_entry(dim == 2 ||
+                    geometry.shell_length >= cell_width / max_aspect_ratio,
+                  Entry::shell_length,
+                  geometry.shell_length,
+                  "a length of at least " + thinnest + why);
       check_entry(geometry.rotation_angle == 0,
                   Entry::rotation_angle,
                   geometry.rotation_angle,
