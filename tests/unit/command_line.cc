@@ -136,6 +136,18 @@ int main(int argc, char *argv[])
   // A line break in the output directory (possible with --set only).
   run({"--set", "Output/Output directory=first\nsecond", "scene.prm"});
 
+  // More report times than can be meant, and one that is not a number
+  // (deal.II's list pattern took a time quadratic in their number).
+  {
+    std::ofstream many("many_report_times.prm");
+    many << "subsection Output\n  set Report times = 1";
+    for (unsigned int i = 0; i < 10000; ++i)
+      many << ", 1";
+    many << "\nend\n";
+  }
+  run({"many_report_times.prm"});
+  run({"--set", "Output/Report times=0.3, abc", "scene.prm"});
+
   run({"."});
   run({"/proc/self/mem"});
   run({"no_such_scene.prm"});
