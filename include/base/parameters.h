@@ -112,6 +112,8 @@ namespace Contact
     inline const std::string manufactured_solution =
       "Verification/Manufactured solution";
     inline const std::string levels         = "Convergence study/Levels";
+    inline const std::string reference_degree =
+      "Convergence study/Reference degree";
     inline const std::string estimate_error = "Accuracy/Estimate error";
     inline const std::string separate_space_and_time =
       "Accuracy/Separate space and time";
@@ -175,6 +177,7 @@ namespace Contact
               resume,
               manufactured_solution,
               levels,
+              reference_degree,
               estimate_error,
               separate_space_and_time,
               target_error,

@@ -309,7 +309,28 @@ namespace Contact
     // steps' or the number of VTU files).
     std::vector<Parameters> levels;
     for (unsigned int level = 0; level <= L; ++level)
-      levels.push_back(parameters_of(scene, level_variant(scene, level)));
+      try
+        {
+          levels.push_back(parameters_of(scene, level_variant(scene, level)));
+        }
+      catch (const ExceptionBase &error)
+        {
+          // The reference's degree is the study's entry, not the scene's.
+          std::ostringstream text;
+          error.print_info(text);
+          const bool reference =
+            level == L && scene.convergence_study.reference_degree > 0 &&
+            !scene.verification.manufactured();
+          AssertThrow(!reference,
+                      ExcMessage("Entry '" + Entry::reference_degree +
+                                 "' = " +
+                                 std::to_string(
+                                   scene.convergence_study.reference_degree) +
+                                 ": the reference level cannot run with "
+                                 "this degree, for this reason: " +
+                                 Utilities::trim(text.str())));
+          throw;
+        }
     // The study owns its directory while it runs (a plain run there would
     // clean away its levels), and starts it afresh: a study with fewer
     // levels than the last one leaves none of that one's levels or table
