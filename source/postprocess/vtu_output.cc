@@ -133,6 +133,7 @@ namespace Contact
     void        write_vtu_piece(Pending &output, const std::string &file) const;
     void        finish_vtu();
     void        write_pvd() const;
+    void        drop_missing_records();
 
     std::vector<std::pair<double, std::string>> pvd_records;
     ReportTimes                                 report_times;
@@ -168,7 +169,10 @@ namespace Contact
   void VtuOutput<dim>::start(const bool resumed)
   {
     if (resumed)
-      write_pvd();
+      {
+        drop_missing_records();
+        write_pvd();
+      }
     else if (this->parameters().output.template entry<unsigned int>(
                interval_entry) > 0)
       write_vtu();
@@ -456,6 +460,33 @@ namespace Contact
                             directory + "/" + record);
     pvd_records.emplace_back(output->time, record);
     write_pvd();
+  }
+
+
+  // @sect4{VtuOutput::drop_missing_records}
+
+  // A resumed run lists in its PVD only the records whose files are still
+  // there (a user may have deleted some to save space), and says which
+  // it dropped.
+  template <int dim>
+  void VtuOutput<dim>::drop_missing_records()
+  {
+    const std::string       &directory = this->parameters().output.directory;
+    std::vector<std::string> missing;
+    std::vector<std::pair<double, std::string>> kept;
+    for (const auto &record : pvd_records)
+      if (std::filesystem::exists(directory + "/" + record.second))
+        kept.push_back(record);
+      else
+        missing.push_back(record.second);
+    if (missing.empty())
+      return;
+    this->pcout() << "Warning: " << missing.size()
+                  << " VTU record(s) of solution.pvd are gone from '"
+                  << directory << "' (the first: " << missing.front()
+                  << "); the resumed run's solution.pvd lists the others."
+                  << std::endl;
+    pvd_records = kept;
   }
 
 

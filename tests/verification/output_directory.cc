@@ -199,6 +199,34 @@ int main()
   std::cout << "  time_series.csv: header "
             << (header.rfind("step,time", 0) == 0 ? "yes" : "no") << ", rows "
             << rows << " (steps 13 to 16)" << std::endl;
+  // VTU files of a step before the checkpoint deleted (to save space):
+  // the resumed run's PVD lists only the records whose files are there,
+  // and the run says which it dropped.
+  copy("original", "no_vtu");
+  fs::remove("no_vtu/solution_00006.pvtu");
+  fs::remove("no_vtu/solution_00006.0.vtu");
+  report("resume after the VTU files of step 6 were deleted",
+         run("no_vtu", {"Output/Resume=true", "Time/End time=1"}));
+  {
+    std::ifstream     pvd("no_vtu/solution.pvd");
+    std::string       records((std::istreambuf_iterator<char>(pvd)),
+                        std::istreambuf_iterator<char>());
+    const std::size_t warning = whole_output.find("Warning: ");
+    std::cout << "  PVD lists step 6: "
+              << (records.find("solution_00006") != std::string::npos ? "yes" :
+                                                                        "no")
+              << ", step 12: "
+              << (records.find("solution_00012") != std::string::npos ? "yes" :
+                                                                        "no")
+              << std::endl
+              << "  "
+              << (warning == std::string::npos ?
+                    "(no warning)\n" :
+                    whole_output.substr(warning,
+                                        whole_output.find('\n', warning) + 1 -
+                                          warning));
+  }
+
   // A mesh file whose vertex moved after the checkpoint was written: the
   // same numbers of cells and unknowns, another problem.
   fs::create_directories("moved");
