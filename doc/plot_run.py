@@ -48,14 +48,19 @@ import sys
 import xml.etree.ElementTree as ElementTree
 import zlib
 
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-from matplotlib.collections import PolyCollection  # noqa: E402
-from matplotlib.colors import LinearSegmentedColormap  # noqa: E402
-from mpl_toolkits.mplot3d import proj3d  # noqa: E402
-from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+try:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+    from matplotlib.collections import PolyCollection
+    from matplotlib.colors import LinearSegmentedColormap
+    from mpl_toolkits.mplot3d import proj3d
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+except ImportError as missing:
+    sys.exit(f"plot_run.py needs numpy and matplotlib ({missing}). "
+             "Debian: apt-get install python3-numpy python3-matplotlib; "
+             "elsewhere: pip install numpy matplotlib")
 
 STICK, SLIP = 1, 2
 STATE_COLOURS = {STICK: "tab:blue", SLIP: "tab:red"}
@@ -143,19 +148,31 @@ def read_vtu(path):
     return points, cells, cell_type, arrays
 
 
+def damaged(path, error):
+    """Ends the script naming a file it cannot read."""
+    sys.exit(f"plot_run.py: cannot read {path}: {error} (a run killed "
+             "while writing it, or a damaged copy?)")
+
+
 def read_snapshot(directory, record):
     """All pieces of one output step (a .pvtu or .vtu file), merged: the
     points, the cells, their VTK type and the point arrays."""
     path = os.path.join(directory, record)
+    pieces = [path]
     if path.endswith(".pvtu"):
-        root = ElementTree.parse(path).getroot()
+        try:
+            root = ElementTree.parse(path).getroot()
+        except (OSError, ElementTree.ParseError) as error:
+            damaged(path, error)
         pieces = [os.path.join(os.path.dirname(path), p.get("Source"))
                   for p in root.iter("Piece")]
-    else:
-        pieces = [path]
     all_points, all_cells, all_arrays, offset = [], [], {}, 0
     for piece in pieces:
-        points, cells, cell_type, arrays = read_vtu(piece)
+        try:
+            points, cells, cell_type, arrays = read_vtu(piece)
+        except (OSError, ElementTree.ParseError, ValueError, KeyError,
+                AttributeError, TypeError, zlib.error) as error:
+            damaged(piece, error)
         all_points.append(points)
         all_cells.append(cells + offset)
         offset += len(points)
@@ -170,7 +187,10 @@ def read_pvd(directory):
     path = os.path.join(directory, "solution.pvd")
     if not os.path.exists(path):
         return []
-    root = ElementTree.parse(path).getroot()
+    try:
+        root = ElementTree.parse(path).getroot()
+    except ElementTree.ParseError as error:
+        damaged(path, error)
     return [(float(d.get("timestep")), d.get("file"))
             for d in root.iter("DataSet")]
 
@@ -178,12 +198,27 @@ def read_pvd(directory):
 # @sect3{Reading the CSV files and the parameters}
 
 def read_csv(path):
-    """A CSV file with a header line as a dict of numpy columns."""
+    """A CSV file with a header line as a dict of numpy columns. A last row
+    cut short (a run killed while writing it) is left out with a note; any
+    other row that is not numbers ends the script naming its line."""
     with open(path) as file:
-        names = file.readline().strip().split(",")
-        empty = not file.readline().strip()
-    values = (np.zeros((0, len(names))) if empty else
-              np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2))
+        lines = file.read().split("\n")
+    names = lines[0].strip().split(",")
+    rows = [line for line in lines[1:] if line.strip()]
+    if rows and lines[-1].strip():
+        print(f"note: {path}: its last row is cut short (a run killed while "
+              "writing it?); it is left out")
+        rows = rows[:-1]
+    values = np.zeros((len(rows), len(names)))
+    for number, row in enumerate(rows):
+        fields = row.split(",")
+        try:
+            if len(fields) != len(names):
+                raise ValueError(f"{len(fields)} fields, the header has "
+                                 f"{len(names)}")
+            values[number] = [float(f) for f in fields]
+        except ValueError as error:
+            damaged(path, f"line {number + 2}: {error}")
     return {name: values[:, i] for i, name in enumerate(names)}
 
 
@@ -206,13 +241,36 @@ def read_org_table(path):
     return {name: [row[i] for row in body] for i, name in enumerate(header)}
 
 
-def chosen_times(arguments, directory, end_time):
+def chosen_times(arguments, directory, last_time, end_time):
+    """The times to draw: --times (each must lie in [0, last_time]), or the
+    run's Report times up to its last step (a run that ended early, killed
+    or still running, has no later states: those times are left out with
+    a note), or four times up to the End time."""
     if arguments.times:
-        return [float(t) for t in arguments.times.split(",")]
+        times = []
+        for text in arguments.times.split(","):
+            try:
+                t = float(text)
+            except ValueError:
+                sys.exit(f"plot_run.py: --times: '{text}' is not a number; "
+                         "give times separated by ','")
+            if not 0 <= t <= last_time:
+                sys.exit(f"plot_run.py: --times: {text} is not a time of this "
+                         f"run; allowed are times in [0, {last_time:g}]")
+            times.append(t)
+        return times
+    if last_time < end_time * (1 - 1e-9):
+        print(f"note: the run ends at t = {last_time:g}, before its End time "
+              f"{end_time:g} (killed, or still running?)")
     report = read_parameter(directory, "Report times")
-    if report:
-        return [float(t) for t in report.split(",")]
-    return list(np.linspace(end_time / 4, end_time, 4))
+    if not report:
+        return list(np.linspace(last_time / 4, last_time, 4))
+    times = [float(t) for t in report.split(",")]
+    later = [t for t in times if t > last_time * (1 + 1e-9)]
+    if later:
+        print(f"note: the Report times {', '.join(f'{t:g}' for t in later)} "
+              "come after the run's last step and are not drawn")
+    return [t for t in times if t not in later] or [last_time]
 
 
 def nearest(available, t):
@@ -703,11 +761,21 @@ def main():
               f"{os.path.join(directory, 'level-0')}, ...: plot each of them")
         return
 
+    outputs = ("time_series.csv", "solution.pvd", "gamma3_history.csv")
+    if not any(os.path.exists(os.path.join(directory, name))
+               for name in outputs):
+        sys.exit(f"plot_run.py: '{directory}' holds no output of contact "
+                 f"(none of {', '.join(outputs)}, convergence.txt)")
     series_path = os.path.join(directory, "time_series.csv")
     series = read_csv(series_path) if os.path.exists(series_path) else None
-    end_time = (series["time"][-1] if series is not None else
-                float(read_parameter(directory, "End time") or 1.0))
-    times = chosen_times(arguments, directory, end_time)
+    end_time = float(read_parameter(directory, "End time") or "nan")
+    records = read_pvd(directory)
+    last_time = (series["time"][-1] if series is not None and
+                 len(series["time"]) else
+                 records[-1][0] if records else end_time)
+    if not np.isfinite(end_time):
+        end_time = last_time
+    times = chosen_times(arguments, directory, last_time, end_time)
 
     shown, reason = plot_deformed(directory, times, arguments.field, output)
     record("deformed.png", shown, reason)
@@ -735,6 +803,8 @@ def main():
         print(f"wrote {os.path.join(output, name)}: {shown}")
     for name, reason in skipped:
         print(f"skipped {name}: {reason}")
+    if not written:
+        sys.exit("plot_run.py: no figure drawn (see the reasons above)")
 
 
 if __name__ == "__main__":
