@@ -68,6 +68,25 @@ STATE_MAP = LinearSegmentedColormap.from_list(
     "stick_slip", [STATE_COLOURS[STICK], STATE_COLOURS[SLIP]])
 DPI = 110
 
+# The SI unit of each field of the VTU output (stresses and tractions in
+# Pa = N/m^2, in 2D as in 3D).
+FIELD_UNITS = {"displacement": "m", "velocity": "m/s",
+               "friction_traction": "Pa", "slip_rate": "m/s",
+               "friction_bound": "Pa", "contact_status": "1 stick, 2 slip",
+               "cell_von_mises": "Pa"}
+
+
+def field_label(field):
+    unit = FIELD_UNITS.get(field, "Pa" if field.startswith("cell_stress")
+                           else None)
+    return f"{field} [{unit}]" if unit else field
+
+
+def outside_legend(axis):
+    """The legend beside the axes, off the data."""
+    axis.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1),
+                borderaxespad=0)
+
 
 # @sect3{Reading the VTU output}
 #
@@ -282,9 +301,9 @@ def nearest(available, t):
 # Cells are drawn without antialiasing and without edges: antialiased
 # polygons leave sub-pixel gaps to their neighbours, and edges drawn over
 # them pile up where cells get thin in the picture; either shows up as a
-# moire pattern or as dark streaks that are not in the data. Each panel
-# gets its own colour scale, so that the early, weakly loaded states are
-# not one flat colour.
+# moire pattern or as dark streaks that are not in the data. All panels
+# share one colour scale, so that a colour means the same value in each
+# (the early, weakly loaded states are therefore dark).
 
 def field_values(arrays, field, cells):
     if field not in arrays:
@@ -315,6 +334,8 @@ def draw_deformed_2d(axis, points, cells, cell_type, arrays, field, limits):
         axis.plot(*deformed[chosen].T, "s", color=colour, ms=2)
     axis.autoscale_view()
     axis.set_aspect("equal")
+    axis.set_xlabel("x [m]")
+    axis.set_ylabel("y [m]")
     return len(corners)
 
 
@@ -367,12 +388,12 @@ def draw_gamma3_map(axis, points, cells, cell_type, arrays):
         angle[across] = np.where(angle[across] < 0, angle[across] + 360,
                                  angle[across])
         polygons_in_plane = np.stack([angle, corners[:, :, 2]], axis=2)
-        labels = ("angle on Γ3 [°]", "z on Γ3")
+        labels = ("angle on Γ3 [°]", "z on Γ3 [m]")
     else:
         in_plane = sorted(np.argsort(np.ptp(corners.reshape(-1, 3),
                                             axis=0))[1:])
         polygons_in_plane = corners[:, :, in_plane]
-        labels = tuple(f"{'xyz'[c]} on Γ3" for c in in_plane)
+        labels = tuple(f"{'xyz'[c]} on Γ3 [m]" for c in in_plane)
     polygons = PolyCollection(
         polygons_in_plane,
         facecolors=STATE_MAP((arrays["contact_status"][faces] == SLIP)
@@ -430,7 +451,7 @@ def draw_deformed_3d(axis, points, cells, cell_type, arrays, field, limits):
         linewidths=0, antialiaseds=False))
     for set_label, c in zip((axis.set_xlabel, axis.set_ylabel,
                              axis.set_zlabel), order):
-        set_label("xyz"[c])
+        set_label(f"{'xyz'[c]} [m]")
 
 
 def plot_deformed(directory, times, field, output):
@@ -456,9 +477,11 @@ def plot_deformed(directory, times, field, output):
         figsize=(11.0, rows * (min(width / aspect, 5.0) + 0.8) + 0.6),
         constrained_layout=True)
     shown = []
+    # One colour scale for all panels, so that their colours compare.
+    values = np.concatenate([field_values(arrays, field, cells)
+                             for _, _, cells, _, arrays in snapshots])
+    limits = (values.min(), max(values.max(), values.min() + 1e-30))
     for i, (t, points, cells, cell_type, arrays) in enumerate(snapshots):
-        values = field_values(arrays, field, cells)
-        limits = (values.min(), max(values.max(), values.min() + 1e-30))
         n_stick = count_nodes(points, arrays, STICK)
         n_slip = count_nodes(points, arrays, SLIP)
         if dim == 2:
@@ -480,8 +503,10 @@ def plot_deformed(directory, times, field, output):
         axis.set_title(f"t = {t:.4g}: {n_stick} stick, {n_slip} slip")
         figure.colorbar(plt.cm.ScalarMappable(
             norm=plt.Normalize(*limits), cmap="viridis"),
-            ax=axis, label=field, shrink=0.7, pad=0.2 if dim == 3 else 0.05)
-    figure.suptitle(f"deformed body coloured by {field}\nΓ3: stick blue, "
+            ax=axis, label=field_label(field), shrink=0.7,
+            pad=0.2 if dim == 3 else 0.05)
+    figure.suptitle(f"deformed body coloured by {field} (one colour scale; "
+                    "displacements drawn at true scale)\nΓ3: stick blue, "
                     "slip red" + (" (right: a face of Γ3 by the share of "
                                   "its nodes)" if dim == 3 else ""))
     figure.savefig(os.path.join(output, "deformed.png"), dpi=DPI)
@@ -502,7 +527,7 @@ def add_angle(history):
 
 def axis_label(coordinate):
     return ("angle on Γ3 [°]" if coordinate == "angle" else
-            f"{coordinate} on Γ3")
+            f"{coordinate} on Γ3 [m]")
 
 
 def gamma3_coordinate(history, name):
@@ -563,7 +588,7 @@ def plot_gamma3_profiles(history, times, coordinate, output):
         state = nodes["state"][order]
         if len(traction_columns) == 1:
             traction = nodes[traction_columns[0]][order]
-            label = "friction traction t_1"
+            label = "friction traction t_1 [Pa]"
             axes[0, column].plot(s, -bound, "k-", lw=1)
             axes[0, column].plot(s, bound, "k-", lw=1,
                                  label="bound μ(|w_τ|) S")
@@ -572,7 +597,7 @@ def plot_gamma3_profiles(history, times, coordinate, output):
             # lines, for the traction's length and for the bound.
             traction = np.linalg.norm(
                 [nodes[c][order] for c in traction_columns], axis=0)
-            label = "|friction traction|"
+            label = "|friction traction| [Pa]"
             axes[0, column].plot(s, bound, "k_", ms=4,
                                  label="bound μ(|w_τ|) S")
         for value, colour in STATE_COLOURS.items():
@@ -591,8 +616,10 @@ def plot_gamma3_profiles(history, times, coordinate, output):
             plot_gamma3_map(axes[2, column], nodes, coordinate)
         axes[-1, column].set_xlabel(axis_label(coordinate))
     axes[0, 0].set_ylabel(label)
-    axes[1, 0].set_ylabel("slip rate |w_τ|")
-    axes[0, 0].legend(fontsize=7)
+    axes[1, 0].set_ylabel("slip rate |w_τ| [m/s]")
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    axes[0, -1].legend(handles, labels, fontsize=7, loc="upper left",
+                       bbox_to_anchor=(1.01, 1), borderaxespad=0)
     figure.savefig(os.path.join(output, "gamma3_profiles.png"), dpi=DPI)
     plt.close(figure)
     return "; ".join(shown)
@@ -631,7 +658,7 @@ def plot_stick_slip(history, coordinate, output):
     mesh = axis.pcolormesh(edges_s, edges_t, fraction, shading="flat",
                            cmap=STATE_MAP, vmin=0, vmax=1, rasterized=True)
     axis.set_xlabel(axis_label(coordinate))
-    axis.set_ylabel("t")
+    axis.set_ylabel("t [s]")
     axis.set_title("stick (blue) and slip (red) on Γ3")
     if "z" in history:
         figure.colorbar(mesh, ax=axis, label="fraction of nodes slipping")
@@ -655,24 +682,27 @@ def plot_energies(series, output):
                  "viscous_dissipation", "friction_dissipation",
                  "numerical_dissipation"):
         energies.plot(t, series[name], label=name.replace("_", " "))
-    energies.set_xlabel("t")
-    energies.set_ylabel("energy [J]")
-    energies.legend(fontsize=7)
+    energies.set_xlabel("t [s]")
+    # In 2D per metre of thickness (plane strain).
+    energies.set_ylabel("energy [J]" if "momentum_z" in series else
+                        "energy [J/m]")
+    outside_legend(energies)
     for name in ("load_power_residual", "constraint_residual",
                  "equation_residual", "friction_law_residual", "stick_speed"):
         # Exact zeros (no slip yet, nothing to violate) are left out.
         values = np.abs(series[name][1:])
         residuals.semilogy(t[1:], np.where(values > 0, values, np.nan),
                            label=name.replace("_", " "))
-    residuals.set_xlabel("t")
-    residuals.set_ylabel("|residual|")
+    residuals.set_xlabel("t [s]")
+    residuals.set_ylabel("relative residual [1]")
     residuals.set_title("self-checks (round-off when the solve is right)")
-    residuals.legend(fontsize=7)
+    outside_legend(residuals)
     for name in ("convexification_iterations", "active_set_iterations",
                  "n_stick", "n_slip"):
         iterations.plot(t[1:], series[name][1:], label=name.replace("_", " "))
-    iterations.set_xlabel("t")
-    iterations.legend(fontsize=7)
+    iterations.set_xlabel("t [s]")
+    iterations.set_ylabel("count")
+    outside_legend(iterations)
     figure.savefig(os.path.join(output, "energies.png"), dpi=DPI)
     plt.close(figure)
     return (f"{len(t) - 1} steps to t = {t[-1]:.4g}; external work "
