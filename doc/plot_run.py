@@ -222,6 +222,8 @@ def read_csv(path):
     other row that is not numbers ends the script naming its line."""
     with open(path) as file:
         lines = file.read().split("\n")
+    if not lines[0].strip():
+        return {}
     names = lines[0].strip().split(",")
     rows = [line for line in lines[1:] if line.strip()]
     if rows and lines[-1].strip():
@@ -798,6 +800,9 @@ def main():
                  f"(none of {', '.join(outputs)}, convergence.txt)")
     series_path = os.path.join(directory, "time_series.csv")
     series = read_csv(series_path) if os.path.exists(series_path) else None
+    if series is not None and len(series.get("time", [])) < 2:
+        print(f"note: {series_path} has no step yet; it is not drawn")
+        series = None
     end_time = float(read_parameter(directory, "End time") or "nan")
     records = read_pvd(directory)
     last_time = (series["time"][-1] if series is not None and
@@ -813,7 +818,7 @@ def main():
     history = read_csv(history_path) if os.path.exists(history_path) else None
     if history is None:
         reason = "no gamma3_history.csv (Output/Gamma3 history = false?)"
-    elif len(history["step"]) == 0:
+    elif len(history.get("step", [])) == 0:
         reason = "Gamma_3 has no nodes (Contact boundary ids empty?)"
     else:
         reason = None

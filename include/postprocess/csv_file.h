@@ -34,6 +34,13 @@ namespace Contact
      *  failed. */
     void check();
 
+    /** The text of the file `name` up to the rows of `step`; throws,
+     *  naming the line, if a row before them is damaged. A resumed run
+     *  checks every such file of its output directory before it rewrites
+     *  any of them. */
+    static std::string rows_up_to(const std::string &name,
+                                  const unsigned int step);
+
   private:
     void cut_back(const unsigned int step) const;
 

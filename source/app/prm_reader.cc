@@ -300,9 +300,20 @@ namespace Contact
                         const std::string &path,
                         const std::string &value)
     {
+      // A mesh file given here is relative to the working directory; made
+      // absolute as one read from a file is (parse_text()).
+      const bool relative_mesh_file =
+        path == Entry::mesh_file && !Utilities::trim(value).empty() &&
+        std::filesystem::path(Utilities::trim(value)).is_relative();
       try
         {
-          set_entry(prm, path, value);
+          set_entry(prm,
+                    path,
+                    relative_mesh_file ?
+                      std::filesystem::absolute(Utilities::trim(value))
+                        .lexically_normal()
+                        .string() :
+                      value);
         }
       catch (const ExceptionBase &exc)
         {

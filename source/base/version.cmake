@@ -6,12 +6,19 @@
 set(COMMIT "unknown")
 find_package(Git QUIET)
 if(GIT_FOUND AND EXISTS "${SOURCE_DIR}/.git")
+  # The commit itself (a tag would make 'describe' print its name).
   execute_process(COMMAND ${GIT_EXECUTABLE} -C ${SOURCE_DIR}
-    describe --always --abbrev=12 --dirty=+
+    rev-parse --short=12 HEAD
     OUTPUT_VARIABLE COMMIT OUTPUT_STRIP_TRAILING_WHITESPACE
     RESULT_VARIABLE GIT_RESULT ERROR_QUIET)
   if(NOT GIT_RESULT EQUAL 0)
     set(COMMIT "unknown")
+  else()
+    execute_process(COMMAND ${GIT_EXECUTABLE} -C ${SOURCE_DIR}
+      diff --quiet HEAD RESULT_VARIABLE DIRTY ERROR_QUIET)
+    if(NOT DIRTY EQUAL 0)
+      set(COMMIT "${COMMIT}+")
+    endif()
   endif()
 endif()
 file(WRITE ${OUTPUT}.in

@@ -39,6 +39,7 @@
 #include <iomanip>
 #include <map>
 #include <sstream>
+#include <utility>
 
 namespace Contact
 {
@@ -132,9 +133,11 @@ namespace Contact
       return text.str();
     }
 
-    // The mesh's vertices, summed with weights over the locally owned
-    // cells (a moved vertex of a mesh file changes it; the same mesh on
-    // the same processes gives the same sum), to 12 digits.
+    // The absolute values of the mesh's vertex coordinates, summed with
+    // weights over the locally owned cells, to 12 digits: a moved vertex of
+    // a mesh file changes it, the same mesh on the same processes gives the
+    // same sum (absolute values, so that a symmetric mesh does not sum to
+    // round-off).
     template <int dim>
     std::string mesh_fingerprint(const DoFHandler<dim> &dof_handler,
                                  const MPI_Comm         communicator)
@@ -144,44 +147,61 @@ namespace Contact
         if (cell->is_locally_owned())
           for (const unsigned int v : cell->vertex_indices())
             for (unsigned int d = 0; d < dim; ++d)
-              sum += (1 + d + 0.1 * v) * cell->vertex(v)[d];
+              sum += (1 + d + 0.1 * v) * std::abs(cell->vertex(v)[d]);
       std::ostringstream text;
       text << ", mesh vertex sum " << std::setprecision(12)
            << Utilities::MPI::sum(sum, communicator);
       return text.str();
     }
 
+    // The shape without its k, and its k.
+    std::pair<std::string, double> split_k(const std::string &shape)
+    {
+      const std::size_t k = shape.find(", k = ");
+      if (k == std::string::npos)
+        return {shape, 0};
+      const std::size_t end = std::min(shape.find(',', k + 6), shape.size());
+      return {shape.substr(0, k) + shape.substr(end),
+              std::stod(shape.substr(k + 6, end - k - 6))};
+    }
+
+    // Whether a checkpoint of `stored` shape continues a run of `problem`
+    // shape: the same but for k to round-off (k = T/N of another End time
+    // that is a multiple of k differs from it in the last digits).
+    bool same_problem(const std::string &stored, const std::string &problem)
+    {
+      const auto [stored_rest, stored_k]   = split_k(stored);
+      const auto [problem_rest, problem_k] = split_k(problem);
+      return stored_rest == problem_rest &&
+             std::abs(stored_k - problem_k) <= 1e-12 * std::abs(stored_k);
+    }
+
     // The refusal of a checkpoint whose shape differs from the run's; where
-    // only k differs, what changed it: k is T/N, so a new End time that is
-    // not a multiple of the checkpoint's k shortens the steps.
+    // only k differs, how to keep it: k is T/N, so the End time must be a
+    // multiple of the checkpoint's k and 'Time step' must give that k.
     std::string another_problem(const std::string &name,
                                 const std::string &stored_shape,
                                 const std::string &problem_shape,
                                 const double       end_time,
                                 const double       time_step)
     {
-      const auto without_k = [](const std::string &text) {
-        const std::size_t k = text.find(", k = ");
-        return k == std::string::npos ?
-                 text :
-                 text.substr(0, k) +
-                   text.substr(std::min(text.find(',', k + 6), text.size()));
-      };
-      const std::size_t k = stored_shape.find(", k = ");
-      if (without_k(stored_shape) == without_k(problem_shape) &&
-          k != std::string::npos)
+      const auto [stored_rest, stored_k] = split_k(stored_shape);
+      if (stored_rest == split_k(problem_shape).first && stored_k > 0)
         {
-          const double stored_k = std::stod(stored_shape.substr(k + 6));
-          const double below    = std::floor(end_time / stored_k) * stored_k,
-                       above    = below + stored_k;
+          const double below = std::max(1., std::floor(end_time / stored_k)) *
+                               stored_k,
+                       above = below + stored_k;
+          std::ostringstream digits;
+          digits << std::setprecision(17) << stored_k << "' and an End time "
+                 << "that is a multiple of it, e.g. " << below << " or "
+                 << above;
           return "The checkpoint '" + name +
                  "' has the time step k = " + number_text(stored_k) +
-                 ", this run k = T/N = " + number_text(time_step) + ": '" +
+                 ", this run k = T/N = " + number_text(time_step) + " ('" +
                  Entry::end_time + "' = " + number_text(end_time) +
-                 " is not a multiple of the checkpoint's k, and the steps "
-                 "are shortened to end there. Resume with an End time that "
-                 "is, e.g. " +
-                 number_text(below) + " or " + number_text(above) + ".";
+                 " divided into whole steps of at most 'Time step'). Resume "
+                 "with 'Time step' = '" +
+                 digits.str() + ".";
         }
       return "The checkpoint '" + name +
              "' belongs to another discrete problem (" + stored_shape +
@@ -372,7 +392,7 @@ namespace Contact
                                       mpi_communicator);
     if (stored_shape.find(", mesh vertex sum ") != std::string::npos)
       problem_shape += mesh_fingerprint(space.dof_handler, mpi_communicator);
-    AssertThrow(stored_shape == problem_shape,
+    AssertThrow(same_problem(stored_shape, problem_shape),
                 ExcMessage(another_problem(name,
                                            stored_shape,
                                            problem_shape,

@@ -15,6 +15,7 @@
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
+#include <postprocess/csv_file.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -111,7 +112,21 @@ namespace Contact
 
     state.step_number = 0;
     if (resumed)
-      load_checkpoint();
+      {
+        load_checkpoint();
+        // Every table of steps (a .csv file whose header starts with its
+        // step) is checked before any of them is cut back.
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          for (const auto &entry :
+               std::filesystem::directory_iterator(parameters.output.directory))
+            {
+              std::ifstream table(entry.path());
+              std::string   header;
+              if (entry.path().extension() == ".csv" &&
+                  std::getline(table, header) && header.rfind("step,", 0) == 0)
+                CsvFile::rows_up_to(entry.path().string(), state.step_number);
+            }
+      }
     prepare_output_directory();
     for (const auto &postprocessor : postprocessors)
       postprocessor->start(resumed);
@@ -201,9 +216,13 @@ namespace Contact
       return;
     if (!parameters.output.resume)
       {
-        say_what_is_replaced(parameters, std::cout);
+        // Said once the earlier results are gone (a running run in a
+        // directory below may keep them).
+        std::ostringstream replaced;
+        say_what_is_replaced(parameters, replaced);
         // The run that a target chose keeps the pilots it was chosen by.
         remove_results(directory, parameters.keeps_pilots, mpi_communicator);
+        std::cout << replaced.str();
       }
     // Output that is written in pieces (VTU) is written here first and
     // renamed into the directory when complete.

@@ -143,7 +143,9 @@ namespace Contact
           const std::filesystem::path owner = entry->path().parent_path();
           if (held_locks()[canonical_key(owner)].lock())
             continue;
-          const int fd = open(entry->path().c_str(), O_RDONLY);
+          // (Read-write: where flock is emulated by POSIX locks, as on NFS,
+          // an exclusive lock needs a descriptor open for writing.)
+          const int fd = open(entry->path().c_str(), O_RDWR);
           if (fd < 0)
             continue;
           const bool free = flock(fd, LOCK_EX | LOCK_NB) == 0;

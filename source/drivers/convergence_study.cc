@@ -315,15 +315,25 @@ namespace Contact
         }
       catch (const ExceptionBase &error)
         {
-          // The reference's degree is the study's entry, not the scene's.
+          // The reference's degree is the study's entry, not the scene's:
+          // named where the level runs with the scene's own degree.
           std::ostringstream text;
           error.print_info(text);
-          const bool reference =
-            level == L && scene.convergence_study.reference_degree > 0 &&
-            !scene.verification.manufactured();
-          AssertThrow(!reference,
-                      ExcMessage("Entry '" + Entry::reference_degree +
-                                 "' = " +
+          SceneVariant own_degree  = level_variant(scene, level);
+          own_degree.degree        = scene.geometry.fe_degree;
+          bool runs_without_degree = true;
+          try
+            {
+              parameters_of(scene, own_degree);
+            }
+          catch (const ExceptionBase &)
+            {
+              runs_without_degree = false;
+            }
+          AssertThrow(!(level == L && runs_without_degree &&
+                        scene.convergence_study.reference_degree > 0 &&
+                        !scene.verification.manufactured()),
+                      ExcMessage("Entry '" + Entry::reference_degree + "' = " +
                                  std::to_string(
                                    scene.convergence_study.reference_degree) +
                                  ": the reference level cannot run with "

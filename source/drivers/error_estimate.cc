@@ -555,21 +555,31 @@ namespace Contact
                            with_history,
                            with_history.back().summary.time_step,
                            known(worst_V_error));
-          // T is one of the times, and there the row at T rests on all
-          // runs: without the run with 8h the largest over time takes the
-          // row at T where that has no estimate or a larger one.
-          const EstimateRow &at_T = rows.front();
+          // T is one of the times, and there all runs are compared: without
+          // the run with 8h the largest over time takes the row at T (its
+          // differences with the sequence's order, never the separation's
+          // parts, which split the rows at T only) where that has no
+          // estimate or a larger one.
+          const EstimateRow       &at_T = rows.front();
+          const RichardsonEstimate at_T_own =
+            estimate_of(at_T.differences, true, known(worst_V_error));
           if (with_history.size() < sequence.size() &&
-              (!at_T.estimate.status.empty() ||
+              (!at_T_own.status.empty() ||
                (worst.estimate.status.empty() &&
-                at_T.estimate.error > worst.estimate.error)))
+                at_T_own.error > worst.estimate.error)))
             {
-              const double exact_error = worst.exact_error;
-              worst                    = at_T;
-              worst.name               = worst_V_error;
-              worst.time =
-                sequence[0].summary.n_steps * sequence[0].summary.time_step;
-              worst.exact_error = exact_error;
+              worst = {worst_V_error,
+                       at_T.value,
+                       at_T.differences,
+                       at_T_own,
+                       std::numeric_limits<double>::quiet_NaN(),
+                       std::numeric_limits<double>::quiet_NaN(),
+                       std::numeric_limits<double>::quiet_NaN(),
+                       std::numeric_limits<double>::quiet_NaN(),
+                       false,
+                       worst.exact_error,
+                       sequence[0].summary.n_steps *
+                         sequence[0].summary.time_step};
               if (!worst.estimate.reason.empty())
                 worst.estimate.reason = "at T: " + worst.estimate.reason;
             }

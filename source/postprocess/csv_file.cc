@@ -29,6 +29,7 @@ namespace Contact
       {
         file.open(name);
         file << header << '\n';
+        file.flush();
       }
   }
 
@@ -74,18 +75,19 @@ namespace Contact
   // must all be there, one step after the other (a step may have several
   // rows): a damaged file is refused, naming its line, before anything is
   // rewritten. It is rewritten atomically.
-  void CsvFile::cut_back(const unsigned int step) const
+  std::string CsvFile::rows_up_to(const std::string &name,
+                                  const unsigned int step)
   {
     std::ifstream               in(name);
     std::string                 kept, line;
     std::optional<unsigned int> previous;
     unsigned int                line_number = 1;
     const auto                  damaged     = [&](const std::string &what) {
-      return ExcMessage("'" + name + "', line " + std::to_string(line_number) +
-                        ", " + what +
-                        ": resuming would lose the rows after "
-                                             "it. Restore the file, or delete it: the resumed "
-                                             "run then starts a new one at the checkpoint's step.");
+      return ExcMessage(
+        "'" + name + "', line " + std::to_string(line_number) + ", " + what +
+        ": resuming would lose the rows after "
+                             "it. Restore the file, or delete it: the resumed "
+                             "run then starts a new one after the checkpoint's step.");
     };
     AssertThrow(std::getline(in, line), damaged("the header, is missing"));
     kept = line + '\n';
@@ -113,7 +115,14 @@ namespace Contact
                 damaged("ends at step " + std::to_string(*previous) +
                         ", before the checkpoint's step " +
                         std::to_string(step)));
-    std::ofstream out(name + ".tmp");
+    return kept;
+  }
+
+
+  void CsvFile::cut_back(const unsigned int step) const
+  {
+    const std::string kept = rows_up_to(name, step);
+    std::ofstream     out(name + ".tmp");
     out << kept;
     out.flush();
     AssertThrow(out,

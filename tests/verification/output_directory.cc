@@ -186,6 +186,16 @@ int main()
          run("other", {"Output/Resume=true", "Time/End time=1.1"}));
   report("longer End time (16 steps of the same k)",
          run("other", {"Output/Resume=true", "Time/End time=1"}));
+  // k = 1.1/141, and End time 3.3 = 3 T: k = 3.3/423 differs from it in
+  // the last digit, and is the same step.
+  const std::vector<std::string> ragged = {"Time/Time step=0.0078125",
+                                           "Output/Checkpoint interval=47"};
+  run("ragged", ragged);
+  std::vector<std::string> resume_ragged = ragged;
+  resume_ragged.insert(resume_ragged.end(),
+                       {"Output/Resume=true", "Time/End time=3.3"});
+  report("k = 1.1/141 resumed to End time 3.3 (k = 3.3/423)",
+         run("ragged", resume_ragged));
   copy("original", "no_series");
   fs::remove("no_series/time_series.csv");
   report("resume after time_series.csv was deleted",
@@ -287,12 +297,18 @@ int main()
         for (const std::string &line : lines)
           out << line << '\n';
       }
-      const auto size = fs::file_size("damaged/time_series.csv");
+      const auto size         = fs::file_size("damaged/time_series.csv");
+      const auto history_size = fs::file_size("damaged/gamma3_history.csv");
       report("resume with " + what + " in time_series.csv",
              run("damaged", {"Output/Resume=true", "Time/End time=1"}));
       std::cout << "  time_series.csv unchanged: "
                 << (fs::file_size("damaged/time_series.csv") == size ? "yes" :
                                                                        "no")
+                << ", gamma3_history.csv unchanged: "
+                << (fs::file_size("damaged/gamma3_history.csv") ==
+                        history_size ?
+                      "yes" :
+                      "no")
                 << ", time_series.csv.tmp left: "
                 << (fs::exists("damaged/time_series.csv.tmp") ? "yes" : "no")
                 << std::endl;

@@ -125,6 +125,19 @@ int main(int argc, char **argv)
     "run-mesh-file",
     "time_series.csv");
 
+  // The same mesh file given with --set, relative to the working
+  // directory.
+  const std::string mesh_file_set =
+    reproduces("scene/inclined_foundation.prm",
+               {"--set",
+                "Geometry/Mesh file=scene/inclined_foundation.msh",
+                "--set",
+                "Geometry/Mesh refinements=1",
+                "--set",
+                "Time/Time step=0.1375"},
+               "run-mesh-file-set",
+               "time_series.csv");
+
   const std::string              paper  = CONTACT_PRM_DIR "/barboteu2015.prm";
   const std::vector<std::string> coarse = {"--set",
                                            "Geometry/Cell size=0.0625",
@@ -168,6 +181,8 @@ int main(int argc, char **argv)
 
   std::cout << "a scene with a relative mesh file, run again from its "
             << "parameters.prm, gives the same time_series.csv: " << mesh_file
+            << std::endl
+            << "the same with the mesh file given by --set: " << mesh_file_set
             << std::endl
             << "a run with its error estimate, run again, gives the same "
             << "error_estimate.txt: " << estimate << std::endl
