@@ -285,10 +285,10 @@ namespace Contact
     {
       RichardsonEstimate estimate = richardson_estimate(differences, !field);
       // A scalar's one measured order is no evidence: on a mesh without the
-      // run with 8h the time of the first slip showed the order 2.28 and an
-      // estimate 0.06 times its difference to an 8 times finer run
-      // (bench/error_estimate.md). A field's norm keeps its estimate, which
-      // errs on the large side (above).
+      // run with 8h the time of the first slip shows the order 2.28, and its
+      // estimate was 0.06 times its difference to an 8 times finer run
+      // (4.38e-2, bench/error_estimate.md). A field's norm keeps its
+      // estimate, which errs on the large side (above).
       if (!field && differences.size() < 3 && estimate.status.empty())
         {
           estimate.status = "order not checked";
@@ -809,9 +809,9 @@ namespace Contact
                 << coarsest << ")." << std::endl;
         }
       // A row without an estimate gets no bound either: the bound that
-      // assumed the finer runs to converge at order 0.5 or more was below
-      // the difference to a 16 times finer run in 8 of 33 rows of
-      // bench/error_estimate.md.
+      // assumes the finer runs to converge at order 0.5 or more lies below
+      // the difference to an 8 or 16 times finer run in 17 of the 64 rows
+      // of bench/error_estimate.md that are not asymptotic.
       for (const EstimateRow &row : rows)
         if (!row.estimate.reason.empty())
           out << (row.estimate.status.empty() ? "Note: " : "No estimate: ")
