@@ -1,8 +1,8 @@
 # Writes contact_version.h with the commit of the source tree where it is a
 # git checkout ("unknown" elsewhere, e.g. an unpacked archive), and "+" for
 # uncommitted changes. Run at every build (CMakeLists.txt, target
-# contact_version); configure_file rewrites the header only when its text
-# changes, so an unchanged commit recompiles nothing.
+# contact_version); the header is rewritten only when its text changes, so
+# an unchanged commit recompiles nothing.
 set(COMMIT "unknown")
 find_package(Git QUIET)
 if(GIT_FOUND AND EXISTS "${SOURCE_DIR}/.git")
@@ -21,6 +21,14 @@ if(GIT_FOUND AND EXISTS "${SOURCE_DIR}/.git")
     endif()
   endif()
 endif()
-file(WRITE ${OUTPUT}.in
-  "#define CONTACT_VERSION \"@VERSION@\"\n#define CONTACT_COMMIT \"@COMMIT@\"\n")
-configure_file(${OUTPUT}.in ${OUTPUT} @ONLY)
+# Written only when its text changes: the tests build in parallel, and
+# each build runs this script (a rewrite of the same text, or a temporary
+# file, would race with a compiler reading the header).
+set(TEXT "#define CONTACT_VERSION \"${VERSION}\"\n#define CONTACT_COMMIT \"${COMMIT}\"\n")
+set(OLD_TEXT "")
+if(EXISTS ${OUTPUT})
+  file(READ ${OUTPUT} OLD_TEXT)
+endif()
+if(NOT OLD_TEXT STREQUAL TEXT)
+  file(WRITE ${OUTPUT} "${TEXT}")
+endif()
