@@ -111,7 +111,7 @@ namespace Contact
     inline const std::string resume              = "Output/Resume";
     inline const std::string manufactured_solution =
       "Verification/Manufactured solution";
-    inline const std::string levels         = "Convergence study/Levels";
+    inline const std::string levels = "Convergence study/Levels";
     inline const std::string reference_degree =
       "Convergence study/Reference degree";
     inline const std::string estimate_error = "Accuracy/Estimate error";

@@ -34,6 +34,27 @@ namespace Contact
   {
     // Every run writes the parameters it used.
     const ResultFiles parameter_file("parameters\\.prm");
+
+
+    // @sect4{check_step_tables}
+
+    // On --resume every table of steps in the output directory (a .csv
+    // file whose header starts with its step) is checked up to the
+    // checkpoint's step before any of them is cut back.
+    void check_step_tables(const std::string &directory,
+                           const unsigned int step)
+    {
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      for (const auto &entry : std::filesystem::directory_iterator(directory))
+        {
+          std::ifstream table(entry.path());
+          std::string   header;
+          if (entry.path().extension() == ".csv" &&
+              std::getline(table, header) && header.rfind("step,", 0) == 0)
+            CsvFile::rows_up_to(entry.path().string(), step);
+        }
+    }
   } // namespace
 
 
@@ -114,18 +135,7 @@ namespace Contact
     if (resumed)
       {
         load_checkpoint();
-        // Every table of steps (a .csv file whose header starts with its
-        // step) is checked before any of them is cut back.
-        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-          for (const auto &entry :
-               std::filesystem::directory_iterator(parameters.output.directory))
-            {
-              std::ifstream table(entry.path());
-              std::string   header;
-              if (entry.path().extension() == ".csv" &&
-                  std::getline(table, header) && header.rfind("step,", 0) == 0)
-                CsvFile::rows_up_to(entry.path().string(), state.step_number);
-            }
+        check_step_tables(parameters.output.directory, state.step_number);
       }
     prepare_output_directory();
     for (const auto &postprocessor : postprocessors)
@@ -197,6 +207,7 @@ namespace Contact
         out << "; and " << differing.size() - shown << " more entries";
       out << "." << std::endl;
     }
+
   } // namespace
 
 

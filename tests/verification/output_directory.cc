@@ -35,6 +35,8 @@
 #include <thread>
 #include <vector>
 
+#include "scene_files.h"
+
 namespace fs = std::filesystem;
 
 const std::string scene = CONTACT_PRM_DIR "/barboteu2015.prm";
@@ -239,13 +241,7 @@ int main()
 
   // A mesh file whose vertex moved after the checkpoint was written: the
   // same numbers of cells and unknowns, another problem.
-  fs::create_directories("moved");
-  for (const std::string name : {"barboteu2015.prm",
-                                 "inclined_foundation.prm",
-                                 "inclined_foundation.msh"})
-    fs::copy_file(std::string(CONTACT_PRM_DIR) + "/" + name,
-                  "moved/" + name,
-                  fs::copy_options::overwrite_existing);
+  copy_mesh_file_scene("moved");
   const std::vector<std::string> mesh_file_run = {
     "Geometry/Mesh refinements=1",
     "Time/Time step=0.1375",

@@ -19,6 +19,8 @@
 
 #include <app/run.h>
 
+#include "scene_files.h"
+
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -30,14 +32,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-  std::string contents(const std::string &path)
-  {
-    std::ifstream      file(path);
-    std::ostringstream text;
-    text << file.rdbuf();
-    return text.str();
-  }
-
   // The table of convergence.txt without its last column, the wall times.
   std::string without_wall_times(const std::string &table)
   {
@@ -112,13 +106,7 @@ int main(int argc, char **argv)
 
   // A scene and its mesh file in a folder of their own, read through a
   // relative path.
-  fs::create_directories("scene");
-  for (const std::string name : {"barboteu2015.prm",
-                                 "inclined_foundation.prm",
-                                 "inclined_foundation.msh"})
-    fs::copy_file(std::string(CONTACT_PRM_DIR) + "/" + name,
-                  "scene/" + name,
-                  fs::copy_options::overwrite_existing);
+  copy_mesh_file_scene("scene");
   const std::string mesh_file = reproduces(
     "scene/inclined_foundation.prm",
     {"--set", "Geometry/Mesh refinements=1", "--set", "Time/Time step=0.1375"},

@@ -17,6 +17,8 @@
 #include <drivers/error_estimate.h>
 #include <drivers/target_error.h>
 
+#include "scene_files.h"
+
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -28,14 +30,6 @@ using namespace Contact;
 
 namespace
 {
-  std::string contents(const std::string &path)
-  {
-    std::ifstream      file(path);
-    std::ostringstream text;
-    text << file.rdbuf();
-    return text.str();
-  }
-
   std::vector<std::string> target_settings(const std::string &directory)
   {
     return {"Convergence study/Levels=0",
