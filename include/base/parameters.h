@@ -405,10 +405,11 @@ namespace Contact
     static const ChoiceTable<FrictionMethod> &friction_methods();
 
     /** 'Contact solver = auto' takes the Delassus path up to this many
-     *  tangential unknowns of Gamma_3 (its Newton steps are dense, O(n^3)),
-     *  and without CHOLMOD only while Z = K^{-1} C^T takes at most this
-     *  many bytes per process. The help texts state both. */
-    static constexpr unsigned int max_delassus_unknowns = 2000;
+     *  tangential unknowns n of Gamma_3 (D and W = D^{-1} are dense: 16 n^2
+     *  bytes, 1 GB here), and without CHOLMOD only while Z = K^{-1} C^T
+     *  takes at most this many bytes per process. The help texts state
+     *  both. */
+    static constexpr unsigned int max_delassus_unknowns = 7900;
     static constexpr double       max_delassus_bytes    = 1e9;
     /** The relative residual to which CG-AMG solves with K. */
     static constexpr double cg_relative_residual = 1e-12;

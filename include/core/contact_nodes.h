@@ -14,17 +14,21 @@ namespace Contact
 {
   /**
    * The nodes of the faces with one of `contact_ids`, with their dofs, the
-   * weight m_p = int_Gamma3 phi_p ds of the nodal ("node-to-rigid")
-   * friction, the outward normal averaged over the faces around the node
-   * and the tangents orthogonal to its constraints, ordered along Gamma_3.
-   * A node all of whose dofs are constrained (where Gamma_3 meets the
-   * clamp) has no friction unknown and is left out. Every process gets
-   * every node (collective).
+   * weight m_p = int_Gamma3 psi_p ds of the nodal ("node-to-rigid")
+   * friction (psi_p the basis function of V_h, which holds the hanging
+   * nodes that follow p), the outward normal averaged over the faces
+   * around the node and the tangents orthogonal to its constraints,
+   * ordered along Gamma_3. A node all of whose dofs are constrained (where
+   * Gamma_3 meets the clamp, or a hanging node) has no friction unknown
+   * and is left out. Every process gets every node (collective).
+   * `share_hanging_weights` = false (a test of the self-checks) drops the
+   * hanging nodes' weights instead.
    */
   template <int dim>
   std::vector<ContactNode<dim>>
   make_contact_nodes(const DiscreteSpace<dim>              &space,
-                     const std::vector<types::boundary_id> &contact_ids);
+                     const std::vector<types::boundary_id> &contact_ids,
+                     const bool share_hanging_weights = true);
 
   /** The directions in which the constraints of V_h fix a node with these
    *  dofs (a clamp, the normal of Gamma_3, of a symmetry plane, or the

@@ -205,7 +205,9 @@ namespace Contact
    * tangent by `stick_node_velocity` times max |w_n|, or (an error in the
    * constraints of V_h, not in the law) along its normal by
    * `normal_velocity` times max |w_n|, the constraints not applied. The
-   * assembly multiplies B by `stiffness_factor`.
+   * assembly multiplies B by `stiffness_factor`. With
+   * `unshared_hanging_weights` the hanging nodes of Gamma_3 keep their
+   * weights (lost with them) instead of sharing them.
    */
   template <int dim>
   struct Sabotage
@@ -220,6 +222,7 @@ namespace Contact
     double stick_node_velocity                                        = 0.;
     double normal_velocity                                            = 0.;
     double stiffness_factor                                           = 1.;
+    bool   unshared_hanging_weights                                   = false;
   };
 
 

@@ -2,8 +2,9 @@
  * Gamma3Map<dim>: the contact boundary as the self-checks see it
  * (gamma3_map.cc), built from the mesh, the finite element, the mapping and
  * the constraints of V_h alone, not from the friction solver's node list:
- * each node's dofs, its weight m_p = int_Gamma3 phi_p ds and the
- * directions in which V_h fixes it (its tangent plane is what is left).
+ * each node's dofs, its weight m_p = int_Gamma3 psi_p ds (psi_p the basis
+ * function of V_h; hanging nodes are left out) and the directions in
+ * which V_h fixes it (its tangent plane is what is left).
  * Through it the checks read the body's velocity at the nodes and apply
  * the solver's nodal forces to the body, so that a wrong weight, tangent or
  * dof in the solver's map of Gamma_3 is seen instead of shared.

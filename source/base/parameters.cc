@@ -240,8 +240,9 @@ namespace Contact
         "Points 'x, y[, z]' separated by ';' (a corner where the solution is "
         "singular) towards which the mesh is graded: cells closer than R to "
         "a point are refined until their size is at most h (r/R)^gamma, r the "
-        "distance of their center to the point. The refinement must stay away "
-        "from Gamma_3.");
+        "distance of their center to the point. The refinement may reach "
+        "Gamma_3 (hanging nodes there carry no friction unknown; their weight "
+        "goes to the nodes they follow).");
       declare_entry("Refinement radius",
                     "0",
                     Patterns::Double(0),

@@ -3,7 +3,11 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <deal.II/dofs/dof_tools.h>
+
 #include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/affine_constraints.h>
 
 #include <base/dimensions.h>
 #include <core/contact_nodes.h>
@@ -118,10 +122,24 @@ namespace Contact
 
     // @sect4{integrate_contact_faces}
 
-    // This process's part of the nodes of Gamma_3: the faces of its own
-    // cells, keyed by the node's first dof.
+    // What a hanging node of Gamma_3 gives to the nodes its value follows:
+    // its weight and normal, times the constraint's coefficients.
     template <int dim>
-    std::map<types::global_dof_index, ContactNode<dim>>
+    struct HangingShare
+    {
+      double         weight = 0;
+      Tensor<1, dim> normal;
+    };
+
+    // This process's part of the nodes of Gamma_3: the faces of its own
+    // cells, keyed by the node's first dof, and the shares of the hanging
+    // nodes among them (a refined part of Gamma_3 in 3D; doc/algorithm.md):
+    // the friction term takes the nodes of V_h, whose basis functions on
+    // Gamma_3 are psi_q = phi_q + sum_h c_hq phi_h over the hanging nodes h
+    // with u_h = sum_q c_hq u_q, so m_q = int phi_q ds + sum_h c_hq m_h.
+    template <int dim>
+    std::pair<std::map<types::global_dof_index, ContactNode<dim>>,
+              std::map<types::global_dof_index, HangingShare<dim>>>
     integrate_contact_faces(const DiscreteSpace<dim>              &space,
                             const std::vector<types::boundary_id> &ids)
     {
@@ -136,7 +154,13 @@ namespace Contact
       std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
       std::vector<types::global_dof_index> scalar_dofs(
         space.scalar_fe->n_dofs_per_cell());
-      std::map<types::global_dof_index, ContactNode<dim>> nodes;
+      std::map<types::global_dof_index, ContactNode<dim>>  nodes;
+      std::map<types::global_dof_index, HangingShare<dim>> shares;
+      // The hanging nodes' constraints alone: those of V_h also hold the
+      // normal constraints, which mix the components of a node.
+      AffineConstraints<double> hanging(space.locally_relevant_dofs);
+      DoFTools::make_hanging_node_constraints(space.dof_handler, hanging);
+      hanging.close();
 
       auto scalar_cell = space.scalar_dof_handler.begin_active();
       for (const auto &cell : space.dof_handler.active_cell_iterators())
@@ -160,6 +184,27 @@ namespace Contact
                       fe.system_to_component_index(i);
                     if (component != 0)
                       continue;
+                    HangingShare<dim> part;
+                    for (const unsigned int q :
+                         fe_face_values.quadrature_point_indices())
+                      {
+                        const double phi_JxW =
+                          fe_face_values.shape_value_component(i, q, 0) *
+                          fe_face_values.JxW(q);
+                        part.weight += phi_JxW;
+                        part.normal +=
+                          fe_face_values.normal_vector(q) * std::abs(phi_JxW);
+                      }
+                    if (hanging.is_constrained(cell_dofs[i]))
+                      {
+                        for (const auto &[master, c] :
+                             *hanging.get_constraint_entries(cell_dofs[i]))
+                          {
+                            shares[master].weight += c * part.weight;
+                            shares[master].normal += std::abs(c) * part.normal;
+                          }
+                        continue;
+                      }
                     ContactNode<dim> &node = nodes[cell_dofs[i]];
                     for (unsigned int d = 0; d < dim; ++d)
                       node.dofs[d] =
@@ -167,20 +212,12 @@ namespace Contact
                     node.scalar_dof = scalar_dofs[base_index];
                     node.location   = mapping.transform_unit_to_real_cell(
                       cell, fe.base_element(0).unit_support_point(base_index));
-                    for (const unsigned int q :
-                         fe_face_values.quadrature_point_indices())
-                      {
-                        const double phi_JxW =
-                          fe_face_values.shape_value_component(i, q, 0) *
-                          fe_face_values.JxW(q);
-                        node.weight += phi_JxW;
-                        node.normal +=
-                          fe_face_values.normal_vector(q) * std::abs(phi_JxW);
-                      }
+                    node.weight += part.weight;
+                    node.normal += part.normal;
                   }
               }
         }
-      return nodes;
+      return {nodes, shares};
     }
   } // namespace
 
@@ -188,10 +225,11 @@ namespace Contact
   // @sect4{make_contact_nodes}
 
   // Collects the nodes of Gamma_3 with their dofs, the weight
-  // m_p = int_Gamma3 phi_p ds of the nodal ("node-to-rigid") friction and
-  // the outward normal averaged over the faces around the node. A node all
-  // of whose dofs are constrained (where Gamma_3 meets the clamp) has no
-  // friction unknown and is left out.
+  // m_p = int_Gamma3 psi_p ds of the nodal ("node-to-rigid") friction (psi_p
+  // the basis function of V_h: phi_p and the shares of the hanging nodes
+  // that follow p) and the outward normal averaged over the faces around
+  // the node. A node all of whose dofs are constrained (where Gamma_3 meets
+  // the clamp, or a hanging node) has no friction unknown and is left out.
   //
   // Every process keeps every node: the friction problem on Gamma_3 is
   // small and solved redundantly, so that all processes take the same
@@ -201,7 +239,8 @@ namespace Contact
   template <int dim>
   std::vector<ContactNode<dim>>
   make_contact_nodes(const DiscreteSpace<dim>              &space,
-                     const std::vector<types::boundary_id> &contact_ids)
+                     const std::vector<types::boundary_id> &contact_ids,
+                     const bool share_hanging_weights)
   {
     const MPI_Comm communicator = space.mpi_communicator;
     // One record per (process, node) as doubles (dof indices are exact):
@@ -209,8 +248,10 @@ namespace Contact
     // rows, the rows.
     constexpr unsigned int record_size =
       dim + 1 + dim + 1 + dim + 1 + dim * dim;
+    const auto [own_nodes, own_shares] =
+      integrate_contact_faces(space, contact_ids);
     std::vector<double> records;
-    for (const auto &[key, node] : integrate_contact_faces(space, contact_ids))
+    for (const auto &[key, node] : own_nodes)
       {
         const auto constrained =
           fixed_directions<dim>(node.dofs, space.constraints);
@@ -247,6 +288,30 @@ namespace Contact
           for (unsigned int i = 0; i < directions.size(); ++i)
             for (unsigned int d = 0; d < dim; ++d)
               directions[i][d] = r[3 * dim + 3 + i * dim + d];
+        }
+
+    // The hanging nodes' shares, to the nodes they follow (each of which
+    // is a node of a face of Gamma_3 on some process).
+    std::vector<double> share_records;
+    for (const auto &[key, share] : own_shares)
+      if (share_hanging_weights)
+        {
+          share_records.push_back(key);
+          share_records.push_back(share.weight);
+          for (unsigned int d = 0; d < dim; ++d)
+            share_records.push_back(share.normal[d]);
+        }
+    for (const auto &part :
+         Utilities::MPI::all_gather(communicator, share_records))
+      for (auto r = part.begin(); r != part.end(); r += dim + 2)
+        {
+          const auto key = static_cast<types::global_dof_index>(r[0]);
+          AssertThrow(nodes.count(key) == 1,
+                      ExcInternalError("A hanging node of Gamma_3 follows a "
+                                       "node that is not on Gamma_3."));
+          nodes[key].weight += r[1];
+          for (unsigned int d = 0; d < dim; ++d)
+            nodes[key].normal[d] += r[2 + d];
         }
 
     // The axis least aligned with all normals (the first on ties).
@@ -286,11 +351,13 @@ namespace Contact
 
 
 
-#define INSTANTIATE(dim)                                                  \
-  template std::vector<ContactNode<dim>> make_contact_nodes(              \
-    const DiscreteSpace<dim> &, const std::vector<types::boundary_id> &); \
-  template std::vector<Tensor<1, dim>> fixed_directions<dim>(             \
-    const std::array<types::global_dof_index, dim> &,                     \
+#define INSTANTIATE(dim)                                      \
+  template std::vector<ContactNode<dim>> make_contact_nodes(  \
+    const DiscreteSpace<dim> &,                               \
+    const std::vector<types::boundary_id> &,                  \
+    const bool);                                              \
+  template std::vector<Tensor<1, dim>> fixed_directions<dim>( \
+    const std::array<types::global_dof_index, dim> &,         \
     const AffineConstraints<double> &);
 
   CONTACT_INSTANTIATE(INSTANTIATE)

@@ -106,7 +106,9 @@ namespace Contact
     friction_solver = std::make_unique<FrictionSolver<dim>>(
       parameters,
       friction_law,
-      make_contact_nodes(space, parameters.boundary.contact_ids),
+      make_contact_nodes(space,
+                         parameters.boundary.contact_ids,
+                         !sabotage.unshared_hanging_weights),
       space.constraints,
       owned,
       mpi_communicator,

@@ -278,10 +278,11 @@ namespace Contact
 
   // @sect4{FrictionSolver::delassus_operator_pays}
 
-  // 'auto' takes the Delassus path while Gamma_3 has at most 2000
-  // tangential unknowns (every Newton step factorises a dense block of D,
-  // O(n^3)): the paper's scene in 2D down to h = 1/1024, 3D boxes like
-  // prm/barboteu2015_3d.prm down to h = 1/32. Without CHOLMOD's triangular
+  // 'auto' takes the Delassus path while D and W = D^{-1} fit in 1 GB
+  // (7900 tangential unknowns of Gamma_3): its Newton steps factorise a
+  // dense block of D, O(n^3), but each of the constraints path's refactorises
+  // K, and bench/auto_path.md measures the Delassus path ahead on the 3D
+  // scene at 2400 and 4224 unknowns of Gamma_3. Without CHOLMOD's triangular
   // factor it also needs Z = K^{-1} C^T, one solve per column and dense:
   // taken with a direct solver while Z fits in 1 GB per process; with
   // CG-AMG its columns would cost as many iterative solves as the

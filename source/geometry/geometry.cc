@@ -38,9 +38,8 @@ namespace Contact
     // The smallest cells, at the point, have the size of about
     // (h R^-gamma)^(1/(1-gamma)), h^(3/2) for gamma = 1/3. The target size is
     // proportional to h, so the meshes of a convergence study stay nested.
-    // Hanging nodes on Gamma_3 would need the nodal friction weights of the
-    // constrained basis; they are excluded for now
-    // (check_grading_misses_contact()).
+    // Cells at Gamma_3 may be refined: hanging nodes there share their
+    // friction weight with the nodes they follow (contact_nodes.cc).
     template <int dim>
     void grade_towards_points(const GeometryParameters &geometry,
                               const MPI_Comm            communicator,
@@ -146,42 +145,6 @@ namespace Contact
     }
 
 
-    // @sect4{check_grading_misses_contact}
-
-    // The cells at Gamma_3 must all be of one level.
-    template <int dim>
-    void check_grading_misses_contact(const BoundaryParameters &boundary,
-                                      const MPI_Comm            communicator,
-                                      const Triangulation<dim> &mesh)
-    {
-      const std::set<types::boundary_id> contact_ids(
-        boundary.contact_ids.begin(), boundary.contact_ids.end());
-      unsigned int finest = 0, coarsest = numbers::invalid_unsigned_int;
-      for (const auto &cell : mesh.active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() &&
-                contact_ids.count(face->boundary_id()) != 0)
-              {
-                finest   = std::max<unsigned int>(finest, cell->level());
-                coarsest = std::min<unsigned int>(coarsest, cell->level());
-              }
-      finest   = Utilities::MPI::max(finest, communicator);
-      coarsest = Utilities::MPI::min(coarsest, communicator);
-      AssertThrow(finest <= coarsest,
-                  ExcMessage("The local refinement of "
-                             "'" +
-                             Entry::refinement_points +
-                             "' reaches Gamma_3, "
-                             "which is not supported yet: choose points away "
-                             "from '" +
-                             Entry::contact_boundary_ids +
-                             "' "
-                             "or a smaller '" +
-                             Entry::refinement_radius + "'."));
-    }
-
-
     // @sect4{check_boundary_ids}
 
     // A boundary id in the .prm that the mesh does not have would silently
@@ -256,7 +219,6 @@ namespace Contact
       {
         check_points_in_body(geometry, communicator, mesh);
         grade_towards_points(geometry, communicator, mesh);
-        check_grading_misses_contact(parameters.boundary, communicator, mesh);
       }
     check_boundary_ids(parameters.boundary, mesh);
   }

@@ -5,7 +5,12 @@
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
 
+#include <deal.II/dofs/dof_tools.h>
+
 #include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
 
 #include <deal.II/numerics/rtree.h>
 
@@ -22,9 +27,9 @@ namespace Contact
   // @sect4{Gamma3Map::Gamma3Map}
 
   // Each process integrates over the Gamma_3 faces of its own cells the
-  // weight int phi_p ds with the space's face rule, and reads the
+  // weight int psi_p ds with the space's face rule, and reads the
   // constraints of the nodes there; the parts are gathered on every
-  // process and the weights summed.
+  // process.
   template <int dim>
   Gamma3Map<dim>::Gamma3Map(const DiscreteSpace<dim> &discrete_space,
                             const std::vector<types::boundary_id> &contact_ids)
@@ -38,6 +43,41 @@ namespace Contact
                                 space.face_quadrature,
                                 update_values | update_JxW_values);
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+
+    // The weights int psi_p ds of the basis functions psi_p of V_h on
+    // Gamma_3, assembled as a load and condensed by the hanging nodes'
+    // constraints (a hanging node's integral goes to the nodes it follows;
+    // the friction solver adds these shares node by node instead).
+    AffineConstraints<double> hanging(space.locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(space.dof_handler, hanging);
+    hanging.close();
+    VectorType     assembled(space.locally_owned_dofs, space.mpi_communicator);
+    Vector<double> cell_weights(fe.n_dofs_per_cell());
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              ids.count(cell->face(f)->boundary_id()) != 0)
+            {
+              integrals.reinit(cell, f);
+              cell->get_dof_indices(cell_dofs);
+              cell_weights = 0;
+              for (unsigned int j = 0; j < fe.n_dofs_per_face(f); ++j)
+                {
+                  const unsigned int i = fe.face_to_cell_index(j, f);
+                  if (fe.system_to_component_index(i).first == 0)
+                    for (const unsigned int q :
+                         integrals.quadrature_point_indices())
+                      cell_weights[i] +=
+                        integrals.shape_value_component(i, q, 0) *
+                        integrals.JxW(q);
+                }
+              hanging.distribute_local_to_global(cell_weights,
+                                                 cell_dofs,
+                                                 assembled);
+            }
+    assembled.compress(VectorOperation::add);
+    const VectorType weights = space.ghosted(assembled);
 
     // Per node and process: dofs, location, weight, the number of fixed
     // directions and the directions.
@@ -56,7 +96,9 @@ namespace Contact
                   const unsigned int i = fe.face_to_cell_index(j, f);
                   const auto [component, base_index] =
                     fe.system_to_component_index(i);
-                  if (component != 0)
+                  // A hanging node is no node of V_h (with Q2 it may lie
+                  // where the coarse edge's own node is).
+                  if (component != 0 || hanging.is_constrained(cell_dofs[i]))
                     continue;
                   std::array<types::global_dof_index, dim> dofs;
                   for (unsigned int d = 0; d < dim; ++d)
@@ -68,12 +110,7 @@ namespace Contact
                       cell, fe.base_element(0).unit_support_point(base_index));
                   for (unsigned int d = 0; d < dim; ++d)
                     records.push_back(x[d]);
-                  double weight = 0;
-                  for (const unsigned int q :
-                       integrals.quadrature_point_indices())
-                    weight += integrals.shape_value_component(i, q, 0) *
-                              integrals.JxW(q);
-                  records.push_back(weight);
+                  records.push_back(weights(dofs[0]));
                   const auto fixed =
                     fixed_directions<dim>(dofs, space.constraints);
                   records.push_back(fixed.size());
@@ -90,10 +127,10 @@ namespace Contact
         {
           const auto key   = static_cast<types::global_dof_index>(r[0]);
           const bool first = (by_dof.count(key) == 0);
-          Node      &node  = by_dof[key];
-          node.weight += r[2 * dim];
           if (!first)
             continue;
+          Node &node  = by_dof[key];
+          node.weight = r[2 * dim];
           for (unsigned int d = 0; d < dim; ++d)
             {
               node.dofs[d]     = static_cast<types::global_dof_index>(r[d]);

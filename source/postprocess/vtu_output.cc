@@ -5,7 +5,11 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/dofs/dof_tools.h>
+
 #include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/affine_constraints.h>
 
 #include <deal.II/numerics/data_out.h>
 
@@ -64,6 +68,24 @@ namespace Contact
                        std::to_string(max_vtu_files) + " VTU files)");
          return interval;
        }});
+
+    // The value at each hanging node that the continuity of a field asks
+    // for, from the nodes it follows: the fields of Gamma_3 are set at the
+    // friction nodes only, and a hanging node of Gamma_3 is none.
+    template <typename Vector>
+    void set_hanging_values(const AffineConstraints<double> &hanging,
+                            const IndexSet                  &lines,
+                            Vector                          &field)
+    {
+      for (const auto &line : hanging.get_lines())
+        if (lines.is_element(line.index))
+          {
+            double value = 0;
+            for (const auto &[dof, c] : line.entries)
+              value += c * field(dof);
+            field(line.index) = value;
+          }
+    }
   } // namespace
 
 
@@ -129,6 +151,7 @@ namespace Contact
                                const unsigned int process) const;
     void        write_vtu();
     void        cell_average_stress(Pending &output) const;
+    void        add_hanging_values(Pending &output) const;
     void        add_vtu_fields(Pending &output) const;
     void        write_vtu_piece(Pending &output, const std::string &file) const;
     void        finish_vtu();
@@ -260,6 +283,7 @@ namespace Contact
               -node.tangential_vector(friction_force, p)[d] / node.weight;
       }
     output->friction_traction.update_ghost_values();
+    add_hanging_values(*output);
     cell_average_stress(*output);
     add_vtu_fields(*output);
 
@@ -277,6 +301,35 @@ namespace Contact
 
 
   // @sect4{VtuOutput::cell_average_stress}
+
+  // Hanging nodes of Gamma_3 (a refined part of it) carry no friction
+  // unknown: their fields follow from the nodes they hang on.
+  template <int dim>
+  void VtuOutput<dim>::add_hanging_values(Pending &output) const
+  {
+    const DiscreteSpace<dim> &space = this->space();
+    if (!space.dof_handler.get_triangulation().has_hanging_nodes())
+      return;
+    IndexSet scalar_relevant;
+    DoFTools::extract_locally_relevant_dofs(space.scalar_dof_handler,
+                                            scalar_relevant);
+    AffineConstraints<double> scalar_hanging(scalar_relevant);
+    DoFTools::make_hanging_node_constraints(space.scalar_dof_handler,
+                                            scalar_hanging);
+    scalar_hanging.close();
+    for (Vector<double> *field :
+         {&output.status, &output.slip_rate, &output.friction_bound})
+      set_hanging_values(scalar_hanging, scalar_relevant, *field);
+
+    AffineConstraints<double> hanging(space.locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(space.dof_handler, hanging);
+    hanging.close();
+    set_hanging_values(hanging,
+                       space.locally_owned_dofs,
+                       output.friction_traction);
+    output.friction_traction.update_ghost_values();
+  }
+
 
   // The stress sigma = A eps(w) + B eps(u) of (3.1) averaged over each
   // cell, and the von Mises value of that average (in 2D plane strain
