@@ -123,6 +123,14 @@ namespace Contact
     inline const std::string cost_model        = "Accuracy/Cost model";
     inline const std::string max_predicted_time =
       "Accuracy/Maximum predicted time";
+    inline const std::string adaptation_cycles = "Mesh adaptation/Cycles";
+    inline const std::string refine_fraction =
+      "Mesh adaptation/Refine fraction";
+    inline const std::string coarsen_fraction =
+      "Mesh adaptation/Coarsen fraction";
+    inline const std::string target_unknowns =
+      "Mesh adaptation/Target unknowns";
+    inline const std::string max_levels = "Mesh adaptation/Max levels";
 
     /** All of the above, for the test. */
     inline std::vector<std::string> all()
@@ -184,7 +192,12 @@ namespace Contact
               target_error_type,
               target_quantity,
               cost_model,
-              max_predicted_time};
+              max_predicted_time,
+              adaptation_cycles,
+              refine_fraction,
+              coarsen_fraction,
+              target_unknowns,
+              max_levels};
     }
   } // namespace Entry
 
@@ -510,6 +523,26 @@ namespace Contact
    * read, and the values of those that one postprocessor alone reads
    * (source/postprocess/), which it declares, parses and checks itself.
    */
+  /** The subsection Mesh adaptation: pilot runs that adapt the mesh to
+   *  the whole run (drivers/mesh_adaptation.h). */
+  struct MeshAdaptationParameters
+  {
+    /** 0: off; else the number of pilot runs, each on the mesh its
+     *  predecessor adapted. */
+    unsigned int cycles;
+    /** The shares of the cells refined and coarsened per cycle. */
+    double refine_fraction;
+    double coarsen_fraction;
+    /** 0: refine by the fraction; else refine towards this many unknowns
+     *  at the last cycle. */
+    unsigned int target_unknowns;
+    /** The finest cells: this many levels below the scene's coarsest. */
+    unsigned int max_levels;
+
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
+  };
+
   struct OutputParameters
   {
     std::string         directory;
@@ -579,6 +612,7 @@ namespace Contact
     VerificationParameters     verification;
     ConvergenceStudyParameters convergence_study;
     AccuracyParameters         accuracy;
+    MeshAdaptationParameters   mesh_adaptation;
     OutputParameters           output;
 
     /** The .prm text of all entries as they were used, for the results. */
@@ -593,6 +627,7 @@ namespace Contact
 
   private:
     void check_error_estimate() const;
+    void check_mesh_adaptation() const;
     void check_target_quantity() const;
   };
 

@@ -36,6 +36,7 @@
 #include <core/discrete_space.h>
 #include <core/loads.h>
 #include <core/manufactured_solution.h>
+#include <core/mesh_plan.h>
 #include <core/step_state.h>
 #include <gamma3/factorization.h>
 #include <gamma3/friction.h>
@@ -151,6 +152,10 @@ namespace Contact
      *  driver collecting solutions at common times); before run(). */
     void add_postprocessor(std::unique_ptr<Postprocessor<dim>> postprocessor);
 
+    /** Runs on the scene's mesh changed by the cycles of `plan` (a mesh
+     *  adaptation); before run(). */
+    void adapt_mesh(const MeshPlan &plan);
+
     unsigned int           get_step_number() const;
     const DoFHandler<dim> &get_dof_handler() const;
     const Mapping<dim>    &get_mapping() const;
@@ -219,7 +224,9 @@ namespace Contact
     const std::unique_ptr<const ManufacturedSolution<dim>> exact_solution;
 
     // Mesh, finite element space, constraints (setup.cc) and the loads on
-    // them (loads.cc).
+    // them (loads.cc). The mesh is the Geometry's, changed by the cycles of
+    // a mesh adaptation (drivers/mesh_adaptation.h).
+    MeshPlan                          mesh_plan;
     DiscreteSpace<dim>                space;
     const std::unique_ptr<Loads<dim>> loads;
 

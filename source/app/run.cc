@@ -12,6 +12,7 @@
 #include <core/contact_problem.h>
 #include <drivers/convergence_study.h>
 #include <drivers/error_estimate.h>
+#include <drivers/mesh_adaptation.h>
 #include <drivers/target_error.h>
 
 #include <iostream>
@@ -104,6 +105,8 @@ namespace Contact
     {
       if (parameters.convergence_study.levels > 0)
         run_convergence_study<dim>(parameters);
+      else if (parameters.mesh_adaptation.cycles > 0)
+        run_with_mesh_adaptation<dim>(parameters);
       else if (parameters.accuracy.target_error > 0)
         run_to_target<dim>(parameters);
       else if (parameters.accuracy.estimate_error)

@@ -923,6 +923,71 @@ namespace Contact
   }
 
 
+  // @sect3{Mesh adaptation}
+
+  void MeshAdaptationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh adaptation");
+    {
+      prm.declare_entry(
+        "Cycles",
+        "0",
+        Patterns::Integer(0, 20),
+        "0: the mesh of the Geometry. n > 0: n pilot runs of the whole scene "
+        "(each in its own directory adaptation-cycle-c), each on the mesh its "
+        "predecessor refined and coarsened from indicators gathered over all "
+        "its steps (Kelly's of the displacement and of the velocity, and on "
+        "Gamma_3 the variation of the slip rate over a face; each the largest "
+        "over the steps, as a share of its largest over the cells); then the "
+        "scene runs on the adapted mesh. The pilots write indicators_0.pvtu; "
+        "adapted_mesh.txt holds the mesh's cycles, which --resume reads.");
+      prm.declare_entry("Refine fraction",
+                        "0.3",
+                        Patterns::Double(0, 1),
+                        "The share of the cells, those with the largest "
+                        "indicators, refined per cycle.");
+      prm.declare_entry("Coarsen fraction",
+                        "0",
+                        Patterns::Double(0, 1),
+                        "The share of the cells, those with the smallest "
+                        "indicators, coarsened per cycle (never coarser than "
+                        "the Geometry's coarsest cells).");
+      prm.declare_entry(
+        "Target unknowns",
+        "0",
+        Patterns::Integer(0),
+        "0: refine by 'Refine fraction'. n > 0: refine as many cells per "
+        "cycle as multiply the unknowns by equal factors to about n at the "
+        "last cycle.");
+      prm.declare_entry("Max levels",
+                        "4",
+                        Patterns::Integer(0, 12),
+                        "Cells are refined at most this many times beyond "
+                        "the Geometry's coarsest cells.");
+    }
+    prm.leave_subsection();
+  }
+
+  void MeshAdaptationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh adaptation");
+    {
+      cycles           = prm.get_integer("Cycles");
+      refine_fraction  = prm.get_double("Refine fraction");
+      coarsen_fraction = prm.get_double("Coarsen fraction");
+      target_unknowns  = prm.get_integer("Target unknowns");
+      max_levels       = prm.get_integer("Max levels");
+    }
+    prm.leave_subsection();
+    AssertThrow(refine_fraction + coarsen_fraction <= 1,
+                ExcMessage("Entries '" + Entry::refine_fraction +
+                           "' = " + number_text(refine_fraction) + " and '" +
+                           Entry::coarsen_fraction +
+                           "' = " + number_text(coarsen_fraction) +
+                           ": allowed is a sum of at most 1."));
+  }
+
+
   // @sect3{Accuracy}
 
   const ChoiceTable<AccuracyParameters::TargetErrorType> &
@@ -1202,8 +1267,34 @@ namespace Contact
     VerificationParameters::declare_parameters(prm);
     ConvergenceStudyParameters::declare_parameters(prm);
     AccuracyParameters::declare_parameters(prm);
+    MeshAdaptationParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
   }
+
+  // A mesh adaptation refines the cells of p4est's forest by their ids,
+  // and runs the scene as it is several times: not as a level of a study,
+  // a coarse run of an estimate or a pilot of a target (yet).
+  void Parameters::check_mesh_adaptation() const
+  {
+    if (mesh_adaptation.cycles == 0)
+      return;
+    const std::string adapting =
+      "Entry '" + Entry::adaptation_cycles +
+      "' = " + std::to_string(mesh_adaptation.cycles) + " adapts the mesh: ";
+    AssertThrow(geometry.cell_shape != GeometryParameters::CellShape::simplex,
+                ExcMessage(adapting +
+                           "it refines quadrilaterals and "
+                           "hexahedra only; allowed with it is '" +
+                           Entry::cell_shape + "' = hypercube."));
+    for (const auto &[entry, set] :
+         {std::pair{Entry::levels, convergence_study.levels > 0},
+          std::pair{Entry::estimate_error, accuracy.estimate_error},
+          std::pair{Entry::target_error, accuracy.target_error > 0}})
+      AssertThrow(!set,
+                  ExcMessage(adapting + "it cannot be combined with '" + entry +
+                             "' yet; allowed is Cycles = 0 there."));
+  }
+
 
   // An error estimate runs the scene twice more, with h and k doubled and
   // quadrupled, and a target's pilots do so in h and in k separately: the
@@ -1360,6 +1451,7 @@ namespace Contact
     verification.parse_parameters(prm);
     convergence_study.parse_parameters(prm);
     accuracy.parse_parameters(prm);
+    mesh_adaptation.parse_parameters(prm);
     output.parse_parameters(prm, dimension);
 
     // On a P2 triangle the integral of a vertex basis function is zero:
@@ -1390,6 +1482,7 @@ namespace Contact
                            "study ('Convergence study/Levels' > 0) cannot be "
                            "resumed; allowed is Resume = false there."));
     check_error_estimate();
+    check_mesh_adaptation();
 
     // The parameters a run writes run it again from its start: a resumed
     // run computes what the run without the break computes

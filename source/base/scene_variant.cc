@@ -82,8 +82,9 @@ namespace Contact
       entries[Entry::finite_element_degree] = std::to_string(variant.degree);
       entries[Entry::time_step] =
         exact_text(scene.time.end_time / variant.n_steps);
-      entries[Entry::output_directory] = variant.directory;
-      entries[Entry::levels]           = "0";
+      entries[Entry::output_directory]  = variant.directory;
+      entries[Entry::levels]            = "0";
+      entries[Entry::adaptation_cycles] = "0";
       // The run that a target chose runs with its error estimate.
       entries[Entry::estimate_error] = bool_text(
         !quiet && (accuracy.estimate_error || accuracy.target_error > 0));

@@ -106,6 +106,13 @@ namespace Contact
   }
 
 
+  template <int dim>
+  void ContactProblem<dim>::adapt_mesh(const MeshPlan &plan)
+  {
+    mesh_plan = plan;
+  }
+
+
   // @sect4{ContactProblem::run}
 
   // Set-up, the initial state, the steps, and what the run gives back. The
@@ -434,6 +441,7 @@ namespace Contact
   template void ContactProblem<dim>::add_postprocessor(                         \
     std::unique_ptr<Postprocessor<dim>>);                                       \
   template RunSummary ContactProblem<dim>::run();                               \
+  template void       ContactProblem<dim>::adapt_mesh(const MeshPlan &);        \
   template void       ContactProblem<dim>::prepare_output_directory();          \
   template void       ContactProblem<dim>::time_loop();                         \
   template void ContactProblem<dim>::print_timings(const unsigned int) const;   \

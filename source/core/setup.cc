@@ -52,8 +52,11 @@ namespace Contact
     if (fully_distributed == nullptr)
       {
         geometry->create_mesh(*space.triangulation);
+        mesh_plan.replay(*space.triangulation);
         return;
       }
+    AssertThrow(mesh_plan.n_cycles() == 0,
+                ExcInternalError("A mesh adaptation on simplices."));
     Triangulation<dim> whole;
     geometry->create_mesh(whole);
     GridTools::partition_triangulation(

@@ -17,7 +17,11 @@
    round-off quantities such as a friction dissipation of 1e-26 while all
    stick), so the time series must agree to 1e-10 of each column's largest
    value (the energy residual: of the largest external work), and the
-   PVTU and PVD records, which are text, exactly. */
+   PVTU and PVD records, which are text, exactly.
+
+   Last, the same on one process on a mesh adapted in two cycles ('Mesh
+   adaptation/Cycles' = 2): the resumed run reads the mesh's cycles from
+   adapted_mesh.txt, and must again reproduce the uninterrupted run. */
 
 #include <fcntl.h>
 #include <signal.h>
@@ -266,16 +270,22 @@ const char *yes_no(const bool condition)
 
 // The uninterrupted run and the killed and resumed one, in directories
 // named after the number of processes, compared.
-void kill_and_resume(const unsigned int processes)
+void kill_and_resume(const unsigned int       processes,
+                     const std::string       &name    = "",
+                     std::vector<std::string> variant = {})
 {
-  const std::string full   = "run-full-" + std::to_string(processes),
-                    killed = "run-killed-" + std::to_string(processes);
+  const std::string full   = "run-full-" + std::to_string(processes) + name,
+                    killed = "run-killed-" + std::to_string(processes) + name;
+  const auto with_variant  = [&](std::vector<std::string> extra) {
+    extra.insert(extra.begin(), variant.begin(), variant.end());
+    return extra;
+  };
   for (const std::string &directory : {full, killed})
     {
       fs::remove_all(directory);
       fs::remove(directory + ".log");
     }
-  wait_for(start(processes, full, {}));
+  wait_for(start(processes, full, with_variant({})));
 
   // A loaded machine may let the run finish before the kill comes: then it
   // is started again, at most three times.
@@ -286,7 +296,9 @@ void kill_and_resume(const unsigned int processes)
       fs::remove_all(killed);
       fs::remove(killed + ".log");
       const pid_t job =
-        start(processes, killed, {"--set", "Output/Checkpoint interval=5"});
+        start(processes,
+              killed,
+              with_variant({"--set", "Output/Checkpoint interval=5"}));
       bool still_running = true;
       // Header and steps 0 ... 36: 38 lines.
       while (still_running && count_lines(killed + "/time_series.csv") < 38)
@@ -302,8 +314,10 @@ void kill_and_resume(const unsigned int processes)
   std::cout << "killed by SIGKILL mid-run: "
             << yes_no(killed_by_sigkill(kill_status)) << std::endl;
 
-  const int  resume_status = wait_for(start(
-    processes, killed, {"--set", "Output/Checkpoint interval=5", "--resume"}));
+  const int resume_status = wait_for(
+    start(processes,
+          killed,
+          with_variant({"--set", "Output/Checkpoint interval=5", "--resume"})));
   const bool resumed =
     WIFEXITED(resume_status) && WEXITSTATUS(resume_status) == 0;
   std::cout << "resumed run exited with status 0: " << yes_no(resumed)
@@ -379,4 +393,8 @@ int main()
   setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 0);
   std::cout << "On two processes (mpirun -np 2):" << std::endl;
   kill_and_resume(2);
+  // The run on a mesh adapted by two pilots: --resume takes the mesh from
+  // adapted_mesh.txt instead of running the pilots again.
+  std::cout << "On a mesh adapted in two cycles, one process:" << std::endl;
+  kill_and_resume(1, "-adapted", {"--set", "Mesh adaptation/Cycles=2"});
 }

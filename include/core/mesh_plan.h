@@ -1,0 +1,54 @@
+/**
+ * MeshPlan: how a mesh adaptation (drivers/mesh_adaptation.h) changed the
+ * scene's mesh, cycle by cycle: the cells it refined and those it
+ * coarsened, by their CellId. The scene's mesh is built as always and the
+ * cycles are then replayed (mesh_plan.cc), on one process or on several:
+ * a CellId names the same cell of p4est's forest on any number of
+ * processes, so every run of the plan has the same mesh.
+ */
+#ifndef contact_mesh_plan_h
+#define contact_mesh_plan_h
+
+#include <deal.II/grid/tria.h>
+
+#include <string>
+#include <vector>
+
+namespace Contact
+{
+  using namespace dealii;
+
+  struct MeshPlan
+  {
+    /** Per cycle, the cells flagged for refinement and for coarsening (as
+     *  CellId::to_string()), on every process. */
+    std::vector<std::vector<std::string>> refined, coarsened;
+
+    unsigned int n_cycles() const
+    {
+      return refined.size();
+    }
+
+    /** Flags the cells of `mesh` (each process its own) that the plan names
+     *  for its cycle `cycle` and refines and coarsens them (collective). */
+    template <int dim>
+    void replay_cycle(const unsigned int cycle, Triangulation<dim> &mesh) const;
+
+    /** Replays every cycle (collective). */
+    template <int dim>
+    void replay(Triangulation<dim> &mesh) const;
+
+    /** The cells now flagged on `mesh`, gathered from every process, as
+     *  a new cycle (collective). */
+    template <int dim>
+    void add_cycle_from_flags(const Triangulation<dim> &mesh);
+
+    /** As text, one line per cycle and kind ("refine <ids>" or "coarsen
+     *  <ids>"), and back; read() throws with the file's name on a line it
+     *  cannot read. */
+    std::string     text() const;
+    static MeshPlan read(const std::string &file_name);
+  };
+} // namespace Contact
+
+#endif

@@ -1,0 +1,22 @@
+/**
+ * 'Mesh adaptation/Cycles' > 0: pilot runs of the whole scene, each on the
+ * mesh its predecessor adapted from error indicators gathered over all of
+ * its steps, and then the run on the adapted mesh (mesh_adaptation.cc).
+ */
+#ifndef contact_mesh_adaptation_h
+#define contact_mesh_adaptation_h
+
+#include <base/parameters.h>
+
+namespace Contact
+{
+  /** Runs the pilots of `scene` (each in its own subdirectory
+   *  adaptation-cycle-c), then the scene on the adapted mesh; writes the
+   *  cycles' table (adaptation.txt) and the adapted mesh's cycles
+   *  (adapted_mesh.txt, which --resume reads instead of running the pilots
+   *  again). */
+  template <int dim>
+  void run_with_mesh_adaptation(const Parameters &scene);
+} // namespace Contact
+
+#endif

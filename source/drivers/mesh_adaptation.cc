@@ -1,0 +1,429 @@
+/* ---------------------------------------------------------------------
+ * A mesh adapted to the whole run ('Mesh adaptation/Cycles' > 0).
+ *
+ * Each cycle runs the scene (a pilot: quiet, in adaptation-cycle-c) on the
+ * mesh of the cycles before, and gathers three indicators per cell over
+ * its steps:
+ *   - Kelly's indicator of the displacement u_n: the V-norm of u at T is
+ *     the error a user reads;
+ *   - Kelly's indicator of the velocity w_n, the scheme's unknown, in which
+ *     the waves and the slip front move;
+ *   - at Gamma_3, the variation of the slip rate over the cell's face,
+ *     times the square root of the face's size: the slip rate changes
+ *     fastest at the slip front.
+ * Each is the largest over the steps, not the sum: the error at T carries
+ * the errors of every step, so a front that passes a cell once must refine
+ * it as much as one that stays, and a sum would favour cells where
+ * something happens long over cells where it happens briefly (and grow
+ * with the number of steps). Each is then divided by its largest value
+ * over the cells: the three have different units and are compared as
+ * shares of their worst cell; a cell's indicator is the largest of its
+ * three shares.
+ *
+ * The cells with the largest indicators are refined (a fraction of the
+ * cells, or as many as reach the target number of unknowns at the last
+ * cycle by equal factors), those with the smallest coarsened, at most
+ * 'Max levels' beyond the scene's coarsest cells and never coarser than
+ * them. The scene then runs once more on the adapted mesh, with its own
+ * output; K is factorised once, as on any mesh.
+ * --------------------------------------------------------------------- */
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/table_handler.h>
+
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/error_estimator.h>
+
+#include <base/dimensions.h>
+#include <base/scene_variant.h>
+#include <core/contact_problem.h>
+#include <core/mesh_plan.h>
+#include <core/output_directory.h>
+#include <core/postprocessor.h>
+#include <drivers/error_estimate.h>
+#include <drivers/mesh_adaptation.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace Contact
+{
+  namespace
+  {
+    // What an adaptation writes into its output directory: the cycles'
+    // table, the adapted mesh's cycles, and the pilots' runs (kept by the
+    // run on the adapted mesh).
+    const ResultFiles adaptation_files("adaptation\\.txt|adapted_mesh\\.txt");
+    const ResultDirectories cycle_runs("adaptation-cycle-[0-9]+", true);
+    const ResultFiles       indicator_files("indicators_0(\\.[0-9]+)?\\.p?vtu");
+
+    // The shares of the indicators are compared after rounding to this
+    // resolution, so that the cells chosen do not depend on the round-off
+    // of the solves (which differs between one and several processes).
+    constexpr double share_resolution = 1e-6;
+
+    std::ostream &console()
+    {
+      static std::ofstream dropped;
+      return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? std::cout :
+                                                                     dropped;
+    }
+
+
+    // @sect3{The indicators of a pilot}
+
+    // Gathers the indicators over the pilot's steps and, at its end,
+    // chooses the cells of the next cycle, adds them to the plan and writes
+    // the indicators (indicators_0.pvtu). It sets the refinement flags of
+    // the pilot's mesh to choose, reads them back and clears them: the
+    // pilot's results are not touched.
+    template <int dim>
+    class MeshIndicators : public Postprocessor<dim>
+    {
+    public:
+      MeshIndicators(const MeshAdaptationParameters &adaptation,
+                     const unsigned int              cycles_left,
+                     unsigned int                   &base_level,
+                     MeshPlan                       &plan)
+        : adaptation(adaptation)
+        , cycles_left(cycles_left)
+        , base_level(base_level)
+        , plan(plan)
+      {}
+
+      void initialize() override
+      {
+        const auto &nodes = this->friction_solver().boundary().nodes;
+        for (unsigned int p = 0; p < nodes.size(); ++p)
+          node_of_dof[nodes[p].dofs[0]] = p;
+        for (Vector<float> &field : largest)
+          field.reinit(this->space().triangulation->n_active_cells());
+        // The first pilot runs on the scene's mesh.
+        if (plan.n_cycles() == 0)
+          {
+            unsigned int coarsest = std::numeric_limits<unsigned int>::max();
+            for (const auto &cell :
+                 this->space().triangulation->active_cell_iterators())
+              if (cell->is_locally_owned())
+                coarsest = std::min<unsigned int>(coarsest, cell->level());
+            base_level =
+              Utilities::MPI::min(coarsest, this->space().mpi_communicator);
+          }
+      }
+
+      void after_step(const StepStatistics &) override
+      {
+        const DiscreteSpace<dim> &space = this->space();
+        const std::map<types::boundary_id, const Function<dim> *> no_neumann;
+        Vector<float> estimate(space.triangulation->n_active_cells());
+        unsigned int  field = 0;
+        for (const VectorType *solution :
+             {&this->state().displacement, &this->state().velocity})
+          {
+            KellyErrorEstimator<dim>::estimate(*space.mapping,
+                                               space.dof_handler,
+                                               space.face_quadrature,
+                                               no_neumann,
+                                               space.ghosted(*solution),
+                                               estimate);
+            keep_largest(estimate, largest[field++]);
+          }
+        slip_rate_variation(estimate);
+        keep_largest(estimate, largest[2]);
+      }
+
+      void end() override
+      {
+        Triangulation<dim> &mesh      = *this->space().triangulation;
+        const Vector<float> indicator = shares();
+        choose_cells(indicator, mesh);
+        Vector<float> chosen(indicator.size());
+        for (const auto &cell : mesh.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              chosen[cell->active_cell_index()] = cell->refine_flag_set() ? 1 :
+                                                  cell->coarsen_flag_set() ?
+                                                                            -1 :
+                                                                            0;
+              cell->clear_refine_flag();
+              cell->clear_coarsen_flag();
+            }
+        write_indicators(indicator, chosen);
+      }
+
+    private:
+      static void keep_largest(const Vector<float> &estimate,
+                               Vector<float>       &field)
+      {
+        for (unsigned int c = 0; c < field.size(); ++c)
+          field[c] = std::max(field[c], estimate[c]);
+      }
+
+      // sqrt(size of the face) (max - min of the slip rates of its friction
+      // nodes), on the cells with a face on Gamma_3; 0 elsewhere.
+      void slip_rate_variation(Vector<float> &estimate) const
+      {
+        estimate                         = 0;
+        const DiscreteSpace<dim> &space  = this->space();
+        const FiniteElement<dim> &fe     = space.fe;
+        const auto               &gamma3 = this->friction_solver().boundary();
+        const Vector<double>     &slip_velocity =
+          this->friction_solver().state().slip_velocity;
+        const std::vector<types::boundary_id> &ids =
+          this->parameters().boundary.contact_ids;
+        const std::set<types::boundary_id> contact_ids(ids.begin(), ids.end());
+        std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+        for (const auto &cell : space.dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  contact_ids.count(cell->face(f)->boundary_id()) != 0)
+                {
+                  cell->get_dof_indices(dofs);
+                  double lowest  = std::numeric_limits<double>::max();
+                  double highest = -lowest;
+                  for (unsigned int j = 0; j < fe.n_dofs_per_face(f); ++j)
+                    {
+                      // Other components, hanging nodes and clamped nodes
+                      // are no friction nodes.
+                      const auto node =
+                        node_of_dof.find(dofs[fe.face_to_cell_index(j, f)]);
+                      if (node == node_of_dof.end())
+                        continue;
+                      const double rate =
+                        gamma3.nodes[node->second]
+                          .tangential_vector(slip_velocity, node->second)
+                          .norm();
+                      lowest  = std::min(lowest, rate);
+                      highest = std::max(highest, rate);
+                    }
+                  if (highest >= lowest)
+                    estimate[cell->active_cell_index()] =
+                      std::max<float>(estimate[cell->active_cell_index()],
+                                      std::sqrt(cell->face(f)->diameter()) *
+                                        (highest - lowest));
+                }
+      }
+
+      // Each indicator as a share of its largest value over the cells,
+      // rounded to share_resolution; a cell's is the largest of its three.
+      Vector<float> shares() const
+      {
+        Vector<float> result(largest[0].size());
+        for (const Vector<float> &field : largest)
+          {
+            const double worst =
+              Utilities::MPI::max(static_cast<double>(field.linfty_norm()),
+                                  this->space().mpi_communicator);
+            if (!(worst > 0))
+              continue;
+            for (unsigned int c = 0; c < field.size(); ++c)
+              result[c] = std::max<float>(result[c],
+                                          std::round(field[c] / worst /
+                                                     share_resolution) *
+                                            share_resolution);
+          }
+        return result;
+      }
+
+      // The fraction of the cells to refine: the entry's, or with a target
+      // number of unknowns the share that multiplies them by
+      // (target / now)^(1 / cycles left), each refined cell adding
+      // 2^dim - 1 cells and unknowns growing like cells.
+      double refine_fraction() const
+      {
+        if (adaptation.target_unknowns == 0)
+          return adaptation.refine_fraction;
+        const double now =
+          static_cast<double>(this->space().dof_handler.n_dofs());
+        const double factor =
+          std::pow(adaptation.target_unknowns / now, 1. / cycles_left);
+        return std::clamp((factor - 1.) / ((1 << dim) - 1), 0., 1.);
+      }
+
+      void choose_cells(const Vector<float> &indicator,
+                        Triangulation<dim>  &mesh)
+      {
+        auto *distributed =
+          dynamic_cast<parallel::distributed::Triangulation<dim> *>(&mesh);
+        AssertThrow(distributed != nullptr,
+                    ExcInternalError("Mesh adaptation needs p4est's mesh."));
+        parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+          *distributed,
+          indicator,
+          refine_fraction(),
+          adaptation.coarsen_fraction);
+        for (const auto &cell : mesh.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              if (static_cast<unsigned int>(cell->level()) >=
+                  base_level + adaptation.max_levels)
+                cell->clear_refine_flag();
+              if (static_cast<unsigned int>(cell->level()) <= base_level)
+                cell->clear_coarsen_flag();
+            }
+        plan.add_cycle_from_flags(mesh);
+      }
+
+      void write_indicators(const Vector<float> &indicator,
+                            const Vector<float> &chosen) const
+      {
+        const DiscreteSpace<dim> &space = this->space();
+        DataOut<dim>              data_out;
+        data_out.attach_dof_handler(space.dof_handler);
+        const char *names[] = {"kelly_displacement",
+                               "kelly_velocity",
+                               "slip_rate_variation"};
+        for (unsigned int i = 0; i < 3; ++i)
+          data_out.add_data_vector(largest[i],
+                                   names[i],
+                                   DataOut<dim>::type_cell_data);
+        data_out.add_data_vector(indicator,
+                                 "indicator",
+                                 DataOut<dim>::type_cell_data);
+        data_out.add_data_vector(chosen,
+                                 "refine_1_coarsen_minus_1",
+                                 DataOut<dim>::type_cell_data);
+        data_out.build_patches(*space.mapping);
+        data_out.write_vtu_with_pvtu_record(
+          this->parameters().output.directory + "/",
+          "indicators",
+          0,
+          space.mpi_communicator,
+          1);
+      }
+
+      const MeshAdaptationParameters                 &adaptation;
+      const unsigned int                              cycles_left;
+      unsigned int                                   &base_level;
+      MeshPlan                                       &plan;
+      std::map<types::global_dof_index, unsigned int> node_of_dof;
+      // Kelly of u, Kelly of w, the slip rate's variation: the largest
+      // over the steps so far, per active cell.
+      std::array<Vector<float>, 3> largest;
+    };
+
+
+    // @sect3{The files of the run on the adapted mesh}
+
+    // Written when the run on the adapted mesh starts (after it has
+    // cleared its directory): the cycles of the mesh, which --resume
+    // reads, and their table.
+    template <int dim>
+    class AdaptationFiles : public Postprocessor<dim>
+    {
+    public:
+      AdaptationFiles(const MeshPlan &plan, const std::string &table)
+        : plan(plan)
+        , table(table)
+      {}
+
+      void start(const bool resumed) override
+      {
+        if (resumed || Utilities::MPI::this_mpi_process(
+                         this->space().mpi_communicator) != 0)
+          return;
+        const std::string &directory = this->parameters().output.directory;
+        std::ofstream(directory + "/adapted_mesh.txt") << plan.text();
+        std::ofstream(directory + "/adaptation.txt") << table;
+      }
+
+    private:
+      const MeshPlan    plan;
+      const std::string table;
+    };
+  } // namespace
+
+
+  // @sect3{run_with_mesh_adaptation}
+
+  template <int dim>
+  void run_with_mesh_adaptation(const Parameters &scene)
+  {
+    const MeshAdaptationParameters &adaptation = scene.mesh_adaptation;
+    const std::string              &directory  = scene.output.directory;
+    MeshPlan                        plan;
+    TableHandler                    table;
+    if (scene.output.resume)
+      {
+        AssertThrow(std::filesystem::exists(directory + "/adapted_mesh.txt"),
+                    ExcMessage("Entry '" + Entry::resume +
+                               "' (--resume): '" + directory +
+                               "' has no adapted_mesh.txt, which a mesh "
+                               "adaptation writes when its pilots are done; "
+                               "run the scene again without --resume."));
+        plan = MeshPlan::read(directory + "/adapted_mesh.txt");
+        console() << "Mesh adaptation: resuming on the mesh of '" << directory
+                  << "/adapted_mesh.txt' (" << plan.n_cycles() << " cycles)"
+                  << std::endl;
+      }
+    else
+      {
+        unsigned int base_level = 0;
+        for (unsigned int cycle = 0; cycle < adaptation.cycles; ++cycle)
+          {
+            const std::string name =
+              "adaptation-cycle-" + std::to_string(cycle);
+            ContactProblem<dim> pilot(parameters_of(scene,
+                                                    {0,
+                                                     scene.time.n_steps(),
+                                                     scene.geometry.fe_degree,
+                                                     directory + "/" + name,
+                                                     true}));
+            pilot.adapt_mesh(plan);
+            pilot.add_postprocessor(std::make_unique<MeshIndicators<dim>>(
+              adaptation, adaptation.cycles - cycle, base_level, plan));
+            const std::string log = directory + "/" + name + "/console.log";
+            const RunSummary  summary =
+              run_onto<dim>(pilot, nullptr, 0, log).summary;
+            const auto cells = pilot.get_dof_handler()
+                                 .get_triangulation()
+                                 .n_global_active_cells();
+            console() << "Mesh adaptation: cycle " << cycle << ": " << cells
+                      << " cells, " << sub_run_line(summary, log)
+                      << "; refines " << plan.refined.back().size()
+                      << " cells, coarsens " << plan.coarsened.back().size()
+                      << std::endl;
+            table.add_value("cycle", cycle);
+            table.add_value("cells", static_cast<unsigned long long>(cells));
+            table.add_value("unknowns",
+                            static_cast<unsigned long long>(summary.n_dofs));
+            table.add_value("wall time [s]", summary.wall_time);
+            table.set_precision("wall time [s]", 2);
+            table.add_value("refined", plan.refined.back().size());
+            table.add_value("coarsened", plan.coarsened.back().size());
+          }
+      }
+    std::ostringstream table_text;
+    table.write_text(table_text, TableHandler::org_mode_table);
+
+    // The run on the adapted mesh keeps the pilots in its directory.
+    Parameters adapted   = scene;
+    adapted.keeps_pilots = true;
+    ContactProblem<dim> problem(adapted);
+    problem.adapt_mesh(plan);
+    problem.add_postprocessor(
+      std::make_unique<AdaptationFiles<dim>>(plan, table_text.str()));
+    problem.run();
+  }
+
+
+#define INSTANTIATE(dim) \
+  template void run_with_mesh_adaptation<dim>(const Parameters &);
+
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+} // namespace Contact
