@@ -21,6 +21,7 @@
 #include <base/quantity.h>
 
 #include <any>
+#include <array>
 #include <map>
 #include <memory>
 #include <string>
@@ -131,6 +132,7 @@ namespace Contact
     inline const std::string target_unknowns =
       "Mesh adaptation/Target unknowns";
     inline const std::string max_levels = "Mesh adaptation/Max levels";
+    inline const std::string indicators = "Mesh adaptation/Indicators";
 
     /** All of the above, for the test. */
     inline std::vector<std::string> all()
@@ -197,7 +199,8 @@ namespace Contact
               refine_fraction,
               coarsen_fraction,
               target_unknowns,
-              max_levels};
+              max_levels,
+              indicators};
     }
   } // namespace Entry
 
@@ -538,6 +541,10 @@ namespace Contact
     unsigned int target_unknowns;
     /** The finest cells: this many levels below the scene's coarsest. */
     unsigned int max_levels;
+    /** Which indicators choose the cells: Kelly's of the displacement, of
+     *  the velocity, the variation of the slip rate on Gamma_3. */
+    std::array<bool, 3>                      indicators;
+    static const std::array<std::string, 3> &indicator_names();
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);

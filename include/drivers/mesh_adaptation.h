@@ -7,6 +7,9 @@
 #define contact_mesh_adaptation_h
 
 #include <base/parameters.h>
+#include <core/mesh_plan.h>
+
+#include <string>
 
 namespace Contact
 {
@@ -17,6 +20,11 @@ namespace Contact
    *  again). */
   template <int dim>
   void run_with_mesh_adaptation(const Parameters &scene);
+
+  /** The pilots alone: runs them and returns the adapted mesh's cycles,
+   *  and the table of the cycles as text. */
+  template <int dim>
+  MeshPlan adapt_mesh_by_pilots(const Parameters &scene, std::string &table);
 } // namespace Contact
 
 #endif
