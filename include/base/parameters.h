@@ -422,7 +422,8 @@ namespace Contact
 
     /** 'Contact solver = auto' takes the Delassus path up to this many
      *  tangential unknowns n of Gamma_3 (D and W = D^{-1} are dense: 16 n^2
-     *  bytes, 1 GB here), and without CHOLMOD only while Z = K^{-1} C^T
+     *  bytes, 1 GB here, on every process, and about as much again while D
+     *  is built), and without CHOLMOD only while Z = K^{-1} C^T
      *  takes at most this many bytes per process. The help texts state
      *  both. */
     static constexpr unsigned int max_delassus_unknowns = 7900;

@@ -943,7 +943,7 @@ namespace Contact
         "0: the mesh of the Geometry. n > 0: n pilot runs of the whole scene "
         "(each in its own directory adaptation-cycle-c), each on the mesh its "
         "predecessor refined and coarsened from the 'Indicators', taken at "
-        "20 steps spread over the run and kept as their largest over them; "
+        "at most 20 steps spread over the run and kept as their largest; "
         "then the scene runs on the adapted mesh. The pilots write "
         "indicators_0.pvtu; adapted_mesh.txt holds the mesh's cycles, which "
         "--resume reads.");

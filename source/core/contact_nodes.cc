@@ -10,6 +10,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <base/dimensions.h>
+#include <base/parameters.h>
 #include <core/contact_nodes.h>
 
 #include <algorithm>
@@ -306,9 +307,23 @@ namespace Contact
       for (auto r = part.begin(); r != part.end(); r += dim + 2)
         {
           const auto key = static_cast<types::global_dof_index>(r[0]);
+          // With Q2 in 3D a hanging node on the border of Gamma_3 can follow
+          // the node in the middle of a coarse edge that no face of
+          // Gamma_3 has (Gamma_3 meets another boundary part along a
+          // refined edge).
           AssertThrow(nodes.count(key) == 1,
-                      ExcInternalError("A hanging node of Gamma_3 follows a "
-                                       "node that is not on Gamma_3."));
+                      ExcMessage(
+                        "A refined cell of Gamma_3 meets a coarser cell of "
+                        "another boundary part on the border of Gamma_3, and "
+                        "its hanging node there follows a node that is not "
+                        "on Gamma_3: this is not supported with "
+                        "'" +
+                        Entry::finite_element_degree +
+                        "' > 1; allowed are degree 1, or a refinement ("
+                        "'" +
+                        Entry::refinement_points +
+                        "', 'Mesh adaptation/Cycles') that does not reach the "
+                        "border of Gamma_3."));
           nodes[key].weight += r[1];
           for (unsigned int d = 0; d < dim; ++d)
             nodes[key].normal[d] += r[2 + d];

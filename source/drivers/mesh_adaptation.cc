@@ -73,13 +73,17 @@ namespace Contact
     const ResultFiles       indicator_files("indicators_0(\\.[0-9]+)?\\.p?vtu");
 
     // The shares of the indicators are compared after rounding to this
-    // resolution, so that the cells chosen do not depend on the round-off
-    // of the solves (which differs between one and several processes).
+    // resolution, which makes it unlikely that the cells chosen depend on
+    // the round-off of the solves (which differs between one and several
+    // processes): it decides only where a share lies within round-off of a
+    // rounding boundary. What guarantees one mesh for every run of a plan
+    // is the plan (adapted_mesh.txt), not the rounding.
     constexpr double share_resolution = 1e-6;
 
-    // The indicators are evaluated at this many steps spread over a pilot
-    // (and at its last): Kelly's estimator at every step cost a pilot on
-    // the paper's scene more than the run on the adapted mesh.
+    // The indicators are evaluated at most at this many steps spread over a
+    // pilot (every ceil(N / 20)-th, and the last): Kelly's estimator at every
+    // step cost a pilot on the paper's scene more than the run on the adapted
+    // mesh.
     constexpr unsigned int indicator_samples = 20;
 
     std::ostream &console()
@@ -136,7 +140,9 @@ namespace Contact
       {
         const unsigned int step = this->state().step_number,
                            n    = this->n_time_steps();
-        if (step % std::max(1u, n / indicator_samples) != 0 && step != n)
+        const unsigned int stride =
+          (n + indicator_samples - 1) / indicator_samples;
+        if (step % stride != 0 && step != n)
           return;
         const DiscreteSpace<dim> &space = this->space();
         const std::map<types::boundary_id, const Function<dim> *> no_neumann;
@@ -268,7 +274,9 @@ namespace Contact
           static_cast<double>(this->space().dof_handler.n_dofs());
         const double factor =
           std::pow(adaptation.target_unknowns / now, 1. / cycles_left);
-        return std::clamp((factor - 1.) / ((1 << dim) - 1), 0., 1.);
+        return std::clamp((factor - 1.) / ((1 << dim) - 1),
+                          0.,
+                          1. - adaptation.coarsen_fraction);
       }
 
       void choose_cells(const Vector<float> &indicator,
@@ -426,15 +434,26 @@ namespace Contact
                     ExcMessage("Entry '" + Entry::resume + "' (--resume): '" +
                                directory +
                                "' has no adapted_mesh.txt, which a mesh "
-                               "adaptation writes when its pilots are done; "
-                               "run the scene again without --resume."));
+                               "adaptation writes when the run on the adapted "
+                               "mesh starts; run the scene again without "
+                               "--resume."));
         plan = MeshPlan::read(directory + "/adapted_mesh.txt");
         console() << "Mesh adaptation: resuming on the mesh of '" << directory
                   << "/adapted_mesh.txt' (" << plan.n_cycles() << " cycles)"
                   << std::endl;
       }
     else
-      plan = adapt_mesh_by_pilots<dim>(scene, table);
+      {
+        // The earlier results go before the pilots run (a run killed among
+        // them must leave nothing that --resume would take for its own),
+        // and the directory is locked while they run; the run on the
+        // adapted mesh locks it again.
+        const std::shared_ptr<const int> lock =
+          lock_output_directory(directory, MPI_COMM_WORLD);
+        if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          remove_results(directory, false, MPI_COMM_WORLD);
+        plan = adapt_mesh_by_pilots<dim>(scene, table);
+      }
 
     // The run on the adapted mesh keeps the pilots in its directory.
     Parameters adapted   = scene;

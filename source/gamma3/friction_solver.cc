@@ -279,7 +279,8 @@ namespace Contact
   // @sect4{FrictionSolver::delassus_operator_pays}
 
   // 'auto' takes the Delassus path while D and W = D^{-1} fit in 1 GB
-  // (7900 tangential unknowns of Gamma_3): its Newton steps factorise a
+  // (7900 tangential unknowns of Gamma_3; about twice that while D is
+  // built, on every process; set by memory): its Newton steps factorise a
   // dense block of D, O(n^3), but each of the constraints path's refactorises
   // K, and bench/auto_path.md measures the Delassus path ahead on the 3D
   // scene at 2400 and 4224 unknowns of Gamma_3. Without CHOLMOD's triangular

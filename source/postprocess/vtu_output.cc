@@ -24,6 +24,7 @@
 #include <core/postprocessor.h>
 #include <postprocess/slip_zone.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -72,17 +73,21 @@ namespace Contact
     // The value at each hanging node that the continuity of a field asks
     // for, from the nodes it follows: the fields of Gamma_3 are set at the
     // friction nodes only, and a hanging node of Gamma_3 is none.
+    // A category (the contact status) takes the largest of the nodes it
+    // follows instead: a node between a sticking and a slipping one slips.
     template <typename Vector>
     void set_hanging_values(const AffineConstraints<double> &hanging,
                             const IndexSet                  &lines,
-                            Vector                          &field)
+                            Vector                          &field,
+                            const bool                       category = false)
     {
       for (const auto &line : hanging.get_lines())
         if (lines.is_element(line.index))
           {
             double value = 0;
             for (const auto &[dof, c] : line.entries)
-              value += c * field(dof);
+              value = category ? std::max<double>(value, field(dof)) :
+                                 value + c * field(dof);
             field(line.index) = value;
           }
     }
@@ -317,8 +322,8 @@ namespace Contact
     DoFTools::make_hanging_node_constraints(space.scalar_dof_handler,
                                             scalar_hanging);
     scalar_hanging.close();
-    for (Vector<double> *field :
-         {&output.status, &output.slip_rate, &output.friction_bound})
+    set_hanging_values(scalar_hanging, scalar_relevant, output.status, true);
+    for (Vector<double> *field : {&output.slip_rate, &output.friction_bound})
       set_hanging_values(scalar_hanging, scalar_relevant, *field);
 
     AffineConstraints<double> hanging(space.locally_relevant_dofs);
