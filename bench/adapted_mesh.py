@@ -23,7 +23,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run import ROOT, machine  # noqa: E402
+from run import ROOT, build, machine  # noqa: E402
 
 STEP = "Time/Time step=0.0078014184397163121"  # T / 141, the scene's k
 COMMON = ["Output/VTU interval=0", "Output/Report times=",
@@ -62,20 +62,11 @@ RUNS = [
 ]
 
 
-def build():
-    build_dir = os.path.join(ROOT, "build-bench")
-    subprocess.run(["cmake", "-S", ROOT, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Release"],
-                   check=True, stdout=subprocess.DEVNULL)
-    subprocess.run(["cmake", "--build", build_dir, "-j2", "--target", "adapted_mesh_error"],
-                   check=True, stdout=subprocess.DEVNULL)
-    return os.path.join(build_dir, "adapted_mesh_error")
-
-
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--out", default=os.path.join(ROOT, "bench", "adapted_mesh.md"))
     out = parser.parse_args().out
-    tool = build()
+    tool = build("adapted_mesh_error")
     with tempfile.TemporaryDirectory() as tmp:
         command = [tool, os.path.join(ROOT, "prm", "barboteu2015.prm")]
         command += REFERENCE + COMMON + [f"Output/Output directory={tmp}/reference"]

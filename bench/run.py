@@ -27,13 +27,13 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def build():
+def build(target="contact"):
     build_dir = os.path.join(ROOT, "build-bench")
     subprocess.run(["cmake", "-S", ROOT, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Release"],
                    check=True, stdout=subprocess.DEVNULL)
-    subprocess.run(["cmake", "--build", build_dir, "-j2", "--target", "contact"],
+    subprocess.run(["cmake", "--build", build_dir, "-j2", "--target", target],
                    check=True, stdout=subprocess.DEVNULL)
-    return os.path.join(build_dir, "contact")
+    return os.path.join(build_dir, target)
 
 
 def run(contact, prm, sets):

@@ -81,6 +81,11 @@ namespace Contact
     // Clamped Gamma_1 (u = 0, hence w = 0) and the bilateral Gamma_3
     // (w.n = 0) as homogeneous constraints: V_h of the paper.
     AffineConstraints<double> constraints;
+    // The hanging nodes' constraints alone (part of the above): the
+    // friction weights of Gamma_3, its fields in the output and the
+    // self-checks need them without the normal constraints, which mix a
+    // node's components.
+    AffineConstraints<double> hanging_node_constraints;
 
   private:
     void make_constraints(const BoundaryParameters &boundary);

@@ -157,11 +157,7 @@ namespace Contact
         space.scalar_fe->n_dofs_per_cell());
       std::map<types::global_dof_index, ContactNode<dim>>  nodes;
       std::map<types::global_dof_index, HangingShare<dim>> shares;
-      // The hanging nodes' constraints alone: those of V_h also hold the
-      // normal constraints, which mix the components of a node.
-      AffineConstraints<double> hanging(space.locally_relevant_dofs);
-      DoFTools::make_hanging_node_constraints(space.dof_handler, hanging);
-      hanging.close();
+      const AffineConstraints<double> &hanging = space.hanging_node_constraints;
 
       auto scalar_cell = space.scalar_dof_handler.begin_active();
       for (const auto &cell : space.dof_handler.active_cell_iterators())

@@ -137,6 +137,11 @@ namespace Contact
   template <int dim>
   void DiscreteSpace<dim>::make_constraints(const BoundaryParameters &boundary)
   {
+    hanging_node_constraints.clear();
+    hanging_node_constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler,
+                                            hanging_node_constraints);
+    hanging_node_constraints.close();
     constraints.clear();
     constraints.reinit(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);

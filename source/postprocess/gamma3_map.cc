@@ -48,9 +48,7 @@ namespace Contact
     // Gamma_3, assembled as a load and condensed by the hanging nodes'
     // constraints (a hanging node's integral goes to the nodes it follows;
     // the friction solver adds these shares node by node instead).
-    AffineConstraints<double> hanging(space.locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(space.dof_handler, hanging);
-    hanging.close();
+    const AffineConstraints<double> &hanging = space.hanging_node_constraints;
     VectorType     assembled(space.locally_owned_dofs, space.mpi_communicator);
     Vector<double> cell_weights(fe.n_dofs_per_cell());
     for (const auto &cell : space.dof_handler.active_cell_iterators())

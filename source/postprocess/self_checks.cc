@@ -521,12 +521,10 @@ namespace Contact
     // Hanging nodes on a curved mesh (a refined shell) interpolate r along
     // the coarse cell's polynomial, not along the circle: there r is not in
     // V_h whatever the normals are.
-    AffineConstraints<double> hanging(space.locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(space.dof_handler, hanging);
-    hanging.close();
-    const auto  &parameters      = this->parameters();
-    const auto  &geometry        = parameters.geometry;
-    const double rotation_defect = defect(space.constraints);
+    const AffineConstraints<double> &hanging = space.hanging_node_constraints;
+    const auto                      &parameters = this->parameters();
+    const auto                      &geometry   = parameters.geometry;
+    const double rotation_defect                = defect(space.constraints);
     const bool   must_admit_rotation =
       geometry.domain == GeometryParameters::Domain::shell &&
       parameters.boundary.clamped_ids.empty() && defect(hanging) <= 1e-12;

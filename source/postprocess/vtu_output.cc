@@ -326,9 +326,7 @@ namespace Contact
     for (Vector<double> *field : {&output.slip_rate, &output.friction_bound})
       set_hanging_values(scalar_hanging, scalar_relevant, *field);
 
-    AffineConstraints<double> hanging(space.locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(space.dof_handler, hanging);
-    hanging.close();
+    const AffineConstraints<double> &hanging = space.hanging_node_constraints;
     set_hanging_values(hanging,
                        space.locally_owned_dofs,
                        output.friction_traction);
