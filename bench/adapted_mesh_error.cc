@@ -1,6 +1,8 @@
 /* The V-error at T of runs of a scene against a reference run of it, for
    bench/adapted_mesh.py: a run may be on a mesh adapted by pilots ('Mesh
-   adaptation/Cycles'), whose wall time is counted with the run's.
+   adaptation/Cycles'), whose wall time is counted with the run's, or
+   adapted during the run ('Mesh adaptation/Interval'; the unknowns printed
+   are then those of the last mesh).
 
      adapted_mesh_error scene.prm reference-entries... [-- run-entries...]...
 
@@ -50,6 +52,8 @@ void compare(const std::string                           &scene,
       dealii::Timer       run_timer;
       ContactProblem<dim> problem(parameters);
       problem.adapt_mesh(plan);
+      if (parameters.mesh_adaptation.interval > 0)
+        adapt_during_run(problem, parameters.mesh_adaptation);
       const RunAtTimes run = run_onto<dim>(
         problem, &onto, 0, parameters.output.directory + "/console.log");
       const double wall = run_timer.wall_time();

@@ -124,7 +124,8 @@ namespace Contact
     inline const std::string cost_model        = "Accuracy/Cost model";
     inline const std::string max_predicted_time =
       "Accuracy/Maximum predicted time";
-    inline const std::string adaptation_cycles = "Mesh adaptation/Cycles";
+    inline const std::string adaptation_cycles   = "Mesh adaptation/Cycles";
+    inline const std::string adaptation_interval = "Mesh adaptation/Interval";
     inline const std::string refine_fraction =
       "Mesh adaptation/Refine fraction";
     inline const std::string coarsen_fraction =
@@ -196,6 +197,7 @@ namespace Contact
               cost_model,
               max_predicted_time,
               adaptation_cycles,
+              adaptation_interval,
               refine_fraction,
               coarsen_fraction,
               target_unknowns,
@@ -534,6 +536,9 @@ namespace Contact
     /** 0: off; else the number of pilot runs, each on the mesh its
      *  predecessor adapted. */
     unsigned int cycles;
+    /** 0: not during the run; else the mesh is adapted after every
+     *  this many steps (ContactProblem::adapt_mesh_during_run()). */
+    unsigned int interval;
     /** The shares of the cells refined and coarsened per cycle. */
     double refine_fraction;
     double coarsen_fraction;

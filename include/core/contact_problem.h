@@ -156,6 +156,16 @@ namespace Contact
      *  adaptation); before run(). */
     void adapt_mesh(const MeshPlan &plan);
 
+    /** Adapts the mesh during the run after every `interval`-th step (but
+     *  the last): `choose_cells` sets the refine and coarsen flags of the
+     *  mesh (collective); the problem then records them in its plan and
+     *  moves to the new mesh (transfer_to_adapted_mesh()); before run(). */
+    void adapt_mesh_during_run(const unsigned int    interval,
+                               std::function<void()> choose_cells);
+
+    /** The scene's mesh changed by the cycles so far. */
+    const MeshPlan &get_mesh_plan() const;
+
     unsigned int           get_step_number() const;
     const DoFHandler<dim> &get_dof_handler() const;
     const Mapping<dim>    &get_mapping() const;
@@ -171,6 +181,10 @@ namespace Contact
     // setup.cc
     void make_grid();
     void setup_system();
+    void report_mesh() const;
+
+    // mesh_transfer.cc
+    void transfer_to_adapted_mesh();
 
     // assembly.cc
     void             assemble_matrices();
@@ -198,6 +212,7 @@ namespace Contact
 
     // checkpoint.cc
     void require_checkpoint() const;
+    void read_checkpoint_mesh_plan();
     bool checkpoint_due() const;
     void save_checkpoint();
     void load_checkpoint();
@@ -226,12 +241,16 @@ namespace Contact
     // Mesh, finite element space, constraints (setup.cc) and the loads on
     // them (loads.cc). The mesh is the Geometry's, changed by the cycles of
     // a mesh adaptation (drivers/mesh_adaptation.h).
-    MeshPlan                          mesh_plan;
-    DiscreteSpace<dim>                space;
+    MeshPlan           mesh_plan;
+    DiscreteSpace<dim> space;
+    // During the run: every how many steps, and what flags the cells
+    // (0 and empty: the mesh stays; mesh_transfer.cc).
+    unsigned int                      adaptation_interval = 0;
+    std::function<void()>             choose_cells_to_adapt;
     const std::unique_ptr<Loads<dim>> loads;
 
-    // The matrices (assembly.cc) and the factor of K, made once per run
-    // (time_stepping.cc).
+    // The matrices (assembly.cc) and the factor of K (time_stepping.cc),
+    // made once per mesh (and again when a step is cut).
     SystemMatrices<dim>            matrices;
     std::unique_ptr<Factorization> factorization;
 

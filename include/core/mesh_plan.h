@@ -48,6 +48,9 @@ namespace Contact
      *  cannot read. */
     std::string     text() const;
     static MeshPlan read(const std::string &file_name);
+    /** The same from the text, with the name of the file it came from. */
+    static MeshPlan from_text(const std::string &text,
+                              const std::string &file_name);
   };
 } // namespace Contact
 

@@ -21,6 +21,12 @@
  *                     halves of a cut step); a step that fails never gets
  *                     here, so no postprocessor has state to roll back,
  *   after_step()      after each step t_n,
+ *   before_mesh_change() and
+ *   mesh_changed()    before and after the mesh is adapted during the run
+ *                     ('Mesh adaptation/Interval'): u_n and w_n are on the
+ *                     new mesh, the matrices assembled and the friction
+ *                     solver set up; what a postprocessor keeps of the
+ *                     mesh is built again here,
  *   save()            for a checkpoint,
  *   end()             after the last step (output still pending is
  *                     completed),
@@ -90,6 +96,10 @@ namespace Contact
     virtual void after_substep()
     {}
     virtual void after_step(const StepStatistics & /*statistics*/)
+    {}
+    virtual void before_mesh_change()
+    {}
+    virtual void mesh_changed()
     {}
     /** Its columns of the step's row of time_series.csv (collective). */
     virtual void add_columns(TimeSeriesRow & /*row*/) const

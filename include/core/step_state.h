@@ -8,6 +8,8 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <boost/serialization/version.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -21,7 +23,9 @@ namespace Contact
    * summed over the steps: kinetic + elastic energy now, plus everything
    * dissipated so far (viscous, frictional and the numerical dissipation
    * rho/2 |w_n - w_{n-1}|^2 + k^2/2 <B w_n, w_n> of the scheme) equals the
-   * initial energy plus the work of the loads.
+   * initial energy plus the work of the loads, plus what the transfers of
+   * u and w to adapted meshes changed of the kinetic and elastic energy
+   * (ContactProblem::transfer_to_adapted_mesh()).
    */
   struct EnergyBalance
   {
@@ -32,25 +36,31 @@ namespace Contact
     double viscous_dissipation   = 0;
     double friction_dissipation  = 0;
     double numerical_dissipation = 0;
+    double mesh_transfer         = 0;
 
     double residual() const
     {
       return kinetic + elastic + viscous_dissipation + friction_dissipation +
-             numerical_dissipation - initial - external_work;
+             numerical_dissipation - initial - external_work - mesh_transfer;
     }
     double scale() const
     {
-      return std::max({kinetic + elastic,
-                       initial + std::abs(external_work),
-                       viscous_dissipation + std::abs(friction_dissipation) +
-                         numerical_dissipation});
+      return std::max(
+        {kinetic + elastic,
+         initial + std::abs(external_work) + std::abs(mesh_transfer),
+         viscous_dissipation + std::abs(friction_dissipation) +
+           numerical_dissipation});
     }
 
     template <class Archive>
-    void serialize(Archive &archive, const unsigned int /*version*/)
+    void serialize(Archive &archive, const unsigned int version)
     {
       archive &kinetic &elastic &initial &external_work &viscous_dissipation
         &friction_dissipation &numerical_dissipation;
+      // (A checkpoint of version 0 was written before meshes changed
+      // during a run.)
+      if (version > 0)
+        archive &mesh_transfer;
     }
   };
 
@@ -110,5 +120,7 @@ namespace Contact
     }
   };
 } // namespace Contact
+
+BOOST_CLASS_VERSION(Contact::EnergyBalance, 1)
 
 #endif

@@ -207,7 +207,9 @@ namespace Contact
    * `normal_velocity` times max |w_n|, the constraints not applied. The
    * assembly multiplies B by `stiffness_factor`. With
    * `unshared_hanging_weights` the hanging nodes of Gamma_3 keep their
-   * weights (lost with them) instead of sharing them.
+   * weights (lost with them) instead of sharing them. With
+   * `stale_energies_after_mesh_change` a transfer to an adapted mesh keeps
+   * the kinetic and elastic energy of the old mesh.
    */
   template <int dim>
   struct Sabotage
@@ -223,6 +225,7 @@ namespace Contact
     double normal_velocity                                            = 0.;
     double stiffness_factor                                           = 1.;
     bool   unshared_hanging_weights                                   = false;
+    bool   stale_energies_after_mesh_change                           = false;
   };
 
 

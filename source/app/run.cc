@@ -105,7 +105,8 @@ namespace Contact
     {
       if (parameters.convergence_study.levels > 0)
         run_convergence_study<dim>(parameters);
-      else if (parameters.mesh_adaptation.cycles > 0)
+      else if (parameters.mesh_adaptation.cycles > 0 ||
+               parameters.mesh_adaptation.interval > 0)
         run_with_mesh_adaptation<dim>(parameters);
       else if (parameters.accuracy.target_error > 0)
         run_to_target<dim>(parameters);

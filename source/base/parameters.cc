@@ -947,11 +947,25 @@ namespace Contact
         "then the scene runs on the adapted mesh. The pilots write "
         "indicators_0.pvtu; adapted_mesh.txt holds the mesh's cycles, which "
         "--resume reads.");
+      prm.declare_entry(
+        "Interval",
+        "0",
+        Patterns::Integer(0),
+        "0: the mesh does not change during the run. n > 0: after every n-th "
+        "step the mesh is refined and coarsened from the 'Indicators' of that "
+        "step, u and w are carried over to the new mesh, K is assembled and "
+        "factorised again, and the change of the kinetic and elastic energy "
+        "that the transfer makes enters the energy balance. adaptation.csv "
+        "lists the adaptations (with the energy before and after each), "
+        "adapted_mesh.txt the mesh's cycles, and with 'Output/VTU interval' "
+        "> 0 indicators_<step>.pvtu the indicators and the cells chosen; a "
+        "checkpoint stores the mesh.");
       prm.declare_entry("Refine fraction",
                         "0.3",
                         Patterns::Double(0, 1),
                         "The share of the cells, those with the largest "
-                        "indicators, refined per cycle.");
+                        "indicators, refined per cycle (or per adaptation "
+                        "during the run).");
       prm.declare_entry("Coarsen fraction",
                         "0",
                         Patterns::Double(0, 1),
@@ -964,7 +978,8 @@ namespace Contact
         Patterns::Integer(0),
         "0: refine by 'Refine fraction'. n > 0: refine as many cells per "
         "cycle as multiply the unknowns by equal factors to about n at the "
-        "last cycle.");
+        "last cycle; during the run ('Interval' > 0), refine by 'Refine "
+        "fraction' but to at most about n unknowns.");
       prm.declare_entry(
         "Indicators",
         "displacement",
@@ -988,6 +1003,7 @@ namespace Contact
     prm.enter_subsection("Mesh adaptation");
     {
       cycles           = prm.get_integer("Cycles");
+      interval         = prm.get_integer("Interval");
       refine_fraction  = prm.get_double("Refine fraction");
       coarsen_fraction = prm.get_double("Coarsen fraction");
       target_unknowns  = prm.get_integer("Target unknowns");
@@ -1000,7 +1016,8 @@ namespace Contact
           chosen.end();
     }
     prm.leave_subsection();
-    AssertThrow(cycles == 0 || indicators[0] || indicators[1] || indicators[2],
+    AssertThrow((cycles == 0 && interval == 0) || indicators[0] ||
+                  indicators[1] || indicators[2],
                 ExcMessage("Entry '" + Entry::indicators +
                            "' is empty: allowed is one or more of "
                            "displacement, velocity, slip rate."));
@@ -1301,11 +1318,21 @@ namespace Contact
   // a coarse run of an estimate or a pilot of a target (yet).
   void Parameters::check_mesh_adaptation() const
   {
-    if (mesh_adaptation.cycles == 0)
+    if (mesh_adaptation.cycles == 0 && mesh_adaptation.interval == 0)
       return;
     const std::string adapting =
-      "Entry '" + Entry::adaptation_cycles +
-      "' = " + std::to_string(mesh_adaptation.cycles) + " adapts the mesh: ";
+      mesh_adaptation.cycles > 0 ?
+        "Entry '" + Entry::adaptation_cycles +
+          "' = " + std::to_string(mesh_adaptation.cycles) +
+          " adapts the mesh: " :
+        "Entry '" + Entry::adaptation_interval +
+          "' = " + std::to_string(mesh_adaptation.interval) +
+          " adapts the mesh during the run: ";
+    AssertThrow(mesh_adaptation.cycles == 0 || mesh_adaptation.interval == 0,
+                ExcMessage(adapting + "it cannot be combined with '" +
+                           Entry::adaptation_interval +
+                           "' = " + std::to_string(mesh_adaptation.interval) +
+                           " yet; allowed is one of the two, the other 0."));
     AssertThrow(geometry.cell_shape != GeometryParameters::CellShape::simplex,
                 ExcMessage(adapting +
                            "it refines quadrilaterals and "
@@ -1317,7 +1344,9 @@ namespace Contact
           std::pair{Entry::target_error, accuracy.target_error > 0}})
       AssertThrow(!set,
                   ExcMessage(adapting + "it cannot be combined with '" + entry +
-                             "' yet; allowed is Cycles = 0 there."));
+                             "' yet; allowed are '" + Entry::adaptation_cycles +
+                             "' = 0 and '" + Entry::adaptation_interval +
+                             "' = 0 there."));
   }
 
 

@@ -4,14 +4,16 @@
    previous checkpoint or the new one, never half of one.
 
    The file is a line naming the format, a line with the size and the
-   CRC-32 of the rest, and the rest: the shape of the discrete problem, the
-   entries of the .prm that define it, and the state. A damaged or
-   truncated file, or one of another problem, is refused by name.
+   CRC-32 of the rest, and the rest: the mesh's plan (the cycles by which a
+   mesh adaptation changed the Geometry's mesh, MeshPlan), the shape of the
+   discrete problem, the entries of the .prm that define it, and the state.
+   A damaged or truncated file, or one of another problem, is refused by
+   name.
 
-   The mesh, the matrices and the factorisation are not stored: they follow
-   from the .prm deterministically and are rebuilt on --resume, which then
-   continues with bitwise the same numbers as the uninterrupted run
-   (tests/verification/kill_and_resume). */
+   The mesh itself, the matrices and the factorisation are not stored: they
+   follow deterministically from the .prm and the plan and are rebuilt on
+   --resume, which then continues with bitwise the same numbers as the
+   uninterrupted run (tests/verification/kill_and_resume). */
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -45,7 +47,10 @@ namespace Contact
 {
   namespace
   {
-    const std::string checkpoint_format = "contact checkpoint 10";
+    // Format 11 begins with the mesh's plan (the cycles of its adaptation);
+    // format 10, before meshes changed during a run, is still read.
+    const std::string checkpoint_format         = "contact checkpoint 11";
+    const std::string checkpoint_format_no_plan = "contact checkpoint 10";
     const ResultFiles checkpoint_files("checkpoint(\\.[0-9]+)?(\\.tmp)?");
 
     std::uint32_t crc32(const std::string &bytes)
@@ -221,18 +226,36 @@ namespace Contact
       return name;
     }
 
+    // @sect4{mixed_checkpoints}
+
+    std::string mixed_checkpoints(const std::string &directory)
+    {
+      return "The checkpoints of the processes in '" + directory +
+             "' are of different steps (the job was killed while they were "
+             "written): resume from a complete set, or start the run again "
+             "without --resume.";
+    }
+
     // @sect4{read_payload}
 
     // The checkpoint's bytes after its two header lines, checked against the
-    // size and CRC-32 stored there.
-    std::string read_payload(const std::string &name)
+    // size and CRC-32 stored there, and whether they begin with the mesh's
+    // plan.
+    struct Payload
+    {
+      std::string bytes;
+      bool        has_mesh_plan;
+    };
+
+    Payload read_payload(const std::string &name)
     {
       std::ifstream file(name, std::ios::binary);
       AssertThrow(file,
                   ExcMessage("Cannot read the checkpoint '" + name + "'."));
       std::string format;
       std::getline(file, format);
-      AssertThrow(format == checkpoint_format,
+      AssertThrow(format == checkpoint_format ||
+                    format == checkpoint_format_no_plan,
                   ExcMessage("'" + name +
                              "' is not a checkpoint this program "
                              "reads: it does not begin with the line '" +
@@ -258,7 +281,7 @@ namespace Contact
                              "' is damaged: its checksum does not match its "
                              "contents. Resume from another copy, or start the "
                              "run again without --resume."));
-      return bytes;
+      return {bytes, format == checkpoint_format};
     }
   } // namespace
 
@@ -299,6 +322,37 @@ namespace Contact
   }
 
 
+  // @sect4{ContactProblem::read_checkpoint_mesh_plan}
+
+  // A resumed run is built on its checkpoint's mesh: the scene's mesh
+  // changed by the cycles of the plan stored with it (of pilot runs, or of
+  // the adaptations during the run up to the checkpoint's step). A
+  // checkpoint of format 10 has no plan: the run's own is kept.
+  template <int dim>
+  void ContactProblem<dim>::read_checkpoint_mesh_plan()
+  {
+    const std::string name =
+      checkpoint_name(parameters.output.directory, mpi_communicator);
+    const Payload stored = read_payload(name);
+    std::string   plan_text;
+    if (stored.has_mesh_plan)
+      {
+        std::istringstream              payload(stored.bytes, std::ios::binary);
+        boost::archive::binary_iarchive archive(payload);
+        archive                        &plan_text;
+      }
+    // A set of checkpoints of different steps (a job killed while they were
+    // written) may have different plans: refused here, before the processes
+    // build different meshes (load_checkpoint() compares the steps).
+    const std::size_t plan_hash = std::hash<std::string>()(plan_text);
+    AssertThrow(Utilities::MPI::min(plan_hash, mpi_communicator) ==
+                  Utilities::MPI::max(plan_hash, mpi_communicator),
+                ExcMessage(mixed_checkpoints(parameters.output.directory)));
+    if (stored.has_mesh_plan)
+      mesh_plan = MeshPlan::from_text(plan_text, name);
+  }
+
+
   // @sect4{ContactProblem::checkpoint_due}
 
   // Every 'Checkpoint interval' steps, when 'Checkpoint minutes' have
@@ -334,6 +388,7 @@ namespace Contact
     std::ostringstream payload(std::ios::binary);
     {
       boost::archive::binary_oarchive archive(payload);
+      std::string                     plan_text = mesh_plan.text();
       std::string                     problem_shape =
         shape(space.dof_handler,
               friction_solver->boundary().nodes.size(),
@@ -344,7 +399,7 @@ namespace Contact
       std::map<std::string, std::string> entries =
         problem_entries(parameters.used_parameters);
       FrictionState friction_state = friction_solver->state();
-      archive &problem_shape &entries &state &friction_state;
+      archive &plan_text &problem_shape &entries &state &friction_state;
       for (const auto &postprocessor : postprocessors)
         postprocessor->save(archive);
     }
@@ -377,12 +432,19 @@ namespace Contact
   {
     const std::string name =
       checkpoint_name(parameters.output.directory, mpi_communicator);
-    const std::string                  bytes = read_payload(name);
-    std::istringstream                 payload(bytes, std::ios::binary);
+    const Payload                      stored = read_payload(name);
+    std::istringstream                 payload(stored.bytes, std::ios::binary);
     boost::archive::binary_iarchive    archive(payload);
-    std::string                        stored_shape;
+    std::string                        plan_text, stored_shape;
     std::map<std::string, std::string> stored_entries;
-    archive &stored_shape             &stored_entries;
+    // (The plan was read before the mesh was built.)
+    if (stored.has_mesh_plan)
+      archive &plan_text;
+    archive &stored_shape &stored_entries;
+    // A checkpoint of format 10 predates the entry; its run did not adapt
+    // its mesh during itself.
+    if (!stored.has_mesh_plan)
+      stored_entries.emplace(Entry::adaptation_interval, "0");
     // (A checkpoint written before the mesh was part of the shape has
     // none to compare.)
     std::string problem_shape = shape(space.dof_handler,
@@ -419,12 +481,7 @@ namespace Contact
     const unsigned int step_number = state.step_number;
     AssertThrow(Utilities::MPI::min(step_number, mpi_communicator) ==
                   Utilities::MPI::max(step_number, mpi_communicator),
-                ExcMessage("The checkpoints of the processes in '" +
-                           parameters.output.directory +
-                           "' are of different steps (the job was killed "
-                           "while they were written): resume from a "
-                           "complete set, or start the run again without "
-                           "--resume."));
+                ExcMessage(mixed_checkpoints(parameters.output.directory)));
     AssertThrow(step_number <= n_time_steps,
                 ExcMessage("The checkpoint is at step " +
                            std::to_string(step_number) +
@@ -437,10 +494,11 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                         \
-  template void ContactProblem<dim>::require_checkpoint() const; \
-  template bool ContactProblem<dim>::checkpoint_due() const;     \
-  template void ContactProblem<dim>::save_checkpoint();          \
+#define INSTANTIATE(dim)                                          \
+  template void ContactProblem<dim>::require_checkpoint() const;  \
+  template void ContactProblem<dim>::read_checkpoint_mesh_plan(); \
+  template bool ContactProblem<dim>::checkpoint_due() const;      \
+  template void ContactProblem<dim>::save_checkpoint();           \
   template void ContactProblem<dim>::load_checkpoint();
 
   CONTACT_INSTANTIATE(INSTANTIATE)

@@ -113,6 +113,23 @@ namespace Contact
   }
 
 
+  template <int dim>
+  void
+  ContactProblem<dim>::adapt_mesh_during_run(const unsigned int    interval,
+                                             std::function<void()> choose_cells)
+  {
+    adaptation_interval   = interval;
+    choose_cells_to_adapt = std::move(choose_cells);
+  }
+
+
+  template <int dim>
+  const MeshPlan &ContactProblem<dim>::get_mesh_plan() const
+  {
+    return mesh_plan;
+  }
+
+
   // @sect4{ContactProblem::run}
 
   // Set-up, the initial state, the steps, and what the run gives back. The
@@ -127,11 +144,19 @@ namespace Contact
       lock_output_directory(parameters.output.directory, mpi_communicator);
     const bool resumed = parameters.output.resume;
     if (resumed)
-      require_checkpoint();
+      {
+        require_checkpoint();
+        read_checkpoint_mesh_plan();
+      }
     make_grid();
     if (exact_solution)
       check_manufactured_scene(parameters);
     setup_system();
+    // The postprocessors' set-up may refuse an entry of theirs (a probe
+    // outside the body): before anything is reported of the mesh.
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->initialize();
+    report_mesh();
     assemble_matrices();
     set_initial_values();
     factorize_system_matrix();
@@ -261,8 +286,9 @@ namespace Contact
   // @sect4{ContactProblem::time_loop}
 
   // The steps t_1, ..., t_N (from the checkpoint's step on a resumed run),
-  // and after each what the postprocessors make of it, then a checkpoint
-  // if one is due.
+  // and after each what the postprocessors make of it, then the mesh's
+  // adaptation and a checkpoint if one is due (in this order: the
+  // checkpoint stores the mesh the next step runs on).
   template <int dim>
   void ContactProblem<dim>::time_loop()
   {
@@ -282,6 +308,10 @@ namespace Contact
                                "data for values that overflow."));
         for (const auto &postprocessor : postprocessors)
           postprocessor->after_step(statistics);
+        if (adaptation_interval > 0 &&
+            state.step_number % adaptation_interval == 0 &&
+            state.step_number < n_time_steps)
+          transfer_to_adapted_mesh();
         if (checkpoint_due())
           save_checkpoint();
       }
@@ -442,8 +472,11 @@ namespace Contact
     std::unique_ptr<Postprocessor<dim>>);                                       \
   template RunSummary ContactProblem<dim>::run();                               \
   template void       ContactProblem<dim>::adapt_mesh(const MeshPlan &);        \
-  template void       ContactProblem<dim>::prepare_output_directory();          \
-  template void       ContactProblem<dim>::time_loop();                         \
+  template void       ContactProblem<dim>::adapt_mesh_during_run(               \
+    const unsigned int, std::function<void()>);                           \
+  template const MeshPlan &ContactProblem<dim>::get_mesh_plan() const;          \
+  template void            ContactProblem<dim>::prepare_output_directory();     \
+  template void            ContactProblem<dim>::time_loop();                    \
   template void ContactProblem<dim>::print_timings(const unsigned int) const;   \
   template RunSummary ContactProblem<dim>::summary() const;                     \
   template double ContactProblem<dim>::strain_norm(const VectorType &) const;   \

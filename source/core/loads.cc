@@ -62,6 +62,9 @@ namespace Contact
   void Loads<dim>::setup(const ContactBoundary<dim> &boundary)
   {
     gamma3 = &boundary;
+    // (Again on each mesh adapted during the run.)
+    owned_cells.clear();
+    boundary_cells.clear();
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {

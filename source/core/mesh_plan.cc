@@ -93,8 +93,18 @@ namespace Contact
     AssertThrow(file,
                 ExcMessage("Cannot read the adapted mesh's cycles '" +
                            file_name + "'."));
-    MeshPlan     plan;
-    unsigned int line_number = 0;
+    std::ostringstream text;
+    text << file.rdbuf();
+    return from_text(text.str(), file_name);
+  }
+
+
+  MeshPlan MeshPlan::from_text(const std::string &text,
+                               const std::string &file_name)
+  {
+    std::istringstream file(text);
+    MeshPlan           plan;
+    unsigned int       line_number = 0;
     for (std::string line; std::getline(file, line);)
       {
         ++line_number;

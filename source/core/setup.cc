@@ -70,8 +70,8 @@ namespace Contact
   // @sect4{ContactProblem::setup_system}
 
   // V_h with its constraints, the sparsity of the matrices, the vectors of
-  // the state, the nodes of Gamma_3 and the friction solver on them, and
-  // the set-up of the postprocessors.
+  // the state, the nodes of Gamma_3 and the friction solver on them: on the
+  // Geometry's mesh, and again on each mesh adapted during the run.
   template <int dim>
   void ContactProblem<dim>::setup_system()
   {
@@ -119,11 +119,16 @@ namespace Contact
       computing_timer);
     friction_solver->set_sabotage(sabotage);
     loads->setup(friction_solver->boundary());
-    // The postprocessors' set-up may refuse an entry of theirs (a probe
-    // outside the body): before anything is reported of the mesh.
-    for (const auto &postprocessor : postprocessors)
-      postprocessor->initialize();
+  }
 
+
+  // @sect4{ContactProblem::report_mesh}
+
+  // The size of the problem, and a warning where the mapping costs the
+  // tractions an order.
+  template <int dim>
+  void ContactProblem<dim>::report_mesh() const
+  {
     pcout << "Mesh: " << space.triangulation->n_global_active_cells()
           << " cells, "
           << (parameters.geometry.cell_shape ==
@@ -149,9 +154,10 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                          \
-  template void ContactProblem<dim>::make_grid(); \
-  template void ContactProblem<dim>::setup_system();
+#define INSTANTIATE(dim)                             \
+  template void ContactProblem<dim>::make_grid();    \
+  template void ContactProblem<dim>::setup_system(); \
+  template void ContactProblem<dim>::report_mesh() const;
 
   CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

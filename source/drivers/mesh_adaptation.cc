@@ -48,11 +48,17 @@
 #include <drivers/error_estimate.h>
 #include <drivers/mesh_adaptation.h>
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -68,9 +74,10 @@ namespace Contact
     // What an adaptation writes into its output directory: the cycles'
     // table, the adapted mesh's cycles, and the pilots' runs (kept by the
     // run on the adapted mesh).
-    const ResultFiles adaptation_files("adaptation\\.txt|adapted_mesh\\.txt");
+    const ResultFiles
+      adaptation_files("adaptation\\.txt|adaptation\\.csv|adapted_mesh\\.txt");
     const ResultDirectories cycle_runs("adaptation-cycle-[0-9]+", true);
-    const ResultFiles       indicator_files("indicators_0(\\.[0-9]+)?\\.p?vtu");
+    const ResultFiles indicator_files("indicators_[0-9]+(\\.[0-9]+)?\\.p?vtu");
 
     // The shares of the indicators are compared after rounding to this
     // resolution, which makes it unlikely that the cells chosen depend on
@@ -94,61 +101,58 @@ namespace Contact
     }
 
 
-    // @sect3{The indicators of a pilot}
+    // @sect3{The indicators}
 
-    // Gathers the indicators over the pilot's steps and, at its end,
-    // chooses the cells of the next cycle, adds them to the plan and writes
-    // the indicators (indicators_0.pvtu). It sets the refinement flags of
-    // the pilot's mesh to choose, reads them back and clears them: the
-    // pilot's results are not touched.
+    // The indicators of a mesh adaptation (the file's head) at the state of
+    // one step, as shares, and the choice of cells from them. A pilot takes
+    // them at many steps (PilotIndicators), a run that adapts during itself
+    // at the step of each adaptation (AdaptationDuringRun).
     template <int dim>
     class MeshIndicators : public Postprocessor<dim>
     {
     public:
       MeshIndicators(const MeshAdaptationParameters &parameters,
-                     const unsigned int              n_cycles_left,
-                     unsigned int                   &coarsest_level,
-                     MeshPlan                       &adapted_mesh)
+                     unsigned int                   &coarsest_level)
         : adaptation(parameters)
-        , cycles_left(n_cycles_left)
         , base_level(coarsest_level)
-        , plan(adapted_mesh)
       {}
 
       void initialize() override
       {
+        index_friction_nodes();
+        const Triangulation<dim> &mesh = *this->space().triangulation;
+        unsigned int coarsest = std::numeric_limits<unsigned int>::max();
+        for (const auto &cell : mesh.active_cell_iterators())
+          if (cell->is_locally_owned())
+            coarsest = std::min<unsigned int>(coarsest, cell->level());
+        coarsest =
+          Utilities::MPI::min(coarsest, this->space().mpi_communicator);
+        // The first pilot, or a run adapting during itself, starts from the
+        // scene's mesh.
+        if (coarsest_is_scene_mesh())
+          base_level = coarsest;
+      }
+
+    protected:
+      virtual bool coarsest_is_scene_mesh() const = 0;
+
+      void index_friction_nodes()
+      {
+        node_of_dof.clear();
         const auto &nodes = this->friction_solver().boundary().nodes;
         for (unsigned int p = 0; p < nodes.size(); ++p)
           node_of_dof[nodes[p].dofs[0]] = p;
-        for (Vector<float> &field : largest)
-          field.reinit(this->space().triangulation->n_active_cells());
-        // The first pilot runs on the scene's mesh.
-        if (plan.n_cycles() == 0)
-          {
-            unsigned int coarsest = std::numeric_limits<unsigned int>::max();
-            for (const auto &cell :
-                 this->space().triangulation->active_cell_iterators())
-              if (cell->is_locally_owned())
-                coarsest = std::min<unsigned int>(coarsest, cell->level());
-            base_level =
-              Utilities::MPI::min(coarsest, this->space().mpi_communicator);
-          }
       }
 
-      // At indicator_samples steps spread over the run and at its last.
-      void after_step(const StepStatistics &) override
+      // The chosen indicators of the state now, per active cell, into
+      // `fields` as the largest of what they hold and the new values.
+      void take_indicators(std::array<Vector<float>, 3> &fields) const
       {
-        const unsigned int step = this->state().step_number,
-                           n    = this->n_time_steps();
-        const unsigned int stride =
-          (n + indicator_samples - 1) / indicator_samples;
-        if (step % stride != 0 && step != n)
-          return;
         const DiscreteSpace<dim> &space = this->space();
         const std::map<types::boundary_id, const Function<dim> *> no_neumann;
         Vector<float>     estimate(space.triangulation->n_active_cells());
-        const VectorType *fields[] = {&this->state().displacement,
-                                      &this->state().velocity};
+        const VectorType *state_fields[] = {&this->state().displacement,
+                                            &this->state().velocity};
         for (unsigned int field = 0; field < 2; ++field)
           if (adaptation.indicators[field])
             {
@@ -156,37 +160,18 @@ namespace Contact
                                                  space.dof_handler,
                                                  space.face_quadrature,
                                                  no_neumann,
-                                                 space.ghosted(*fields[field]),
+                                                 space.ghosted(
+                                                   *state_fields[field]),
                                                  estimate);
-              keep_largest(estimate, largest[field]);
+              keep_largest(estimate, fields[field]);
             }
         if (adaptation.indicators[2])
           {
             slip_rate_variation(estimate);
-            keep_largest(estimate, largest[2]);
+            keep_largest(estimate, fields[2]);
           }
       }
 
-      void end() override
-      {
-        Triangulation<dim> &mesh      = *this->space().triangulation;
-        const Vector<float> indicator = shares();
-        choose_cells(indicator, mesh);
-        Vector<float> chosen(indicator.size());
-        for (const auto &cell : mesh.active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              chosen[cell->active_cell_index()] = cell->refine_flag_set() ? 1 :
-                                                  cell->coarsen_flag_set() ?
-                                                                            -1 :
-                                                                            0;
-              cell->clear_refine_flag();
-              cell->clear_coarsen_flag();
-            }
-        write_indicators(indicator, chosen);
-      }
-
-    private:
       static void keep_largest(const Vector<float> &estimate,
                                Vector<float>       &field)
       {
@@ -242,10 +227,10 @@ namespace Contact
 
       // Each indicator as a share of its largest value over the cells,
       // rounded to share_resolution; a cell's is the largest of its three.
-      Vector<float> shares() const
+      Vector<float> shares(const std::array<Vector<float>, 3> &fields) const
       {
-        Vector<float> result(largest[0].size());
-        for (const Vector<float> &field : largest)
+        Vector<float> result(fields[0].size());
+        for (const Vector<float> &field : fields)
           {
             // An indicator not chosen stays 0.
             const double worst =
@@ -262,35 +247,23 @@ namespace Contact
         return result;
       }
 
-      // The fraction of the cells to refine: the entry's, or with a target
-      // number of unknowns the share that multiplies them by
-      // (target / now)^(1 / cycles left), each refined cell adding
-      // 2^dim - 1 cells and unknowns growing like cells.
-      double refine_fraction() const
+      // Flags the cells with the largest and the smallest indicators, at
+      // most `max_cells` in all after the change, within the levels allowed.
+      void flag_cells(const Vector<float>           &indicator,
+                      const double                   refine_fraction,
+                      const types::global_cell_index max_cells) const
       {
-        if (adaptation.target_unknowns == 0)
-          return adaptation.refine_fraction;
-        const double now =
-          static_cast<double>(this->space().dof_handler.n_dofs());
-        const double factor =
-          std::pow(adaptation.target_unknowns / now, 1. / cycles_left);
-        return std::clamp((factor - 1.) / ((1 << dim) - 1),
-                          0.,
-                          1. - adaptation.coarsen_fraction);
-      }
-
-      void choose_cells(const Vector<float> &indicator,
-                        Triangulation<dim>  &mesh)
-      {
-        auto *distributed =
+        Triangulation<dim> &mesh = *this->space().triangulation;
+        auto               *distributed =
           dynamic_cast<parallel::distributed::Triangulation<dim> *>(&mesh);
         AssertThrow(distributed != nullptr,
                     ExcInternalError("Mesh adaptation needs p4est's mesh."));
         parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
           *distributed,
           indicator,
-          refine_fraction(),
-          adaptation.coarsen_fraction);
+          refine_fraction,
+          adaptation.coarsen_fraction,
+          max_cells);
         for (const auto &cell : mesh.active_cell_iterators())
           if (cell->is_locally_owned())
             {
@@ -300,20 +273,29 @@ namespace Contact
               if (static_cast<unsigned int>(cell->level()) <= base_level)
                 cell->clear_coarsen_flag();
             }
-        plan.add_cycle_from_flags(mesh);
       }
 
-      void write_indicators(const Vector<float> &indicator,
-                            const Vector<float> &chosen) const
+      // The indicators, their shares and the cells chosen (1 refined, -1
+      // coarsened), as indicators_<number>.pvtu.
+      void write_indicators(const std::array<Vector<float>, 3> &fields,
+                            const Vector<float>                &indicator,
+                            const unsigned int                  number,
+                            const unsigned int n_digits = 5) const
       {
         const DiscreteSpace<dim> &space = this->space();
-        DataOut<dim>              data_out;
+        Vector<float>             chosen(indicator.size());
+        for (const auto &cell : space.triangulation->active_cell_iterators())
+          if (cell->is_locally_owned())
+            chosen[cell->active_cell_index()] = cell->refine_flag_set()  ? 1 :
+                                                cell->coarsen_flag_set() ? -1 :
+                                                                           0;
+        DataOut<dim> data_out;
         data_out.attach_dof_handler(space.dof_handler);
         const char *names[] = {"kelly_displacement",
                                "kelly_velocity",
                                "slip_rate_variation"};
         for (unsigned int i = 0; i < 3; ++i)
-          data_out.add_data_vector(largest[i],
+          data_out.add_data_vector(fields[i],
                                    names[i],
                                    DataOut<dim>::type_cell_data);
         data_out.add_data_vector(indicator,
@@ -326,19 +308,209 @@ namespace Contact
         data_out.write_vtu_with_pvtu_record(
           this->parameters().output.directory + "/",
           "indicators",
-          0,
+          number,
           space.mpi_communicator,
-          1);
+          n_digits);
       }
 
       const MeshAdaptationParameters                 &adaptation;
-      const unsigned int                              cycles_left;
       unsigned int                                   &base_level;
-      MeshPlan                                       &plan;
       std::map<types::global_dof_index, unsigned int> node_of_dof;
+    };
+
+
+    // @sect3{The indicators of a pilot}
+
+    // Gathers the indicators over the pilot's steps and, at its end,
+    // chooses the cells of the next cycle, adds them to the plan and writes
+    // the indicators (indicators_0.pvtu). It sets the refinement flags of
+    // the pilot's mesh to choose, reads them back and clears them: the
+    // pilot's results are not touched.
+    template <int dim>
+    class PilotIndicators : public MeshIndicators<dim>
+    {
+    public:
+      PilotIndicators(const MeshAdaptationParameters &parameters,
+                      const unsigned int              n_cycles_left,
+                      unsigned int                   &coarsest_level,
+                      MeshPlan                       &adapted_mesh)
+        : MeshIndicators<dim>(parameters, coarsest_level)
+        , cycles_left(n_cycles_left)
+        , plan(adapted_mesh)
+      {}
+
+      void initialize() override
+      {
+        MeshIndicators<dim>::initialize();
+        for (Vector<float> &field : largest)
+          field.reinit(this->space().triangulation->n_active_cells());
+      }
+
+      // At indicator_samples steps spread over the run and at its last.
+      void after_step(const StepStatistics &) override
+      {
+        const unsigned int step = this->state().step_number,
+                           n    = this->n_time_steps();
+        const unsigned int stride =
+          (n + indicator_samples - 1) / indicator_samples;
+        if (step % stride == 0 || step == n)
+          this->take_indicators(largest);
+      }
+
+      void end() override
+      {
+        Triangulation<dim> &mesh      = *this->space().triangulation;
+        const Vector<float> indicator = this->shares(largest);
+        this->flag_cells(indicator,
+                         refine_fraction(),
+                         std::numeric_limits<types::global_cell_index>::max());
+        plan.add_cycle_from_flags(mesh);
+        this->write_indicators(largest, indicator, 0, 1);
+        for (const auto &cell : mesh.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              cell->clear_refine_flag();
+              cell->clear_coarsen_flag();
+            }
+      }
+
+    private:
+      bool coarsest_is_scene_mesh() const override
+      {
+        return plan.n_cycles() == 0;
+      }
+
+      // The fraction of the cells to refine: the entry's, or with a target
+      // number of unknowns the share that multiplies them by
+      // (target / now)^(1 / cycles left), each refined cell adding
+      // 2^dim - 1 cells and unknowns growing like cells.
+      double refine_fraction() const
+      {
+        const MeshAdaptationParameters &settings = this->adaptation;
+        if (settings.target_unknowns == 0)
+          return settings.refine_fraction;
+        const double now =
+          static_cast<double>(this->space().dof_handler.n_dofs());
+        const double factor =
+          std::pow(settings.target_unknowns / now, 1. / cycles_left);
+        return std::clamp((factor - 1.) / ((1 << dim) - 1),
+                          0.,
+                          1. - settings.coarsen_fraction);
+      }
+
+      const unsigned int cycles_left;
+      MeshPlan          &plan;
       // Kelly of u, Kelly of w, the slip rate's variation: the largest
       // over the steps so far, per active cell.
       std::array<Vector<float>, 3> largest;
+    };
+
+
+    // @sect3{Adapting during the run}
+
+    // 'Mesh adaptation/Interval' > 0: at each adaptation the indicators of
+    // the step alone choose the cells (the mesh follows the solution, so
+    // what happened before on the old mesh does not count), the problem
+    // moves to the new mesh (ContactProblem::transfer_to_adapted_mesh()),
+    // and this postprocessor writes indicators_<step>.pvtu, a row of
+    // adaptation.csv (the step, the mesh, and the kinetic plus elastic
+    // energy before and after the transfer) and adapted_mesh.txt (the
+    // mesh's cycles so far; a checkpoint stores them too).
+    template <int dim>
+    class AdaptationDuringRun : public MeshIndicators<dim>
+    {
+    public:
+      explicit AdaptationDuringRun(const MeshAdaptationParameters &parameters)
+        : MeshIndicators<dim>(parameters, scene_coarsest_level)
+      {}
+
+      // A resumed run has the rows up to its checkpoint (its state).
+      void start(const bool) override
+      {
+        write_files();
+      }
+
+      // The cells of the next mesh (the flags on the mesh now), with the
+      // step's indicators written out.
+      void choose_cells()
+      {
+        std::array<Vector<float>, 3> fields;
+        for (Vector<float> &field : fields)
+          field.reinit(this->space().triangulation->n_active_cells());
+        this->take_indicators(fields);
+        const Vector<float>             indicator = this->shares(fields);
+        const MeshAdaptationParameters &settings  = this->adaptation;
+        types::global_cell_index        max_cells =
+          std::numeric_limits<types::global_cell_index>::max();
+        if (settings.target_unknowns > 0)
+          max_cells = static_cast<types::global_cell_index>(
+            static_cast<double>(settings.target_unknowns) *
+            this->space().triangulation->n_global_active_cells() /
+            this->space().dof_handler.n_dofs());
+        this->flag_cells(indicator, settings.refine_fraction, max_cells);
+        // With the VTU output, whose interval the user chose for files.
+        if (this->parameters().output.template entry<unsigned int>(
+              "VTU interval") > 0)
+          this->write_indicators(fields, indicator, this->state().step_number);
+      }
+
+      void before_mesh_change() override
+      {
+        energy_before =
+          this->state().energy.kinetic + this->state().energy.elastic;
+      }
+
+      void mesh_changed() override
+      {
+        this->index_friction_nodes();
+        const StepState   &state = this->state();
+        std::ostringstream row;
+        row << state.step_number << ',' << std::setprecision(12) << state.time
+            << ',' << this->space().triangulation->n_global_active_cells()
+            << ',' << this->space().dof_handler.n_dofs() << ',' << energy_before
+            << ',' << state.energy.kinetic + state.energy.elastic;
+        rows.push_back(row.str());
+        write_files();
+      }
+
+      // The scene's coarsest level and the table's rows are part of the
+      // run's state.
+      void save(boost::archive::binary_oarchive &archive) override
+      {
+        archive &this->base_level &rows;
+      }
+
+      void load(boost::archive::binary_iarchive &archive) override
+      {
+        archive &this->base_level &rows;
+      }
+
+    private:
+      bool coarsest_is_scene_mesh() const override
+      {
+        return true;
+      }
+
+      // Written whole: the table has a row per adaptation, not per step.
+      void write_files() const
+      {
+        if (Utilities::MPI::this_mpi_process(this->space().mpi_communicator) !=
+            0)
+          return;
+        const std::string &directory = this->parameters().output.directory;
+        std::ofstream(directory + "/adapted_mesh.txt")
+          << this->problem().get_mesh_plan().text();
+        std::ofstream table(directory + "/adaptation.csv");
+        table << "after_step,time,cells,unknowns,energy_before,energy_after\n";
+        for (const std::string &row : rows)
+          table << row << '\n';
+      }
+
+      // The coarsest level of the scene's mesh (a resumed run has it from
+      // its checkpoint).
+      unsigned int             scene_coarsest_level = 0;
+      std::vector<std::string> rows;
+      double                   energy_before = 0;
     };
 
 
@@ -393,7 +565,7 @@ namespace Contact
                                                  directory + "/" + name,
                                                  true}));
         pilot.adapt_mesh(plan);
-        pilot.add_postprocessor(std::make_unique<MeshIndicators<dim>>(
+        pilot.add_postprocessor(std::make_unique<PilotIndicators<dim>>(
           adaptation, adaptation.cycles - cycle, base_level, plan));
         const std::string log = directory + "/" + name + "/console.log";
         const RunSummary  summary =
@@ -420,11 +592,32 @@ namespace Contact
   }
 
 
+  // @sect3{adapt_during_run}
+
+  template <int dim>
+  void adapt_during_run(ContactProblem<dim>            &problem,
+                        const MeshAdaptationParameters &adaptation)
+  {
+    auto chooser = std::make_unique<AdaptationDuringRun<dim>>(adaptation);
+    AdaptationDuringRun<dim> &cells = *chooser;
+    problem.add_postprocessor(std::move(chooser));
+    problem.adapt_mesh_during_run(adaptation.interval,
+                                  [&cells]() { cells.choose_cells(); });
+  }
+
+
   // @sect3{run_with_mesh_adaptation}
 
   template <int dim>
   void run_with_mesh_adaptation(const Parameters &scene)
   {
+    if (scene.mesh_adaptation.interval > 0)
+      {
+        ContactProblem<dim> problem(scene);
+        adapt_during_run(problem, scene.mesh_adaptation);
+        problem.run();
+        return;
+      }
     const std::string &directory = scene.output.directory;
     MeshPlan           plan;
     std::string        table;
@@ -466,10 +659,12 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                          \
-  template MeshPlan adapt_mesh_by_pilots<dim>(const Parameters &, \
-                                              std::string &);     \
-  template void     run_with_mesh_adaptation<dim>(const Parameters &);
+#define INSTANTIATE(dim)                                               \
+  template MeshPlan adapt_mesh_by_pilots<dim>(const Parameters &,      \
+                                              std::string &);          \
+  template void     run_with_mesh_adaptation<dim>(const Parameters &); \
+  template void     adapt_during_run<dim>(ContactProblem<dim> &,       \
+                                      const MeshAdaptationParameters &);
 
   CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

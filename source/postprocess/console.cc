@@ -310,7 +310,8 @@ namespace Contact
                             energy.external_work,
                             energy.viscous_dissipation,
                             energy.friction_dissipation,
-                            energy.numerical_dissipation};
+                            energy.numerical_dissipation,
+                            energy.mesh_transfer};
     double       largest = 0;
     for (const double value : terms)
       largest = std::max(largest, std::abs(value));
@@ -327,7 +328,10 @@ namespace Contact
                   << cancelling(energy.external_work) << ", viscous "
                   << energy.viscous_dissipation << ", friction "
                   << cancelling(energy.friction_dissipation) << ", numerical "
-                  << cancelling(energy.numerical_dissipation) << std::endl;
+                  << cancelling(energy.numerical_dissipation);
+    if (this->parameters().mesh_adaptation.interval > 0)
+      this->pcout() << ", mesh transfers " << cancelling(energy.mesh_transfer);
+    this->pcout() << std::endl;
   }
 
 

@@ -19,6 +19,11 @@ namespace Contact
   {
   public:
     void initialize() override;
+    // The cells around the points are the new mesh's.
+    void mesh_changed() override
+    {
+      initialize();
+    }
     void add_columns(TimeSeriesRow &row) const override;
     void add_to_summary(RunSummary &summary) const override;
 

@@ -206,6 +206,17 @@ namespace Contact
       check_step();
     }
 
+    // The new mesh's map of Gamma_3, rotation and matrices; the next step's
+    // energy identity starts from the energies after the transfer.
+    void mesh_changed() override
+    {
+      residual_work = VectorType();
+      friction_work = VectorType();
+      setup_gamma3_map();
+      setup_moment_balance();
+      start_self_checks();
+    }
+
     void add_columns(TimeSeriesRow &row) const override;
 
     void save(boost::archive::binary_oarchive &archive) override

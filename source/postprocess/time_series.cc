@@ -48,6 +48,12 @@ namespace Contact
   private:
     TimeSeriesRow columns() const;
     void write_row(const TimeSeriesRow &row, const StepStatistics &statistics);
+    // The energy the transfers to adapted meshes changed is a column of
+    // runs that adapt during the run alone.
+    bool adapts_during_run() const
+    {
+      return this->parameters().mesh_adaptation.interval > 0;
+    }
 
     CsvFile file;
   };
@@ -85,6 +91,8 @@ namespace Contact
       "n_stick,n_slip,max_slip_rate,friction_force,"
       "kinetic_energy,elastic_energy,external_work,viscous_dissipation,"
       "friction_dissipation,numerical_dissipation";
+    if (adapts_during_run())
+      header += ",mesh_transfer";
     for (const auto &[name, value] : row.columns)
       header += "," + name;
     file.open(this->parameters().output.directory + "/time_series.csv",
@@ -121,6 +129,8 @@ namespace Contact
         << energy.elastic << ',' << energy.external_work << ','
         << energy.viscous_dissipation << ',' << energy.friction_dissipation
         << ',' << energy.numerical_dissipation;
+    if (adapts_during_run())
+      out << ',' << energy.mesh_transfer;
     for (const auto &[name, value] : row.columns)
       out << ',' << value;
     out << '\n';

@@ -101,8 +101,9 @@ namespace Contact
   // an output's time (measured: 18 + 18 ms of 45 ms per output of the
   // paper's scene); they run in a background thread while the time loop
   // goes on, and finish_vtu() waits for them before the next output, a
-  // checkpoint or the end of the run. The thread reads the mesh, the
-  // DoFHandlers and the mapping, which the time loop does not change, and
+  // checkpoint, a change of the mesh or the end of the run. The thread reads
+  // the mesh, the DoFHandlers and the mapping, which the steps do not change,
+  // and
   // makes no MPI calls: DataOut's ghosted copies of the fields (MPI calls)
   // are made before it starts.
   template <int dim>
@@ -135,6 +136,12 @@ namespace Contact
     }
 
     void end() override
+    {
+      finish_vtu();
+    }
+
+    // The thread reads the mesh that is about to change.
+    void before_mesh_change() override
     {
       finish_vtu();
     }

@@ -19,9 +19,15 @@
    value (the energy residual: of the largest external work), and the
    PVTU and PVD records, which are text, exactly.
 
-   Last, the same on one process on a mesh adapted in two cycles ('Mesh
+   Then the same on one process on a mesh adapted in two cycles ('Mesh
    adaptation/Cycles' = 2): the resumed run reads the mesh's cycles from
-   adapted_mesh.txt, and must again reproduce the uninterrupted run. */
+   adapted_mesh.txt, and must again reproduce the uninterrupted run.
+
+   Last, on a mesh adapted during the run every 7 steps ('Mesh
+   adaptation/Interval' = 7): the checkpoint of step 35 is written right
+   after the adaptation of that step and stores the mesh's cycles; the
+   resumed run is built on that mesh and must reproduce the uninterrupted
+   run, including its later adaptations. */
 
 #include <fcntl.h>
 #include <signal.h>
@@ -397,4 +403,14 @@ int main()
   // adapted_mesh.txt instead of running the pilots again.
   std::cout << "On a mesh adapted in two cycles, one process:" << std::endl;
   kill_and_resume(1, "-adapted", {"--set", "Mesh adaptation/Cycles=2"});
+  std::cout << "On a mesh adapted during the run every 7 steps, one process:"
+            << std::endl;
+  kill_and_resume(1,
+                  "-during",
+                  {"--set",
+                   "Mesh adaptation/Interval=7",
+                   "--set",
+                   "Mesh adaptation/Max levels=1",
+                   "--set",
+                   "Mesh adaptation/Coarsen fraction=0.2"});
 }
