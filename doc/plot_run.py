@@ -12,6 +12,11 @@ writes into <directory>/figures/ (or --output):
                        body's boundary seen from above and, beside it, a
                        map of Gamma_3 with each face coloured by the share
                        of its nodes that slip
+  mesh.png             the mesh at the chosen times (a mesh adapted during
+                       the run changes): in 2D every cell, in 3D the faces
+                       of Gamma_3 on its map, each coloured by its level of
+                       refinement below the largest cells, the nodes of
+                       Gamma_3 marked stick or slip
   gamma3_profiles.png  along Gamma_3 at the chosen times: the friction
                        traction against its bound mu(|w_tau|) S, and the slip
                        rate |w_tau|
@@ -516,6 +521,100 @@ def plot_deformed(directory, times, field, output):
     return "; ".join(shown), None
 
 
+# @sect3{The mesh}
+
+def cell_outlines(points, cells, cell_type, degree):
+    """The corners of every mesh cell in 2D, counter-clockwise. deal.II
+    writes a cell of degree p as one patch of p x p quadrilaterals with its
+    (p + 1)^2 points in a block, in lexicographic order; a triangle is its
+    own outline."""
+    if cell_type == 9 and degree > 1:
+        block = (degree + 1) ** 2
+        patches = points[: len(points) // block * block].reshape(
+            -1, block, points.shape[1])
+        return patches[:, [0, degree, block - 1, block - 1 - degree], :2]
+    corners = cells[:, CELL_TYPES[cell_type][1]]
+    return points[corners][:, :, :2]
+
+
+def refinement_levels(outlines):
+    """Each polygon's level: log2 of the largest diameter over its own,
+    rounded (a graded or adapted mesh's levels of refinement)."""
+    diameters = np.array([max(np.linalg.norm(a - b) for a in polygon
+                              for b in polygon) for polygon in outlines])
+    return np.rint(np.log2(diameters.max() / diameters)).astype(int)
+
+
+def draw_mesh(axis, polygons, levels, status_points, status, equal):
+    """Polygons by level (discrete colours, black edges) and the nodes of
+    Gamma_3 by their status."""
+    colours = plt.cm.Blues(0.15 + 0.7 * levels / max(levels.max(), 1))
+    axis.add_collection(PolyCollection(polygons, facecolors=colours,
+                                       edgecolors="black", linewidths=0.2))
+    for state, colour in STATE_COLOURS.items():
+        axis.plot(*status_points[status == state].T, "o", color=colour, ms=2)
+    axis.autoscale_view()
+    if equal:
+        axis.set_aspect("equal")
+
+
+def plot_mesh(directory, times, output):
+    """mesh.png; returns what it shows, or why it was skipped."""
+    records = read_pvd(directory)
+    if not records:
+        return None, "no solution.pvd (Output/VTU interval = 0?)"
+    degree = int(read_parameter(directory, "Finite element degree") or "1")
+    steps = []
+    for t in times:
+        record = min(records, key=lambda r: abs(r[0] - t))
+        if record not in steps:
+            steps.append(record)
+    figure, axes = plt.subplots(len(steps), 1, squeeze=False,
+                                figsize=(11.0, 3.6 * len(steps)),
+                                constrained_layout=True)
+    shown, three_d = [], False
+    for axis, (t, name) in zip(axes[:, 0], steps):
+        points, cells, cell_type, arrays = read_snapshot(directory, name)
+        status = arrays["contact_status"]
+        if CELL_TYPES[cell_type][0] == 2:
+            polygons = cell_outlines(points, cells, cell_type, degree)
+            on_gamma3 = status > 0
+            draw_mesh(axis, polygons, refinement_levels(polygons),
+                      points[on_gamma3][:, :2], status[on_gamma3], True)
+            axis.set_xlabel("x [m]")
+            axis.set_ylabel("y [m]")
+            what = f"{len(polygons)} cells"
+        else:
+            faces = gamma3_faces(points, cells, cell_type, arrays)
+            if len(faces) == 0:
+                axis.set_axis_off()
+                shown.append(f"t = {t:.4g}: no faces of Γ3")
+                continue
+            corners = points[faces]
+            in_plane = sorted(np.argsort(np.ptp(corners.reshape(-1, 3),
+                                                axis=0))[1:])
+            polygons = corners[:, :, in_plane]
+            nodes = np.unique(faces)
+            draw_mesh(axis, polygons, refinement_levels(polygons),
+                      points[nodes][:, in_plane], status[nodes], True)
+            axis.set_xlabel(f"{'xyz'[in_plane[0]]} on Γ3 [m]")
+            axis.set_ylabel(f"{'xyz'[in_plane[1]]} on Γ3 [m]")
+            what = f"{len(polygons)} faces of Γ3"
+        count = refinement_levels(polygons).max() + 1
+        sizes = f"{count} size{'s' if count > 1 else ''}"
+        axis.set_title(f"t = {t:.4g}: {what} of {sizes}" +
+                       (" (darker: finer)" if count > 1 else ""))
+        shown.append(f"t = {t:.4g}: {what} of {sizes}")
+        three_d = CELL_TYPES[cell_type][0] == 3
+    figure.suptitle("the mesh" + (" (the faces of Γ3 as the output's "
+                                  "subcells)" if three_d and degree > 1
+                                  else "") +
+                    "; Γ3: stick blue, slip red")
+    figure.savefig(os.path.join(output, "mesh.png"), dpi=DPI)
+    plt.close(figure)
+    return "; ".join(shown), None
+
+
 # @sect3{Gamma_3: profiles and the space-time diagram}
 
 def add_angle(history):
@@ -814,6 +913,8 @@ def main():
 
     shown, reason = plot_deformed(directory, times, arguments.field, output)
     record("deformed.png", shown, reason)
+    shown, reason = plot_mesh(directory, times, output)
+    record("mesh.png", shown, reason)
     history_path = os.path.join(directory, "gamma3_history.csv")
     history = read_csv(history_path) if os.path.exists(history_path) else None
     if history is None:

@@ -48,6 +48,13 @@ namespace Contact
      *  cannot read. */
     std::string     text() const;
     static MeshPlan read(const std::string &file_name);
+    /** The plan for the scene's mesh with `levels` fewer global
+     *  refinements (cell size times 2^levels): each cell named by its
+     *  ancestor `levels` generations up, so that the mesh is this plan's
+     *  mesh coarsened by `levels` levels (where a family is split between
+     *  levels, the finer part is coarsened). */
+    MeshPlan coarser(const unsigned int levels) const;
+
     /** The same from the text, with the name of the file it came from. */
     static MeshPlan from_text(const std::string &text,
                               const std::string &file_name);

@@ -10,6 +10,7 @@
 #define contact_error_estimate_h
 
 #include <core/contact_problem.h>
+#include <core/mesh_plan.h>
 #include <base/parameters.h>
 
 #include <cmath>
@@ -164,10 +165,14 @@ namespace Contact
   /** Runs the scene of `parameters` and its coarse versions, and prints
    *  and writes the estimated errors (error_estimate.txt). A quantity with
    *  known orders in h and k is extrapolated with both (error_estimate.cc).
+   *  On a mesh adapted by pilots (`plan`: the cycles that changed the
+   *  scene's mesh) the coarse runs are on that mesh coarsened by one and
+   *  two levels (MeshPlan::coarser()).
    */
   template <int dim>
   EstimatedRun run_with_error_estimate(const Parameters  &parameters,
-                                       const KnownOrders &orders = {});
+                                       const KnownOrders &orders = {},
+                                       const MeshPlan    &plan   = MeshPlan());
 } // namespace Contact
 
 #endif

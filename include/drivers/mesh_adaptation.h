@@ -19,8 +19,8 @@ namespace Contact
   /** Runs the pilots of `scene` (each in its own subdirectory
    *  adaptation-cycle-c), then the scene on the adapted mesh; writes the
    *  cycles' table (adaptation.txt) and the adapted mesh's cycles
-   *  (adapted_mesh.txt, which --resume reads instead of running the pilots
-   *  again). */
+   *  (adapted_mesh.txt). --resume runs on the mesh its checkpoint stores,
+   *  without the pilots. */
   template <int dim>
   void run_with_mesh_adaptation(const Parameters &scene);
 

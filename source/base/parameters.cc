@@ -945,8 +945,9 @@ namespace Contact
         "predecessor refined and coarsened from the 'Indicators', taken at "
         "at most 20 steps spread over the run and kept as their largest; "
         "then the scene runs on the adapted mesh. The pilots write "
-        "indicators_0.pvtu; adapted_mesh.txt holds the mesh's cycles, which "
-        "--resume reads.");
+        "indicators_0.pvtu; adapted_mesh.txt holds the mesh's cycles (every "
+        "checkpoint stores them too: --resume runs on them without the "
+        "pilots).");
       prm.declare_entry(
         "Interval",
         "0",
@@ -978,8 +979,10 @@ namespace Contact
         Patterns::Integer(0),
         "0: refine by 'Refine fraction'. n > 0: refine as many cells per "
         "cycle as multiply the unknowns by equal factors to about n at the "
-        "last cycle; during the run ('Interval' > 0), refine by 'Refine "
-        "fraction' but to at most about n unknowns.");
+        "last cycle. During the run ('Interval' > 0): refine by 'Refine "
+        "fraction' up to about n unknowns, and from there only as many cells "
+        "as the coarsening frees, so that the mesh keeps about n unknowns and "
+        "still follows the solution.");
       prm.declare_entry(
         "Indicators",
         "displacement",
@@ -1338,15 +1341,23 @@ namespace Contact
                            "it refines quadrilaterals and "
                            "hexahedra only; allowed with it is '" +
                            Entry::cell_shape + "' = hypercube."));
+    // (An error estimate of a mesh adapted by pilots runs it coarsened.)
     for (const auto &[entry, set] :
          {std::pair{Entry::levels, convergence_study.levels > 0},
-          std::pair{Entry::estimate_error, accuracy.estimate_error},
+          std::pair{Entry::estimate_error,
+                    accuracy.estimate_error && mesh_adaptation.interval > 0},
           std::pair{Entry::target_error, accuracy.target_error > 0}})
       AssertThrow(!set,
-                  ExcMessage(adapting + "it cannot be combined with '" + entry +
-                             "' yet; allowed are '" + Entry::adaptation_cycles +
-                             "' = 0 and '" + Entry::adaptation_interval +
-                             "' = 0 there."));
+                  ExcMessage(
+                    adapting + "it cannot be combined with '" + entry +
+                    (entry == Entry::estimate_error ?
+                       "' yet; allowed is '" + Entry::adaptation_interval +
+                         "' = 0 there (an error estimate takes a mesh "
+                         "adapted by '" +
+                         Entry::adaptation_cycles + "')." :
+                       "' yet; allowed are '" + Entry::adaptation_cycles +
+                         "' = 0 and '" + Entry::adaptation_interval +
+                         "' = 0 there.")));
   }
 
 

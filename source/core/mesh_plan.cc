@@ -70,6 +70,35 @@ namespace Contact
   }
 
 
+  MeshPlan MeshPlan::coarser(const unsigned int levels) const
+  {
+    // A CellId's text is 'coarse_level:children', one child digit per
+    // level: the ancestor drops the last digits.
+    const auto ancestor = [levels](const std::string &id) {
+      const std::size_t  underscore = id.find('_'), colon = id.find(':');
+      const unsigned int level =
+        std::stoul(id.substr(underscore + 1, colon - underscore - 1));
+      AssertThrow(level >= levels,
+                  ExcInternalError("A mesh adaptation's cell " + id +
+                                   " has no ancestor " +
+                                   std::to_string(levels) + " levels up."));
+      return id.substr(0, underscore + 1) + std::to_string(level - levels) +
+             ":" + id.substr(colon + 1, level - levels);
+    };
+    MeshPlan result;
+    for (const auto &[from, to] : {std::pair{&refined, &result.refined},
+                                   std::pair{&coarsened, &result.coarsened}})
+      for (const std::vector<std::string> &cycle : *from)
+        {
+          std::set<std::string> cells;
+          for (const std::string &id : cycle)
+            cells.insert(ancestor(id));
+          to->emplace_back(cells.begin(), cells.end());
+        }
+    return result;
+  }
+
+
   std::string MeshPlan::text() const
   {
     std::ostringstream out;

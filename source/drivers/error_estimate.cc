@@ -395,6 +395,7 @@ namespace Contact
     // run with that factor, on the given run's mesh.
     template <int dim>
     RunAtTimes run_coarse(const Parameters                  &base,
+                          const MeshPlan                    &plan,
                           const unsigned int                 space_factor,
                           const unsigned int                 time_factor,
                           const unsigned int                 history_factor,
@@ -412,6 +413,7 @@ namespace Contact
                        base.geometry.fe_degree,
                        base.output.directory + "/" + name,
                        true}));
+      coarse.adapt_mesh(plan.coarser(-halvings));
       const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       if (root)
         std::cout << "Error estimate: the scene with h times " << space_factor
@@ -835,7 +837,8 @@ namespace Contact
 
   template <int dim>
   EstimatedRun run_with_error_estimate(const Parameters  &parameters,
-                                       const KnownOrders &orders)
+                                       const KnownOrders &orders,
+                                       const MeshPlan    &plan)
   {
     Timer timer;
     // The run itself first; it stays, since the other runs' displacements
@@ -850,12 +853,14 @@ namespace Contact
                                          n_steps % 4 == 0        ? 4 :
                                                                    0;
     ContactProblem<dim> fine(parameters);
-    EstimateRuns        runs;
+    fine.adapt_mesh(plan);
+    EstimateRuns runs;
     runs.sequence.push_back(run_onto<dim>(fine, nullptr, history_factor));
     const ReferenceInterpolation<dim> interpolate(fine);
     for (unsigned int factor = 2; factor <= coarsest; factor *= 2)
       runs.sequence.push_back(
         run_coarse(parameters,
+                   plan,
                    factor,
                    factor,
                    history_factor,
@@ -866,12 +871,14 @@ namespace Contact
         {
           const std::string level = std::to_string(factor / 2);
           runs.space.push_back(run_coarse(parameters,
+                                          plan,
                                           factor,
                                           1,
                                           history_factor,
                                           "coarse-space-" + level,
                                           interpolate));
           runs.time.push_back(run_coarse(parameters,
+                                         plan,
                                          1,
                                          factor,
                                          history_factor,
@@ -903,7 +910,8 @@ namespace Contact
                                     const unsigned int,                  \
                                     const std::string &);                \
   template EstimatedRun run_with_error_estimate<dim>(const Parameters &,   \
-                                                     const KnownOrders &);
+                                                     const KnownOrders &,  \
+                                                     const MeshPlan &);
   CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
 } // namespace Contact

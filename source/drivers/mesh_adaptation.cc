@@ -247,11 +247,10 @@ namespace Contact
         return result;
       }
 
-      // Flags the cells with the largest and the smallest indicators, at
-      // most `max_cells` in all after the change, within the levels allowed.
-      void flag_cells(const Vector<float>           &indicator,
-                      const double                   refine_fraction,
-                      const types::global_cell_index max_cells) const
+      // Flags the cells with the largest and the smallest indicators,
+      // within the levels allowed.
+      void flag_cells(const Vector<float> &indicator,
+                      const double         refine_fraction) const
       {
         Triangulation<dim> &mesh = *this->space().triangulation;
         auto               *distributed =
@@ -262,8 +261,7 @@ namespace Contact
           *distributed,
           indicator,
           refine_fraction,
-          adaptation.coarsen_fraction,
-          max_cells);
+          adaptation.coarsen_fraction);
         for (const auto &cell : mesh.active_cell_iterators())
           if (cell->is_locally_owned())
             {
@@ -361,9 +359,7 @@ namespace Contact
       {
         Triangulation<dim> &mesh      = *this->space().triangulation;
         const Vector<float> indicator = this->shares(largest);
-        this->flag_cells(indicator,
-                         refine_fraction(),
-                         std::numeric_limits<types::global_cell_index>::max());
+        this->flag_cells(indicator, refine_fraction());
         plan.add_cycle_from_flags(mesh);
         this->write_indicators(largest, indicator, 0, 1);
         for (const auto &cell : mesh.active_cell_iterators())
@@ -438,16 +434,8 @@ namespace Contact
         for (Vector<float> &field : fields)
           field.reinit(this->space().triangulation->n_active_cells());
         this->take_indicators(fields);
-        const Vector<float>             indicator = this->shares(fields);
-        const MeshAdaptationParameters &settings  = this->adaptation;
-        types::global_cell_index        max_cells =
-          std::numeric_limits<types::global_cell_index>::max();
-        if (settings.target_unknowns > 0)
-          max_cells = static_cast<types::global_cell_index>(
-            static_cast<double>(settings.target_unknowns) *
-            this->space().triangulation->n_global_active_cells() /
-            this->space().dof_handler.n_dofs());
-        this->flag_cells(indicator, settings.refine_fraction, max_cells);
+        const Vector<float> indicator = this->shares(fields);
+        this->flag_cells(indicator, refine_fraction());
         // With the VTU output, whose interval the user chose for files.
         if (this->parameters().output.template entry<unsigned int>(
               "VTU interval") > 0)
@@ -491,6 +479,31 @@ namespace Contact
         return true;
       }
 
+      // The entry's fraction, or with a target number of unknowns at most
+      // as many cells as bring the mesh to the target's share of cells:
+      // refining a share r of N cells adds (2^dim - 1) r N cells,
+      // coarsening a share c removes about (2^dim - 1) / 2^dim c N, so at
+      // the target r = c / 2^dim keeps the size while the cells still move
+      // with the solution (deal.II's cap on the cells would refine none
+      // there, and the mesh would stop following it).
+      double refine_fraction() const
+      {
+        const MeshAdaptationParameters &settings = this->adaptation;
+        if (settings.target_unknowns == 0)
+          return settings.refine_fraction;
+        const double cells = static_cast<double>(
+          this->space().triangulation->n_global_active_cells());
+        const double target_cells =
+          settings.target_unknowns * cells /
+          static_cast<double>(this->space().dof_handler.n_dofs());
+        const double children = (1 << dim);
+        const double share =
+          (target_cells - cells +
+           settings.coarsen_fraction * cells * (children - 1) / children) /
+          ((children - 1) * cells);
+        return std::clamp(share, 0., settings.refine_fraction);
+      }
+
       // Written whole: the table has a row per adaptation, not per step.
       void write_files() const
       {
@@ -517,8 +530,8 @@ namespace Contact
     // @sect3{The files of the run on the adapted mesh}
 
     // Written when the run on the adapted mesh starts (after it has
-    // cleared its directory): the cycles of the mesh, which --resume
-    // reads, and their table.
+    // cleared its directory): the cycles of the mesh and their table. A
+    // resumed run keeps those of the run it continues.
     template <int dim>
     class AdaptationFiles : public Postprocessor<dim>
     {
@@ -618,39 +631,39 @@ namespace Contact
         problem.run();
         return;
       }
-    const std::string &directory = scene.output.directory;
-    MeshPlan           plan;
-    std::string        table;
-    if (scene.output.resume)
-      {
-        AssertThrow(std::filesystem::exists(directory + "/adapted_mesh.txt"),
-                    ExcMessage("Entry '" + Entry::resume + "' (--resume): '" +
-                               directory +
-                               "' has no adapted_mesh.txt, which a mesh "
-                               "adaptation writes when the run on the adapted "
-                               "mesh starts; run the scene again without "
-                               "--resume."));
-        plan = MeshPlan::read(directory + "/adapted_mesh.txt");
-        console() << "Mesh adaptation: resuming on the mesh of '" << directory
-                  << "/adapted_mesh.txt' (" << plan.n_cycles() << " cycles)"
-                  << std::endl;
-      }
-    else
+    // A resumed run is built on the mesh its checkpoint stores: the pilots
+    // do not run again.
+    MeshPlan    plan;
+    std::string table;
+    if (!scene.output.resume)
       {
         // The earlier results go before the pilots run (a run killed among
         // them must leave nothing that --resume would take for its own),
         // and the directory is locked while they run; the run on the
         // adapted mesh locks it again.
         const std::shared_ptr<const int> lock =
-          lock_output_directory(directory, MPI_COMM_WORLD);
+          lock_output_directory(scene.output.directory, MPI_COMM_WORLD);
         if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-          remove_results(directory, false, MPI_COMM_WORLD);
+          remove_results(scene.output.directory, false, MPI_COMM_WORLD);
         plan = adapt_mesh_by_pilots<dim>(scene, table);
       }
 
     // The run on the adapted mesh keeps the pilots in its directory.
     Parameters adapted   = scene;
     adapted.keeps_pilots = true;
+    if (scene.accuracy.estimate_error)
+      {
+        // The estimate's runs clear the directory first: the files of the
+        // adaptation are written after them.
+        run_with_error_estimate<dim>(adapted, {}, plan);
+        if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          {
+            std::ofstream(scene.output.directory + "/adapted_mesh.txt")
+              << plan.text();
+            std::ofstream(scene.output.directory + "/adaptation.txt") << table;
+          }
+        return;
+      }
     ContactProblem<dim> problem(adapted);
     problem.adapt_mesh(plan);
     problem.add_postprocessor(

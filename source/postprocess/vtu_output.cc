@@ -30,6 +30,7 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <set>
 
 namespace Contact
 {
@@ -75,14 +76,17 @@ namespace Contact
     // friction nodes only, and a hanging node of Gamma_3 is none.
     // A category (the contact status) takes the largest of the nodes it
     // follows instead: a node between a sticking and a slipping one slips.
+    // Only hanging nodes on Gamma_3 (`on_gamma3`) carry these fields: one
+    // inside the body that follows a node of Gamma_3 keeps its 0.
     template <typename Vector>
     void set_hanging_values(const AffineConstraints<double> &hanging,
                             const IndexSet                  &lines,
+                            const IndexSet                  &on_gamma3,
                             Vector                          &field,
                             const bool                       category = false)
     {
       for (const auto &line : hanging.get_lines())
-        if (lines.is_element(line.index))
+        if (lines.is_element(line.index) && on_gamma3.is_element(line.index))
           {
             double value = 0;
             for (const auto &[dof, c] : line.entries)
@@ -329,13 +333,27 @@ namespace Contact
     DoFTools::make_hanging_node_constraints(space.scalar_dof_handler,
                                             scalar_hanging);
     scalar_hanging.close();
-    set_hanging_values(scalar_hanging, scalar_relevant, output.status, true);
+    const std::vector<types::boundary_id> &ids =
+      this->parameters().boundary.contact_ids;
+    const std::set<types::boundary_id> contact_ids(ids.begin(), ids.end());
+    const IndexSet                     scalar_on_gamma3 =
+      DoFTools::extract_boundary_dofs(space.scalar_dof_handler,
+                                      ComponentMask(),
+                                      contact_ids);
+    set_hanging_values(
+      scalar_hanging, scalar_relevant, scalar_on_gamma3, output.status, true);
     for (Vector<double> *field : {&output.slip_rate, &output.friction_bound})
-      set_hanging_values(scalar_hanging, scalar_relevant, *field);
+      set_hanging_values(scalar_hanging,
+                         scalar_relevant,
+                         scalar_on_gamma3,
+                         *field);
 
     const AffineConstraints<double> &hanging = space.hanging_node_constraints;
     set_hanging_values(hanging,
                        space.locally_owned_dofs,
+                       DoFTools::extract_boundary_dofs(space.dof_handler,
+                                                       ComponentMask(),
+                                                       contact_ids),
                        output.friction_traction);
     output.friction_traction.update_ghost_values();
   }

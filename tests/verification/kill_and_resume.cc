@@ -20,8 +20,9 @@
    PVTU and PVD records, which are text, exactly.
 
    Then the same on one process on a mesh adapted in two cycles ('Mesh
-   adaptation/Cycles' = 2): the resumed run reads the mesh's cycles from
-   adapted_mesh.txt, and must again reproduce the uninterrupted run.
+   adaptation/Cycles' = 2): the resumed run builds the mesh from the
+   cycles its checkpoint stores, without the pilots, and must again
+   reproduce the uninterrupted run.
 
    Last, on a mesh adapted during the run every 7 steps ('Mesh
    adaptation/Interval' = 7): the checkpoint of step 35 is written right
@@ -400,7 +401,7 @@ int main()
   std::cout << "On two processes (mpirun -np 2):" << std::endl;
   kill_and_resume(2);
   // The run on a mesh adapted by two pilots: --resume takes the mesh from
-  // adapted_mesh.txt instead of running the pilots again.
+  // its checkpoint instead of running the pilots again.
   std::cout << "On a mesh adapted in two cycles, one process:" << std::endl;
   kill_and_resume(1, "-adapted", {"--set", "Mesh adaptation/Cycles=2"});
   std::cout << "On a mesh adapted during the run every 7 steps, one process:"

@@ -1,5 +1,8 @@
 /* doc/plot_run.py draws every run: the paper's scene, a 2 x 0.5 block, the
-   3D scene, P2 triangles, P1 tetrahedra, a run without Gamma_3, a run
+   paper's scene with Q2 on a mesh adapted during the run (mesh.png shows
+   cells of two sizes, each Q2 cell as one), the 3D scene, the 3D scene
+   graded towards a point of Gamma_3 (faces of several sizes there), P2
+   triangles, P1 tetrahedra, a run without Gamma_3, a run
    without VTU and Gamma_3 history, a convergence study and one of its
    levels, each on a coarse grid, run by the program and then plotted with
    no display (DISPLAY unset), once with the options --times, --field and
@@ -95,6 +98,14 @@ int main()
                coarse + "--set 'Geometry/Cell shape=simplex' "
                         "--set 'Geometry/Finite element degree=2'",
                "p2_triangles");
+  run_and_plot("adapted_during_run_q2",
+               "barboteu2015.prm",
+               coarse + "--set 'Geometry/Finite element degree=2' "
+                        "--set 'Mesh adaptation/Interval=6' "
+                        "--set 'Mesh adaptation/Coarsen fraction=0.1' "
+                        "--set 'Mesh adaptation/Max levels=1' "
+                        "--set 'Output/VTU interval=6'",
+               "adapted_during_run_q2");
   run_and_plot("no_gamma3",
                "barboteu2015.prm",
                coarse + "--set 'Boundary conditions/Contact boundary ids='",
@@ -107,6 +118,11 @@ int main()
   const std::string coarse_3d =
     "--set 'Geometry/Cell size=0.125' --set 'Time/Time step=0.125' ";
   run_and_plot("three_d", "barboteu2015_3d.prm", coarse_3d, "three_d");
+  run_and_plot("three_d_graded",
+               "barboteu2015_3d.prm",
+               coarse_3d + "--set 'Geometry/Refinement points=0.5, 0, 0.5' "
+                           "--set 'Geometry/Refinement radius=0.3'",
+               "three_d_graded");
   run_and_plot("tetrahedra",
                "barboteu2015_3d.prm",
                coarse_3d + "--set 'Geometry/Cell shape=simplex'",
