@@ -63,7 +63,7 @@ RUNS = [
                 "Mesh adaptation/Indicators=displacement, velocity, slip rate"]),
 ] + [
     (f"during the run (Kelly of u), every 10 steps, 30 % refined and 10 % coarsened, "
-     f"at most {target} unknowns",
+     f"towards {target} unknowns",
      ADAPTED + ["Mesh adaptation/Interval=10", "Mesh adaptation/Coarsen fraction=0.1",
                 f"Mesh adaptation/Target unknowns={target}"])
     for target in (2000, 4000, 8000)

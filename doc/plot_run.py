@@ -377,6 +377,24 @@ def gamma3_faces(points, cells, cell_type, arrays):
     return faces[on_gamma3]
 
 
+def gamma3_plane(corners):
+    """The corners of Gamma_3's faces in its plane (the two coordinates in
+    which it extends furthest), or, on a cylinder about the z-axis,
+    unrolled to the angle atan2(y, x) and z; and the axes' labels."""
+    radius = np.hypot(corners[:, :, 0], corners[:, :, 1])
+    if radius.min() > 0 and np.ptp(radius) <= 1e-6 * radius.max():
+        angle = np.degrees(np.arctan2(corners[:, :, 1], corners[:, :, 0]))
+        # A face across +-180 degrees is drawn on the positive side.
+        across = np.ptp(angle, axis=1) > 180
+        angle[across] = np.where(angle[across] < 0, angle[across] + 360,
+                                 angle[across])
+        return (np.stack([angle, corners[:, :, 2]], axis=2),
+                ("angle on Γ3 [°]", "z on Γ3 [m]"))
+    in_plane = sorted(np.argsort(np.ptp(corners.reshape(-1, 3), axis=0))[1:])
+    return (corners[:, :, in_plane],
+            tuple(f"{'xyz'[c]} on Γ3 [m]" for c in in_plane))
+
+
 def draw_gamma3_map(axis, points, cells, cell_type, arrays):
     """Gamma_3's faces in its plane (the two coordinates in which it
     extends furthest), or, on a cylinder about the z-axis, unrolled to the
@@ -386,21 +404,7 @@ def draw_gamma3_map(axis, points, cells, cell_type, arrays):
     if len(faces) == 0:
         axis.set_axis_off()
         return 0
-    corners = points[faces]
-    radius = np.hypot(corners[:, :, 0], corners[:, :, 1])
-    if radius.min() > 0 and np.ptp(radius) <= 1e-6 * radius.max():
-        angle = np.degrees(np.arctan2(corners[:, :, 1], corners[:, :, 0]))
-        # A face across +-180 degrees is drawn on the positive side.
-        across = np.ptp(angle, axis=1) > 180
-        angle[across] = np.where(angle[across] < 0, angle[across] + 360,
-                                 angle[across])
-        polygons_in_plane = np.stack([angle, corners[:, :, 2]], axis=2)
-        labels = ("angle on Γ3 [°]", "z on Γ3 [m]")
-    else:
-        in_plane = sorted(np.argsort(np.ptp(corners.reshape(-1, 3),
-                                            axis=0))[1:])
-        polygons_in_plane = corners[:, :, in_plane]
-        labels = tuple(f"{'xyz'[c]} on Γ3 [m]" for c in in_plane)
+    polygons_in_plane, labels = gamma3_plane(points[faces])
     polygons = PolyCollection(
         polygons_in_plane,
         facecolors=STATE_MAP((arrays["contact_status"][faces] == SLIP)
@@ -590,15 +594,14 @@ def plot_mesh(directory, times, output):
                 axis.set_axis_off()
                 shown.append(f"t = {t:.4g}: no faces of Γ3")
                 continue
-            corners = points[faces]
-            in_plane = sorted(np.argsort(np.ptp(corners.reshape(-1, 3),
-                                                axis=0))[1:])
-            polygons = corners[:, :, in_plane]
-            nodes = np.unique(faces)
-            draw_mesh(axis, polygons, refinement_levels(polygons),
-                      points[nodes][:, in_plane], status[nodes], True)
-            axis.set_xlabel(f"{'xyz'[in_plane[0]]} on Γ3 [m]")
-            axis.set_ylabel(f"{'xyz'[in_plane[1]]} on Γ3 [m]")
+            polygons, labels = gamma3_plane(points[faces])
+            # The nodes where the faces' corners are drawn.
+            nodes, first = np.unique(faces, return_index=True)
+            positions = polygons.reshape(-1, 2)[first]
+            draw_mesh(axis, polygons, refinement_levels(polygons), positions,
+                      status[nodes], labels[0] != "angle on Γ3 [°]")
+            axis.set_xlabel(labels[0])
+            axis.set_ylabel(labels[1])
             what = f"{len(polygons)} faces of Γ3"
         count = refinement_levels(polygons).max() + 1
         sizes = f"{count} size{'s' if count > 1 else ''}"

@@ -1341,7 +1341,29 @@ namespace Contact
                            "it refines quadrilaterals and "
                            "hexahedra only; allowed with it is '" +
                            Entry::cell_shape + "' = hypercube."));
-    // (An error estimate of a mesh adapted by pilots runs it coarsened.)
+    // An error estimate runs a mesh adapted by pilots coarsened, cell by
+    // cell (MeshPlan::coarser()), which gives nested meshes for plans that
+    // refine only.
+    AssertThrow(!accuracy.estimate_error ||
+                  mesh_adaptation.coarsen_fraction == 0,
+                ExcMessage(adapting + "with '" + Entry::estimate_error +
+                           "' its coarse runs are the adapted mesh coarsened, "
+                           "which is only defined for meshes that the pilots "
+                           "refined; allowed with it is '" +
+                           Entry::coarsen_fraction + "' = 0."));
+    // During the run, a mesh that keeps its size at the target must give
+    // cells back to refine others.
+    AssertThrow(mesh_adaptation.interval == 0 ||
+                  mesh_adaptation.target_unknowns == 0 ||
+                  mesh_adaptation.coarsen_fraction > 0,
+                ExcMessage(
+                  adapting + "with '" + Entry::target_unknowns +
+                  "' = " + std::to_string(mesh_adaptation.target_unknowns) +
+                  " the mesh keeps about that size once it has "
+                  "reached it, and can then follow the solution only "
+                  "by coarsening where it refines; allowed with it is "
+                  "'" +
+                  Entry::coarsen_fraction + "' > 0."));
     for (const auto &[entry, set] :
          {std::pair{Entry::levels, convergence_study.levels > 0},
           std::pair{Entry::estimate_error,

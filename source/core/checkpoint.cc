@@ -326,15 +326,20 @@ namespace Contact
 
   // A resumed run is built on its checkpoint's mesh: the scene's mesh
   // changed by the cycles of the plan stored with it (of pilot runs, or of
-  // the adaptations during the run up to the checkpoint's step). A
-  // checkpoint of format 10 has no plan: the run's own is kept.
+  // the adaptations during the run up to the checkpoint's step).
   template <int dim>
   void ContactProblem<dim>::read_checkpoint_mesh_plan()
   {
     const std::string name =
       checkpoint_name(parameters.output.directory, mpi_communicator);
     const Payload stored = read_payload(name);
-    std::string   plan_text;
+    // A checkpoint of format 10 of a run on a mesh adapted by pilots has
+    // the plan beside it (its adapted_mesh.txt).
+    const std::string plan_file =
+      parameters.output.directory + "/adapted_mesh.txt";
+    if (!stored.has_mesh_plan && std::filesystem::exists(plan_file))
+      mesh_plan = MeshPlan::read(plan_file);
+    std::string plan_text;
     if (stored.has_mesh_plan)
       {
         std::istringstream              payload(stored.bytes, std::ios::binary);

@@ -72,8 +72,8 @@ namespace Contact
 
   MeshPlan MeshPlan::coarser(const unsigned int levels) const
   {
-    // A CellId's text is 'coarse_level:children', one child digit per
-    // level: the ancestor drops the last digits.
+    // A CellId's text is '<coarse cell>_<number of children>:<children>',
+    // one child digit per level: the ancestor drops the last digits.
     const auto ancestor = [levels](const std::string &id) {
       const std::size_t  underscore = id.find('_'), colon = id.find(':');
       const unsigned int level =
