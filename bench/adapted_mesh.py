@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """Adapted meshes against uniform and hand-graded ones on the paper's scene
-(prm/barboteu2015.prm): the V-error at T, ||eps(u_ref(T) - u_h(T))||,
+(prm/barboteu2015.prm; with --scene 3d the 3D scene, prm/barboteu2015_3d.prm,
+against uniform meshes): the V-error at T, ||eps(u_ref(T) - u_h(T))||,
 against the number of unknowns and the wall time. Builds the program's
 library and bench/adapted_mesh_error.cc in Release, runs the reference
 (Q2, h = 1/256, k = T/564) and every mesh below with the scene's
 k = T/141, and writes a Markdown table (--out) and, with matplotlib, a
 plot next to it.
 
-    python3 bench/adapted_mesh.py [--out bench/adapted_mesh.md]
+    python3 bench/adapted_mesh.py [--scene 2d|3d] [--out FILE]
 
 Adapted meshes start from h = 1/32 and refine towards a number of
 unknowns (or 30 % of the cells per cycle), at most 3 levels (h >= 1/256,
@@ -70,16 +71,56 @@ RUNS = [
 ]
 
 
+# The 3D scene (prm/barboteu2015_3d.prm, k = T/18): Q1 from h = 1/8, at
+# most one level finer (h >= 1/16), against Q2 with h = 1/16 and k = T/72.
+STEP_3D = "Time/Time step=0.061111111111111116"  # T / 18, the scene's k
+REFERENCE_3D = ["Geometry/Finite element degree=2", "Geometry/Cell size=0.0625",
+                "Time/Time step=0.015277777777777779"]
+ADAPTED_3D = ["Geometry/Cell size=0.125", "Mesh adaptation/Max levels=1"]
+RUNS_3D = [
+    ("uniform, h = 1/8", ["Geometry/Cell size=0.125"]),
+    ("uniform, h = 1/16", ["Geometry/Cell size=0.0625"]),
+] + [
+    (f"adapted (Kelly of u, the default), 2 cycles to {target} unknowns",
+     ADAPTED_3D + ["Mesh adaptation/Cycles=2", f"Mesh adaptation/Target unknowns={target}"])
+    for target in (1500, 2500)
+] + [
+    (f"during the run (Kelly of u), every 3 steps, 30 % refined and 10 % coarsened, "
+     f"towards {target} unknowns",
+     ADAPTED_3D + ["Mesh adaptation/Interval=3", "Mesh adaptation/Coarsen fraction=0.1",
+                   f"Mesh adaptation/Target unknowns={target}"])
+    for target in (1500, 2500)
+]
+
+SCENES = {
+    "2d": ("barboteu2015.prm", STEP, REFERENCE, RUNS, 2,
+           "prm/barboteu2015.prm (Q1, k = T/141), V-error at T = 1.1 against Q2 with "
+           "h = 1/256, k = T/564."),
+    "3d": ("barboteu2015_3d.prm", STEP_3D, REFERENCE_3D, RUNS_3D, 1,
+           "prm/barboteu2015_3d.prm (Q1, k = T/18), V-error at T = 1.1 against Q2 with "
+           "h = 1/16, k = T/72."),
+}
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("--out", default=os.path.join(ROOT, "bench", "adapted_mesh.md"))
-    out = parser.parse_args().out
+    parser.add_argument("--scene", choices=sorted(SCENES), default="2d")
+    parser.add_argument("--out")
+    parser.add_argument("--replot", action="store_true",
+                        help="draw the plot of the table in --out again, without running")
+    arguments = parser.parse_args()
+    scene, STEP_, REFERENCE_, RUNS_, uniform_index, title = SCENES[arguments.scene]
+    out = arguments.out or os.path.join(
+        ROOT, "bench", "adapted_mesh.md" if arguments.scene == "2d" else "adapted_mesh_3d.md")
+    if arguments.replot:
+        plot(*read_table(out), out)
+        return
     tool = build("adapted_mesh_error")
     with tempfile.TemporaryDirectory() as tmp:
-        command = [tool, os.path.join(ROOT, "prm", "barboteu2015.prm")]
-        command += REFERENCE + COMMON + [f"Output/Output directory={tmp}/reference"]
-        for index, (_, sets) in enumerate(RUNS):
-            command += ["--", STEP] + COMMON + sets + [
+        command = [tool, os.path.join(ROOT, "prm", scene)]
+        command += REFERENCE_ + COMMON + [f"Output/Output directory={tmp}/reference"]
+        for index, (_, sets) in enumerate(RUNS_):
+            command += ["--", STEP_] + COMMON + sets + [
                 f"Output/Output directory={tmp}/run-{index}"]
         output = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                 text=True, cwd=tmp)
@@ -91,17 +132,18 @@ def main():
         if words and words[0] == "unknowns":
             values = dict(zip(words[0::2], words[1::2]))
             rows.append({k: float(v) for k, v in values.items()})
-    if len(rows) != len(RUNS):
+    if len(rows) != len(RUNS_):
         sys.exit("adapted_mesh_error printed " + str(len(rows)) + " rows:\n" + output.stdout)
 
-    uniform = rows[2]
+    uniform = rows[uniform_index]
+    finest = RUNS_[uniform_index][0].split("h = ")[1]
     lines = [f"Machine: {machine()}", "",
-             "prm/barboteu2015.prm (Q1, k = T/141), V-error at T = 1.1 against Q2 "
-             "with h = 1/256, k = T/564. Produced by `python3 bench/adapted_mesh.py`.", "",
+             f"{title} Produced by `python3 bench/adapted_mesh.py --scene "
+             f"{arguments.scene}`.", "",
              "| mesh | unknowns (at T) | pilots [s] | run [s] | total [s] | V-error at T "
-             "| unknowns / uniform 1/128 | total time / uniform 1/128 |",
+             f"| unknowns / uniform {finest} | total time / uniform {finest} |",
              "|---|---|---|---|---|---|---|---|"]
-    for (name, _), row in zip(RUNS, rows):
+    for (name, _), row in zip(RUNS_, rows):
         total = row["pilots"] + row["wall"]
         lines.append(
             f"| {name} | {row['unknowns']:.0f} | {row['pilots']:.2f} | {row['wall']:.2f} "
@@ -111,23 +153,30 @@ def main():
     with open(out, "w") as file:
         file.write("\n".join(lines) + "\n")
 
+    plot([name for name, _ in RUNS_], rows, out)
+
+
+def plot(names, rows, out):
+    """The V-error against unknowns and against wall time, per family of
+    meshes, next to the table (out with .png)."""
     try:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
+        print("no matplotlib: no plot (run with /usr/bin/python3)")
         return
     figure, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     for family, marker in (("uniform", "o-"), ("graded", "s-"), ("adapted", "^"),
                            ("during", "v")):
-        chosen = [(row, name) for (name, _), row in zip(RUNS, rows) if name.startswith(family)]
+        chosen = [row for name, row in zip(names, rows) if name.startswith(family)]
         if not chosen:
             continue
-        errors = [row["error"] for row, _ in chosen]
+        errors = [row["error"] for row in chosen]
         label = {"adapted": "adapted by pilots",
                  "during": "adapted during the run (unknowns at T)"}.get(family, family)
-        axes[0].loglog([row["unknowns"] for row, _ in chosen], errors, marker, label=label)
-        axes[1].loglog([row["pilots"] + row["wall"] for row, _ in chosen], errors, marker,
+        axes[0].loglog([row["unknowns"] for row in chosen], errors, marker, label=label)
+        axes[1].loglog([row["pilots"] + row["wall"] for row in chosen], errors, marker,
                        label=label)
     axes[0].set_xlabel("unknowns")
     axes[1].set_xlabel("wall time, pilots included [s]")
@@ -137,6 +186,18 @@ def main():
         axis.legend()
     figure.tight_layout()
     figure.savefig(os.path.splitext(out)[0] + ".png", dpi=110)
+
+
+def read_table(path):
+    """The names and rows of a table this script wrote (for --replot)."""
+    names, rows = [], []
+    for line in open(path):
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) == 8 and cells[1].replace(".", "").isdigit():
+            names.append(cells[0])
+            rows.append({"unknowns": float(cells[1]), "pilots": float(cells[2]),
+                         "wall": float(cells[3]), "error": float(cells[5])})
+    return names, rows
 
 
 if __name__ == "__main__":
