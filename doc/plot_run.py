@@ -782,10 +782,12 @@ def plot_energies(series, output):
     t = series["time"]
     figure, (energies, residuals, iterations) = plt.subplots(
         1, 3, figsize=(15, 4), constrained_layout=True)
+    # (mesh_transfer: a run whose mesh changed during it.)
     for name in ("kinetic_energy", "elastic_energy", "external_work",
                  "viscous_dissipation", "friction_dissipation",
-                 "numerical_dissipation"):
-        energies.plot(t, series[name], label=name.replace("_", " "))
+                 "numerical_dissipation", "mesh_transfer"):
+        if name in series:
+            energies.plot(t, series[name], label=name.replace("_", " "))
     energies.set_xlabel("t [s]")
     # In 2D per metre of thickness (plane strain).
     energies.set_ylabel("energy [J]" if "momentum_z" in series else

@@ -49,6 +49,13 @@ namespace Contact
     std::vector<double>
     take_due(const double time, const double time_step, const bool last);
 
+    /** Drops the times met by the steps up to `step` (of size `time_step`)
+     *  of a run that goes on past it: a resumed run's pending times are
+     *  its own entry's times after its checkpoint, so that a run extended
+     *  to a later 'End time' reports the times that its predecessor met at
+     *  its last step only because they lay beyond its end. */
+    void drop_met(const unsigned int step, const double time_step);
+
     template <class Archive>
     void serialize(Archive &archive, const unsigned int /*version*/)
     {

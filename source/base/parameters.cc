@@ -979,10 +979,12 @@ namespace Contact
         Patterns::Integer(0),
         "0: refine by 'Refine fraction'. n > 0: refine as many cells per "
         "cycle as multiply the unknowns by equal factors to about n at the "
-        "last cycle. During the run ('Interval' > 0): refine by 'Refine "
-        "fraction' up to about n unknowns, and from there only as many cells "
-        "as the coarsening frees, so that the mesh keeps about n unknowns and "
-        "still follows the solution.");
+        "last cycle. During the run ('Interval' > 0, which then needs "
+        "'Coarsen fraction' > 0): refine by 'Refine fraction' up to about n "
+        "unknowns, and from there only as many cells as the coarsening frees, "
+        "so that the mesh keeps about n unknowns and still follows the "
+        "solution. Without a target, each adaptation during the run refines "
+        "'Refine fraction' of the cells, up to 'Max levels'.");
       prm.declare_entry(
         "Indicators",
         "displacement",
@@ -1322,7 +1324,17 @@ namespace Contact
   void Parameters::check_mesh_adaptation() const
   {
     if (mesh_adaptation.cycles == 0 && mesh_adaptation.interval == 0)
-      return;
+      {
+        AssertThrow(mesh_adaptation.target_unknowns == 0,
+                    ExcMessage("Entry '" + Entry::target_unknowns + "' = " +
+                               std::to_string(mesh_adaptation.target_unknowns) +
+                               " is the size of an adapted mesh, but nothing "
+                               "adapts the mesh: allowed with it is '" +
+                               Entry::adaptation_cycles + "' > 0 or '" +
+                               Entry::adaptation_interval + "' > 0 (or " +
+                               Entry::target_unknowns + " = 0)."));
+        return;
+      }
     const std::string adapting =
       mesh_adaptation.cycles > 0 ?
         "Entry '" + Entry::adaptation_cycles +

@@ -98,9 +98,13 @@ namespace Contact
       serialize(archive);
     }
 
+    // The report times are this run's after the checkpoint
+    // (ReportTimes::drop_met()), not the checkpointed run's.
     void load(boost::archive::binary_iarchive &archive) override
     {
       serialize(archive);
+      report_times = ReportTimes(this->parameters().output.report_times);
+      report_times.drop_met(this->state().step_number, this->time_step());
     }
 
     void print_summary() const override;

@@ -100,6 +100,18 @@ namespace Contact
   }
 
 
+  void ReportTimes::drop_met(const unsigned int step, const double time_step)
+  {
+    pending.erase(std::remove_if(pending.begin(),
+                                 pending.end(),
+                                 [&](const double t) {
+                                   return t <= (step + 0.5) * time_step *
+                                                 (1 + 1e-12);
+                                 }),
+                  pending.end());
+  }
+
+
 #define INSTANTIATE(dim)                                             \
   template SlipZone slip_zone(const std::vector<ContactNode<dim>> &, \
                               const std::vector<NodeState> &,        \

@@ -4,7 +4,9 @@
    - a checkpoint with bytes flipped, or cut short, is refused by name;
    - a checkpoint of another problem (other Young's modulus, other friction
      bound S) with the same mesh and time step is refused, naming the
-     entries that differ; a longer End time is accepted, also where
+     entries that differ; a longer End time is accepted (and the longer
+     run reports the report times after its checkpoint, also those that
+     the shorter run met at its last step as lying beyond its end), also where
      time_series.csv was deleted (a new one starts with its header), and
      a time series damaged before the checkpoint's step is refused, naming
      the line;
@@ -110,9 +112,10 @@ void report(const std::string &what, const std::pair<int, std::string> &result)
     std::cout << "  " << result.second.substr(text) << std::endl;
 }
 
-// Starts a long run (h = k = 1/128) into `directory` in the background and
-// returns once it holds the directory's lock and has written its
-// parameters.
+// Starts a long run (the scene to t = 1000, which a test kills long before
+// its end: the scene's own 141 steps take well under a second now) into
+// `directory` in the background and returns once it holds the directory's
+// lock and has written its parameters.
 pid_t start_long_run(const std::string &directory)
 {
   const pid_t pid = fork();
@@ -123,7 +126,8 @@ pid_t start_long_run(const std::string &directory)
             "-c",
             (std::string("exec ") + CONTACT_BINARY +
              " --set 'Output/Output directory=" + directory +
-             "' --set 'Output/VTU interval=0' " + scene + " > /dev/null 2>&1")
+             "' --set 'Output/VTU interval=0' --set 'Time/End time=1000' " +
+             scene + " > /dev/null 2>&1")
               .c_str(),
             nullptr);
       _exit(127);
@@ -188,6 +192,24 @@ int main()
          run("other", {"Output/Resume=true", "Time/End time=1.1"}));
   report("longer End time (16 steps of the same k)",
          run("other", {"Output/Resume=true", "Time/End time=1"}));
+  // The run to 0.75 met the report times 0.8 and 1.1 at its last step,
+  // since they lay beyond its end; the extended run has its own: 0.8 at
+  // step 13 (t = 0.8125) and 1.1 at its last step, 16.
+  std::cout << "  its VTU records after t = 0.75:";
+  {
+    std::ifstream pvd("other/solution.pvd");
+    for (std::string line; std::getline(pvd, line);)
+      {
+        const std::size_t at = line.find("timestep=\"");
+        if (at != std::string::npos)
+          {
+            const double t = std::stod(line.substr(at + 10));
+            if (t > 0.75 + 1e-9)
+              std::cout << ' ' << t;
+          }
+      }
+  }
+  std::cout << std::endl;
   // k = 1.1/141, and End time 3.3 = 3 T: k = 3.3/423 differs from it in
   // the last digit, and is the same step.
   const std::vector<std::string> ragged = {"Time/Time step=0.0078125",
