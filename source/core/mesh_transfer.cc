@@ -82,10 +82,6 @@ namespace Contact
     space.constraints.distribute(state.velocity);
 
     assemble_matrices();
-    factorize_system_matrix();
-    friction_solver->reinit(matrices.system, *factorization);
-    friction_solver->set_initial_velocity(state.velocity);
-
     state.mass_times_velocity.reinit(state.velocity);
     state.elasticity_times_displacement.reinit(state.displacement);
     condensed_product(matrices.mass, state.velocity, state.mass_times_velocity);
@@ -102,8 +98,7 @@ namespace Contact
     const double energy_after = state.energy.kinetic + state.energy.elastic;
     state.energy.mesh_transfer += energy_after - energy_before;
 
-    for (const auto &postprocessor : postprocessors)
-      postprocessor->mesh_changed();
+    // Said before the friction solver's set-up reports on the new mesh.
     pcout << "Mesh adaptation after step " << state.step_number
           << " (t = " << number_text(state.time)
           << "): " << space.triangulation->n_global_active_cells() << " cells, "
@@ -112,6 +107,12 @@ namespace Contact
           << " free nodes on Gamma_3; kinetic + elastic energy "
           << std::setprecision(6) << energy_before << " before the transfer, "
           << energy_after << " after" << std::endl;
+
+    factorize_system_matrix();
+    friction_solver->reinit(matrices.system, *factorization);
+    friction_solver->set_initial_velocity(state.velocity);
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->mesh_changed();
   }
 
 
