@@ -82,9 +82,13 @@ namespace Contact
       entries[Entry::finite_element_degree] = std::to_string(variant.degree);
       entries[Entry::time_step] =
         exact_text(scene.time.end_time / variant.n_steps);
-      entries[Entry::output_directory]  = variant.directory;
-      entries[Entry::levels]            = "0";
-      entries[Entry::adaptation_cycles] = "0";
+      entries[Entry::output_directory] = variant.directory;
+      entries[Entry::levels]           = "0";
+      // A variant runs on the mesh its driver gives it (a pilot's, or an
+      // estimate's coarsened one), and adapts none itself.
+      entries[Entry::adaptation_cycles]   = "0";
+      entries[Entry::adaptation_interval] = "0";
+      entries[Entry::target_unknowns]     = "0";
       // The run that a target chose runs with its error estimate.
       entries[Entry::estimate_error] = bool_text(
         !quiet && (accuracy.estimate_error || accuracy.target_error > 0));
