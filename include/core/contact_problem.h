@@ -190,6 +190,7 @@ namespace Contact
     void             assemble_matrices();
     void             form_system_matrix();
     void             set_initial_values();
+    void             update_state_products();
     void             warn_of_normal_component(const VectorType  &values,
                                               const std::string &entry) const;
     void             condensed_product(const MatrixType &matrix,

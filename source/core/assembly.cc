@@ -193,17 +193,29 @@ namespace Contact
     state.old_displacement = state.displacement;
     state.old_velocity     = state.velocity;
 
+    state.energy = EnergyBalance();
+    update_state_products();
+    state.energy.initial = state.energy.kinetic + state.energy.elastic;
+  }
+
+
+  // @sect4{ContactProblem::update_state_products}
+
+  // M w_n and B u_n, which the next step's right-hand side reads, and the
+  // kinetic and elastic energy from them: of the initial values, and of the
+  // fields carried to a new mesh.
+  template <int dim>
+  void ContactProblem<dim>::update_state_products()
+  {
     state.mass_times_velocity.reinit(state.velocity);
     state.elasticity_times_displacement.reinit(state.displacement);
     condensed_product(matrices.mass, state.velocity, state.mass_times_velocity);
     condensed_product(matrices.elasticity,
                       state.displacement,
                       state.elasticity_times_displacement);
-    state.energy         = EnergyBalance();
     state.energy.kinetic = 0.5 * (state.mass_times_velocity * state.velocity);
     state.energy.elastic =
       0.5 * (state.elasticity_times_displacement * state.displacement);
-    state.energy.initial = state.energy.kinetic + state.energy.elastic;
   }
 
 
@@ -316,6 +328,7 @@ namespace Contact
   template void ContactProblem<dim>::assemble_matrices();                   \
   template void ContactProblem<dim>::form_system_matrix();                  \
   template void ContactProblem<dim>::set_initial_values();                  \
+  template void ContactProblem<dim>::update_state_products();               \
   template void ContactProblem<dim>::warn_of_normal_component(              \
     const VectorType &, const std::string &) const;                         \
   template void ContactProblem<dim>::condensed_product(const MatrixType &,  \

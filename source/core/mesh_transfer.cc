@@ -82,19 +82,10 @@ namespace Contact
     space.constraints.distribute(state.velocity);
 
     assemble_matrices();
-    state.mass_times_velocity.reinit(state.velocity);
-    state.elasticity_times_displacement.reinit(state.displacement);
-    condensed_product(matrices.mass, state.velocity, state.mass_times_velocity);
-    condensed_product(matrices.elasticity,
-                      state.displacement,
-                      state.elasticity_times_displacement);
-    if (!sabotage.stale_energies_after_mesh_change)
-      {
-        state.energy.kinetic =
-          0.5 * (state.mass_times_velocity * state.velocity);
-        state.energy.elastic =
-          0.5 * (state.elasticity_times_displacement * state.displacement);
-      }
+    const EnergyBalance old_energy = state.energy;
+    update_state_products();
+    if (sabotage.stale_energies_after_mesh_change)
+      state.energy = old_energy;
     const double energy_after = state.energy.kinetic + state.energy.elastic;
     state.energy.mesh_transfer += energy_after - energy_before;
 

@@ -27,6 +27,8 @@
 #include <app/run.h>
 #include <core/contact_problem.h>
 
+#include "sliding_slab.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -38,41 +40,6 @@
 #include <vector>
 
 using namespace Contact;
-
-// The largest relative deviations of the slip rates from 0.02 n and of
-// |friction traction| from 10 over every node and step of
-// gamma3_history.csv (the slab's exact solution).
-std::pair<double, double> slab_deviations(const std::string &directory,
-                                          const int          dim)
-{
-  std::ifstream file(directory + "/gamma3_history.csv");
-  std::string   line;
-  std::getline(file, line);
-  double rate_deviation = 0, traction_deviation = 0;
-  while (std::getline(file, line))
-    {
-      std::vector<double> value;
-      std::istringstream  fields(line);
-      for (std::string field; std::getline(fields, field, ',');)
-        value.push_back(std::stod(field));
-      const unsigned int step = static_cast<unsigned int>(value[0]);
-      if (step == 0)
-        continue;
-      const double rate = value[2 + dim + 1];
-      const double traction =
-        std::hypot(value[2 + dim + 2], dim == 3 ? value[2 + dim + 3] : 0.);
-      const double exact = 0.02 * step;
-      rate_deviation = std::max(rate_deviation, std::abs(rate - exact) / exact);
-      traction_deviation =
-        std::max(traction_deviation, std::abs(traction - 10.) / 10.);
-    }
-  return {rate_deviation, traction_deviation};
-}
-
-std::string bound_text(const double value)
-{
-  return value < 1e-10 ? "below 1e-10" : "ABOVE 1e-10";
-}
 
 // Flags the cells of the problem's mesh: at the first, third, ... call
 // those within `radius` of `first`; at the others the cells refined before
@@ -177,34 +144,12 @@ void run(const std::string              &name,
     }
 }
 
-// The slab of refined_gamma3_patch: free, sheared to the friction bound
-// (a S = 10) everywhere and pushed along Gamma_3.
+// The slab of sliding_slab.h on the scene's coarse mesh.
 std::vector<std::string> slab(const int dim)
 {
-  std::vector<std::string> settings = {
-    "Boundary conditions/Clamped boundary ids=",
-    "Friction/Friction law=constant",
-    "Friction/Friction bound S=20",
-    "Friction/a=0.5",
-    "Time/End time=0.05",
-    "Time/Time step=0.01"};
-  if (dim == 2)
-    settings.insert(
-      settings.end(),
-      {"Geometry/Cell size=0.0625",
-       "Geometry/Upper corner=1, 0.25",
-       "Boundary conditions/Tractions=3: 10; 0 | 0: 0; -10 | 1: 0; 10",
-       "Loads and initial values/Body force=2000; 0",
-       "Loads and initial values/Initial displacement=0.013*y; 0"});
-  else
-    settings.insert(
-      settings.end(),
-      {"Geometry/Cell size=0.125",
-       "Geometry/Upper corner=1, 0.25, 1",
-       "Boundary conditions/Tractions=3: 10; 0; 0 | 0: 0; -10; 0 | 1: 0; 10; "
-       "0",
-       "Loads and initial values/Body force=2000; 0; 0",
-       "Loads and initial values/Initial displacement=0.013*y; 0; 0"});
+  std::vector<std::string> settings = slab_settings(dim);
+  settings.push_back(dim == 2 ? "Geometry/Cell size=0.0625" :
+                                "Geometry/Cell size=0.125");
   return settings;
 }
 

@@ -24,6 +24,8 @@
 #include <app/run.h>
 #include <core/contact_problem.h>
 
+#include "sliding_slab.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -34,75 +36,18 @@
 
 using namespace Contact;
 
-// The largest relative deviations of the slip rates from n k f_0 / rho
-// and of |friction traction| from a S over every node and step of
-// gamma3_history.csv.
-std::pair<double, double> deviations(const std::string &directory,
-                                     const int          dim)
-{
-  std::ifstream file(directory + "/gamma3_history.csv");
-  std::string   line;
-  std::getline(file, line);
-  double rate_deviation = 0, traction_deviation = 0;
-  while (std::getline(file, line))
-    {
-      std::vector<double> value;
-      std::istringstream  fields(line);
-      for (std::string field; std::getline(fields, field, ',');)
-        value.push_back(std::stod(field));
-      const unsigned int step = static_cast<unsigned int>(value[0]);
-      if (step == 0)
-        continue;
-      const double rate = value[2 + dim + 1];
-      const double traction =
-        std::hypot(value[2 + dim + 2], dim == 3 ? value[2 + dim + 3] : 0.);
-      const double exact = 0.02 * step;
-      rate_deviation = std::max(rate_deviation, std::abs(rate - exact) / exact);
-      traction_deviation =
-        std::max(traction_deviation, std::abs(traction - 10.) / 10.);
-    }
-  return {rate_deviation, traction_deviation};
-}
-
-std::string bound_text(const double value)
-{
-  return value < 1e-10 ? "below 1e-10" : "ABOVE 1e-10";
-}
-
 template <int dim>
 void run(const std::string              &name,
          const std::vector<std::string> &settings,
          const bool                      unshared_hanging_weights = false)
 {
-  std::vector<std::string> all_settings = {
-    "Boundary conditions/Clamped boundary ids=",
-    "Friction/Friction law=constant",
-    "Friction/Friction bound S=20",
-    "Friction/a=0.5",
-    "Time/End time=0.05",
-    "Time/Time step=0.01",
-    "Output/VTU interval=0",
-    "Output/Progress interval=0",
-    "Output/Print timings=false",
-    "Output/Report times=",
-    "Output/Output directory=" + name};
-  // mu_L = E / (2 (1 + nu)) = 2000 / 2.6, so gamma_0 = 10 / mu_L = 0.013;
-  // the stress is 10 in sigma_xy alone.
-  if (dim == 2)
-    all_settings.insert(
-      all_settings.end(),
-      {"Geometry/Upper corner=1, 0.25",
-       "Boundary conditions/Tractions=3: 10; 0 | 0: 0; -10 | 1: 0; 10",
-       "Loads and initial values/Body force=2000; 0",
-       "Loads and initial values/Initial displacement=0.013*y; 0"});
-  else
-    all_settings.insert(
-      all_settings.end(),
-      {"Geometry/Upper corner=1, 0.25, 1",
-       "Boundary conditions/Tractions=3: 10; 0; 0 | 0: 0; -10; 0 | 1: 0; 10; "
-       "0",
-       "Loads and initial values/Body force=2000; 0; 0",
-       "Loads and initial values/Initial displacement=0.013*y; 0; 0"});
+  std::vector<std::string> all_settings = slab_settings(dim);
+  all_settings.insert(all_settings.end(),
+                      {"Output/VTU interval=0",
+                       "Output/Progress interval=0",
+                       "Output/Print timings=false",
+                       "Output/Report times=",
+                       "Output/Output directory=" + name});
   all_settings.insert(all_settings.end(), settings.begin(), settings.end());
   const Parameters parameters =
     read_parameters(std::string(CONTACT_PRM_DIR) +
@@ -139,7 +84,7 @@ void run(const std::string              &name,
               << "\n";
   else
     {
-      const auto [rate, traction] = deviations(name, dim);
+      const auto [rate, traction] = slab_deviations(name, dim);
       std::cout << "  slip rates against 0.02 n: " << bound_text(rate)
                 << "\n  friction tractions against 10: " << bound_text(traction)
                 << "\n";
