@@ -1074,7 +1074,12 @@ namespace Contact
         "time of the first slip, each by Richardson extrapolation with the "
         "orders measured between consecutive runs. A row without "
         "consistent orders gets no estimate and says why. The table goes to "
-        "the console and to <Output directory>/error_estimate.txt.");
+        "the console and to <Output directory>/error_estimate.txt. On a mesh "
+        "adapted by pilots the coarse runs are that mesh coarsened cell by "
+        "cell; a run adapted during itself runs again from the coarser "
+        "meshes of the Geometry, adapting at the same times towards 1/2^dim "
+        "(1/4^dim, ...) of its 'Target unknowns', and is compared at T "
+        "only.");
       prm.declare_entry(
         "Separate space and time",
         "false",
@@ -1319,8 +1324,10 @@ namespace Contact
   }
 
   // A mesh adaptation refines the cells of p4est's forest by their ids,
-  // and runs the scene as it is several times: not as a level of a study,
-  // a coarse run of an estimate or a pilot of a target (yet).
+  // and runs the scene as it is several times: not as a level of a study
+  // or a pilot of a target (yet). An error estimate runs a mesh adapted by
+  // pilots coarsened, and a run adapted during itself again from coarser
+  // meshes (scene_variant.cc).
   void Parameters::check_mesh_adaptation() const
   {
     if (mesh_adaptation.cycles == 0 && mesh_adaptation.interval == 0)
@@ -1356,7 +1363,7 @@ namespace Contact
     // An error estimate runs a mesh adapted by pilots coarsened, cell by
     // cell (MeshPlan::coarser()), which gives nested meshes for plans that
     // refine only.
-    AssertThrow(!accuracy.estimate_error ||
+    AssertThrow(!accuracy.estimate_error || mesh_adaptation.cycles == 0 ||
                   mesh_adaptation.coarsen_fraction == 0,
                 ExcMessage(adapting + "with '" + Entry::estimate_error +
                            "' its coarse runs are the adapted mesh coarsened, "
@@ -1378,20 +1385,12 @@ namespace Contact
                   Entry::coarsen_fraction + "' > 0."));
     for (const auto &[entry, set] :
          {std::pair{Entry::levels, convergence_study.levels > 0},
-          std::pair{Entry::estimate_error,
-                    accuracy.estimate_error && mesh_adaptation.interval > 0},
           std::pair{Entry::target_error, accuracy.target_error > 0}})
       AssertThrow(!set,
-                  ExcMessage(
-                    adapting + "it cannot be combined with '" + entry +
-                    (entry == Entry::estimate_error ?
-                       "' yet; allowed is '" + Entry::adaptation_interval +
-                         "' = 0 there (an error estimate takes a mesh "
-                         "adapted by '" +
-                         Entry::adaptation_cycles + "')." :
-                       "' yet; allowed are '" + Entry::adaptation_cycles +
-                         "' = 0 and '" + Entry::adaptation_interval +
-                         "' = 0 there.")));
+                  ExcMessage(adapting + "it cannot be combined with '" +
+                             entry + "' yet; allowed are '" +
+                             Entry::adaptation_cycles + "' = 0 and '" +
+                             Entry::adaptation_interval + "' = 0 there."));
   }
 
 

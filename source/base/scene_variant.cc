@@ -6,6 +6,7 @@
 
 #include <base/scene_variant.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -85,10 +86,32 @@ namespace Contact
       entries[Entry::output_directory] = variant.directory;
       entries[Entry::levels]           = "0";
       // A variant runs on the mesh its driver gives it (a pilot's, or an
-      // estimate's coarsened one), and adapts none itself.
-      entries[Entry::adaptation_cycles]   = "0";
-      entries[Entry::adaptation_interval] = "0";
-      entries[Entry::target_unknowns]     = "0";
+      // estimate's coarsened one), and adapts none by pilots itself. Of a
+      // scene that adapts its mesh during the run, a variant (a coarse run
+      // of its estimate) adapts the same way from its own coarser mesh: at
+      // the same times (every n-th step scaled with its k, at least every
+      // step), towards as many times fewer unknowns as its cells have more
+      // volume.
+      const MeshAdaptationParameters &adaptation = scene.mesh_adaptation;
+      entries[Entry::adaptation_cycles] = "0";
+      if (adaptation.interval == 0)
+        {
+          entries[Entry::adaptation_interval] = "0";
+          entries[Entry::target_unknowns]     = "0";
+        }
+      else
+        {
+          entries[Entry::adaptation_interval] = std::to_string(
+            std::max(1l,
+                     std::lround(double(adaptation.interval) *
+                                 variant.n_steps / scene.time.n_steps())));
+          if (adaptation.target_unknowns > 0)
+            entries[Entry::target_unknowns] = std::to_string(
+              std::max(1l,
+                       std::lround(std::ldexp(
+                         double(adaptation.target_unknowns),
+                         int(scene.dimension) * variant.h_halvings))));
+        }
       // The run that a target chose runs with its error estimate.
       entries[Entry::estimate_error] = bool_text(
         !quiet && (accuracy.estimate_error || accuracy.target_error > 0));

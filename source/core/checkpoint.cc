@@ -98,6 +98,21 @@ namespace Contact
       return entries;
     }
 
+    // The entries of a run with the declared defaults. A checkpoint written
+    // before an entry existed ran as the entry's default runs (an entry is
+    // added with the default that keeps the earlier behaviour), so the
+    // default stands in for it.
+    std::map<std::string, std::string> default_problem_entries()
+    {
+      ParameterHandler prm;
+      Parameters::declare_parameters(prm);
+      std::ostringstream text;
+      prm.print_parameters(text,
+                           ParameterHandler::ShortPRM |
+                             ParameterHandler::KeepDeclarationOrder);
+      return problem_entries(text.str());
+    }
+
     // The entries whose values differ, 'entry: checkpoint a, now b'.
     std::string
     differing_entries(const std::map<std::string, std::string> &stored,
@@ -446,10 +461,9 @@ namespace Contact
     if (stored.has_mesh_plan)
       archive &plan_text;
     archive &stored_shape &stored_entries;
-    // A checkpoint of format 10 predates the entry; its run did not adapt
-    // its mesh during itself.
-    if (!stored.has_mesh_plan)
-      stored_entries.emplace(Entry::adaptation_interval, "0");
+    // (emplace() keeps the stored values.)
+    for (const auto &entry : default_problem_entries())
+      stored_entries.emplace(entry);
     // (A checkpoint written before the mesh was part of the shape has
     // none to compare.)
     std::string problem_shape = shape(space.dof_handler,

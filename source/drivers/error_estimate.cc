@@ -31,6 +31,7 @@
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
 #include <drivers/error_estimate.h>
+#include <drivers/mesh_adaptation.h>
 #include <drivers/reference_interpolation.h>
 
 #include <algorithm>
@@ -406,14 +407,17 @@ namespace Contact
       while ((1u << -halvings) < space_factor)
         --halvings;
       // T / ceil(N / factor) steps, so that every run ends at T.
-      ContactProblem<dim> coarse(
+      const Parameters parameters =
         parameters_of(base,
                       {halvings,
                        (base.time.n_steps() + time_factor - 1) / time_factor,
                        base.geometry.fe_degree,
                        base.output.directory + "/" + name,
-                       true}));
+                       true});
+      ContactProblem<dim> coarse(parameters);
       coarse.adapt_mesh(plan.coarser(-halvings));
+      if (parameters.mesh_adaptation.interval > 0)
+        adapt_during_run(coarse, parameters.mesh_adaptation);
       const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       if (root)
         std::cout << "Error estimate: the scene with h times " << space_factor
@@ -781,7 +785,11 @@ namespace Contact
             << "(the separation splits the rows at T only); with degree "
             << parameters.geometry.fe_degree << " it may be too small."
             << std::endl;
-      if (!has_worst_row)
+      if (!has_worst_row && parameters.mesh_adaptation.interval > 0)
+        out << worst_V_error << ": not estimated: the mesh changes during "
+            << "the run, so its earlier states have no one mesh to be "
+            << "compared on." << std::endl;
+      else if (!has_worst_row)
         out << worst_V_error << ": not estimated: it needs T/k a multiple of "
             << std::min(coarsest, 4u) << " (here " << parameters.time.n_steps()
             << " steps), so that all runs share their times." << std::endl;
@@ -848,12 +856,18 @@ namespace Contact
     // coarsest run with a history: that of all runs where N = T/k is a
     // multiple of `coarsest`, else that of the run with 4h and 4k where N
     // is a multiple of 4.
+    // A run whose mesh changes during it has no one mesh to compare its
+    // earlier states on: only its state at T is compared.
     const unsigned int  n_steps        = parameters.time.n_steps();
-    const unsigned int  history_factor = n_steps % coarsest == 0 ? coarsest :
+    const bool          mesh_changes   = parameters.mesh_adaptation.interval > 0;
+    const unsigned int  history_factor = mesh_changes             ? 0 :
+                                         n_steps % coarsest == 0 ? coarsest :
                                          n_steps % 4 == 0        ? 4 :
                                                                    0;
     ContactProblem<dim> fine(parameters);
     fine.adapt_mesh(plan);
+    if (mesh_changes)
+      adapt_during_run(fine, parameters.mesh_adaptation);
     EstimateRuns runs;
     runs.sequence.push_back(run_onto<dim>(fine, nullptr, history_factor));
     const ReferenceInterpolation<dim> interpolate(fine);

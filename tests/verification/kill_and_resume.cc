@@ -28,7 +28,15 @@
    adaptation/Interval' = 7): the checkpoint of step 35 is written right
    after the adaptation of that step and stores the mesh's cycles; the
    resumed run is built on that mesh and must reproduce the uninterrupted
-   run, including its later adaptations. */
+   run, including its later adaptations.
+
+   Last, a checkpoint written by an earlier version of the program
+   (kill_and_resume_data/format_10: the same scene stopped after step 20,
+   in checkpoint format 10, before the entries of 'Mesh adaptation' and
+   'Accuracy/Maximum predicted time' existed) is resumed by this one: an
+   entry that the checkpoint does not know counts as its default, so the
+   resume is accepted, and the rows it appends continue the old ones as
+   the uninterrupted run's do (to 1e-10). */
 
 #include <fcntl.h>
 #include <signal.h>
@@ -390,6 +398,27 @@ void kill_and_resume(const unsigned int       processes,
 }
 
 
+// The checkpoint of an earlier version, resumed by this one, against the
+// uninterrupted run of the first case.
+void resume_earlier_version()
+{
+  const std::string resumed = "run-format-10";
+  fs::remove_all(resumed);
+  fs::remove(resumed + ".log");
+  fs::copy(CONTACT_TEST_DATA_DIR "/kill_and_resume_data/format_10", resumed);
+  const int status = wait_for(start(1, resumed, {"--resume"}));
+  const bool exited = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  std::cout << "resumed run exited with status 0: " << yes_no(exited)
+            << std::endl;
+  if (!exited)
+    std::cerr << contents(resumed + ".log") << std::endl;
+  std::cout << "time_series.csv equal to the uninterrupted run to 1e-10: "
+            << yes_no(same_time_series("run-full-1/time_series.csv",
+                                       resumed + "/time_series.csv"))
+            << std::endl;
+}
+
+
 int main()
 {
   kill_and_resume(1);
@@ -414,4 +443,8 @@ int main()
                    "Mesh adaptation/Max levels=1",
                    "--set",
                    "Mesh adaptation/Coarsen fraction=0.2"});
+  std::cout << "A checkpoint of format 10, from before the entries of mesh "
+               "adaptation, one process:"
+            << std::endl;
+  resume_earlier_version();
 }
