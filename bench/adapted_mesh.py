@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
 """Adapted meshes against uniform and hand-graded ones on the paper's scene
-(prm/barboteu2015.prm; with --scene 3d the 3D scene, prm/barboteu2015_3d.prm,
-against uniform meshes): the V-error at T, ||eps(u_ref(T) - u_h(T))||,
+(prm/barboteu2015.prm, Q1 and Q2; with --scene 3d the 3D scene,
+prm/barboteu2015_3d.prm, and with --scene bushing the bushing on a curved
+Γ3, prm/bushing.prm, Q1 and Q2, against uniform meshes): the V-error at
+T, ||eps(u_ref(T) - u_h(T))||,
 against the number of unknowns and the wall time. Builds the program's
 library and bench/adapted_mesh_error.cc in Release, runs the reference
 (Q2, h = 1/256, k = T/564) and every mesh below with the scene's
 k = T/141, and writes a Markdown table (--out) and, with matplotlib, a
 plot next to it.
 
-    python3 bench/adapted_mesh.py [--scene 2d|3d] [--out FILE]
+    python3 bench/adapted_mesh.py [--scene 2d|3d|bushing] [--out FILE]
 
 Adapted meshes start from h = 1/32 and refine towards a number of
 unknowns (or 30 % of the cells per cycle), at most 3 levels (h >= 1/256,
@@ -35,6 +37,25 @@ REFERENCE = ["Geometry/Finite element degree=2", "Geometry/Cell size=0.00390625"
              "Time/Time step=0.0019503546099290780"]
 GRADED = ["Geometry/Refinement points=0, 0.5", "Geometry/Refinement radius=0.25"]
 ADAPTED = ["Geometry/Cell size=0.03125", "Mesh adaptation/Max levels=3"]
+Q2 = ["Geometry/Finite element degree=2"]
+ADAPTED_Q2 = Q2 + ["Geometry/Cell size=0.0625", "Mesh adaptation/Max levels=3"]
+
+
+def adapted_by_pilots(label, base, cycles, targets):
+    """Runs on meshes adapted by `cycles` pilots towards each target."""
+    return [(f"adapted{label}, {cycles} cycles to {target} unknowns",
+             base + [f"Mesh adaptation/Cycles={cycles}",
+                     f"Mesh adaptation/Target unknowns={target}"]) for target in targets]
+
+
+def adapted_during_run(label, base, interval, targets):
+    """Runs adapted after every `interval`-th step towards each target."""
+    return [(f"during the run{label}, every {interval} steps, 30 % refined and 10 % "
+             f"coarsened, towards {target} unknowns",
+             base + [f"Mesh adaptation/Interval={interval}",
+                     "Mesh adaptation/Coarsen fraction=0.1",
+                     f"Mesh adaptation/Target unknowns={target}"]) for target in targets]
+
 
 RUNS = [
     ("uniform, h = 1/32", ["Geometry/Cell size=0.03125"]),
@@ -42,12 +63,7 @@ RUNS = [
     ("uniform, h = 1/128", ["Geometry/Cell size=0.0078125"]),
     ("graded, h = 1/32", ["Geometry/Cell size=0.03125"] + GRADED),
     ("graded, h = 1/64", ["Geometry/Cell size=0.015625"] + GRADED),
-    ("adapted (Kelly of u, the default), 3 cycles to 2000 unknowns",
-     ADAPTED + ["Mesh adaptation/Cycles=3", "Mesh adaptation/Target unknowns=2000"]),
-    ("adapted (Kelly of u, the default), 3 cycles to 4000 unknowns",
-     ADAPTED + ["Mesh adaptation/Cycles=3", "Mesh adaptation/Target unknowns=4000"]),
-    ("adapted (Kelly of u, the default), 3 cycles to 8000 unknowns",
-     ADAPTED + ["Mesh adaptation/Cycles=3", "Mesh adaptation/Target unknowns=8000"]),
+] + adapted_by_pilots(" (Kelly of u, the default)", ADAPTED, 3, (2000, 4000, 8000)) + [
     ("adapted (Kelly of u, the default), 30 % per cycle, 3 cycles",
      ADAPTED + ["Mesh adaptation/Cycles=3"]),
     ("adapted (Kelly of u and w), 3 cycles to 2000 unknowns",
@@ -62,13 +78,17 @@ RUNS = [
     ("adapted (all three), 3 cycles to 4000 unknowns",
      ADAPTED + ["Mesh adaptation/Cycles=3", "Mesh adaptation/Target unknowns=4000",
                 "Mesh adaptation/Indicators=displacement, velocity, slip rate"]),
-] + [
-    (f"during the run (Kelly of u), every 10 steps, 30 % refined and 10 % coarsened, "
-     f"towards {target} unknowns",
-     ADAPTED + ["Mesh adaptation/Interval=10", "Mesh adaptation/Coarsen fraction=0.1",
-                f"Mesh adaptation/Target unknowns={target}"])
-    for target in (2000, 4000, 8000)
-]
+] + adapted_during_run(" (Kelly of u)", ADAPTED, 10, (2000, 4000, 8000)) + [
+    # Q2 from h = 1/16: at most three levels, so that h >= 1/128 lies in the
+    # reference's space.
+    ("uniform Q2, h = 1/16", Q2 + ["Geometry/Cell size=0.0625"]),
+    ("uniform Q2, h = 1/32", Q2 + ["Geometry/Cell size=0.03125"]),
+    ("uniform Q2, h = 1/64", Q2 + ["Geometry/Cell size=0.015625"]),
+    ("graded Q2, h = 1/16", Q2 + ["Geometry/Cell size=0.0625"] + GRADED),
+    ("graded Q2, h = 1/32", Q2 + ["Geometry/Cell size=0.03125"] + GRADED),
+] + adapted_by_pilots(" Q2 (Kelly of u)", ADAPTED_Q2, 3, (2000, 4000)) + \
+    adapted_during_run(" Q2 (Kelly of u)", ADAPTED_Q2, 10, (2000, 4000)) + \
+    adapted_during_run(" Q2 (Kelly of u)", ADAPTED_Q2, 20, (1500,))
 
 
 # The 3D scene (prm/barboteu2015_3d.prm, k = T/18): Q1 from h = 1/8, at
@@ -80,17 +100,27 @@ ADAPTED_3D = ["Geometry/Cell size=0.125", "Mesh adaptation/Max levels=1"]
 RUNS_3D = [
     ("uniform, h = 1/8", ["Geometry/Cell size=0.125"]),
     ("uniform, h = 1/16", ["Geometry/Cell size=0.0625"]),
+] + adapted_by_pilots(" (Kelly of u, the default)", ADAPTED_3D, 2, (1500, 2500)) + \
+    adapted_during_run(" (Kelly of u)", ADAPTED_3D, 3, (1500, 2500))
+
+# The bushing (prm/bushing.prm, Q2 on a curved mesh): uniform Q1 and Q2
+# meshes of 8 x 4^r cells, and Q2 adapted from r = 1 by at most three
+# levels (r <= 4), against Q2 with r = 5, all at the reference's k = T/512:
+# at the scene's k = T/128 the time error (first order in k) hides the
+# space error of Q2 from 512 cells on (9.4e-4 on 512 and 9.3e-4 on 2048
+# cells), so the meshes are compared at equal k.
+STEP_BUSHING = "Time/Time step=0.00390625"  # T / 512
+REFERENCE_BUSHING = ["Geometry/Mesh refinements=5", "Time/Time step=0.00390625"]
+ADAPTED_BUSHING = ["Geometry/Mesh refinements=1", "Mesh adaptation/Max levels=3"]
+Q1 = ["Geometry/Finite element degree=1"]
+RUNS_BUSHING = [
+    (f"uniform Q1, {8 * 4**r} cells", Q1 + [f"Geometry/Mesh refinements={r}"])
+    for r in (2, 3, 4)
 ] + [
-    (f"adapted (Kelly of u, the default), 2 cycles to {target} unknowns",
-     ADAPTED_3D + ["Mesh adaptation/Cycles=2", f"Mesh adaptation/Target unknowns={target}"])
-    for target in (1500, 2500)
-] + [
-    (f"during the run (Kelly of u), every 3 steps, 30 % refined and 10 % coarsened, "
-     f"towards {target} unknowns",
-     ADAPTED_3D + ["Mesh adaptation/Interval=3", "Mesh adaptation/Coarsen fraction=0.1",
-                   f"Mesh adaptation/Target unknowns={target}"])
-    for target in (1500, 2500)
-]
+    (f"uniform Q2, {8 * 4**r} cells", [f"Geometry/Mesh refinements={r}"])
+    for r in (1, 2, 3, 4)
+] + adapted_by_pilots(" Q2 (Kelly of u)", ADAPTED_BUSHING, 3, (1000, 2000, 4000)) + \
+    adapted_during_run(" Q2 (Kelly of u)", ADAPTED_BUSHING, 32, (1000, 2000, 4000))
 
 SCENES = {
     "2d": ("barboteu2015.prm", STEP, REFERENCE, RUNS, 2,
@@ -99,6 +129,9 @@ SCENES = {
     "3d": ("barboteu2015_3d.prm", STEP_3D, REFERENCE_3D, RUNS_3D, 1,
            "prm/barboteu2015_3d.prm (Q1, k = T/18), V-error at T = 1.1 against Q2 with "
            "h = 1/16, k = T/72."),
+    "bushing": ("bushing.prm", STEP_BUSHING, REFERENCE_BUSHING, RUNS_BUSHING, 6,
+                "prm/bushing.prm (k = T/512), V-error at T = 2 against Q2 with 8192 cells "
+                "and the same k: the error of the mesh alone."),
 }
 
 
@@ -111,7 +144,8 @@ def main():
     arguments = parser.parse_args()
     scene, STEP_, REFERENCE_, RUNS_, uniform_index, title = SCENES[arguments.scene]
     out = arguments.out or os.path.join(
-        ROOT, "bench", "adapted_mesh.md" if arguments.scene == "2d" else "adapted_mesh_3d.md")
+        ROOT, "bench", "adapted_mesh.md" if arguments.scene == "2d" else
+        f"adapted_mesh_{arguments.scene}.md")
     if arguments.replot:
         plot(*read_table(out), out)
         return
@@ -136,7 +170,7 @@ def main():
         sys.exit("adapted_mesh_error printed " + str(len(rows)) + " rows:\n" + output.stdout)
 
     uniform = rows[uniform_index]
-    finest = RUNS_[uniform_index][0].split("h = ")[1]
+    finest = RUNS_[uniform_index][0].split(", ")[-1].replace("h = ", "")
     lines = [f"Machine: {machine()}", "",
              f"{title} Produced by `python3 bench/adapted_mesh.py --scene "
              f"{arguments.scene}`.", "",
@@ -167,14 +201,19 @@ def plot(names, rows, out):
         print("no matplotlib: no plot (run with /usr/bin/python3)")
         return
     figure, axes = plt.subplots(1, 2, figsize=(11, 4.2))
-    for family, marker in (("uniform", "o-"), ("graded", "s-"), ("adapted", "^"),
-                           ("during", "v")):
-        chosen = [row for name, row in zip(names, rows) if name.startswith(family)]
+    markers = {("uniform", "Q1"): "o-", ("graded", "Q1"): "s-", ("adapted", "Q1"): "^",
+               ("during", "Q1"): "v", ("uniform", "Q2"): "o--", ("graded", "Q2"): "s--",
+               ("adapted", "Q2"): "D", ("during", "Q2"): "x"}
+    for (family, degree), marker in markers.items():
+        # A name without a degree is of Q1 (the paper's scenes).
+        chosen = [row for name, row in zip(names, rows) if name.startswith(family)
+                  and (degree in name or (degree == "Q1" and "Q2" not in name))]
         if not chosen:
             continue
         errors = [row["error"] for row in chosen]
         label = {"adapted": "adapted by pilots",
                  "during": "adapted during the run (unknowns at T)"}.get(family, family)
+        label += ", " + degree
         axes[0].loglog([row["unknowns"] for row in chosen], errors, marker, label=label)
         axes[1].loglog([row["pilots"] + row["wall"] for row in chosen], errors, marker,
                        label=label)
@@ -183,7 +222,7 @@ def plot(names, rows, out):
     for axis in axes:
         axis.set_ylabel("V-error at T [m]")
         axis.grid(True, which="both", alpha=0.3)
-        axis.legend()
+        axis.legend(fontsize=7, loc="lower left")
     figure.tight_layout()
     figure.savefig(os.path.splitext(out)[0] + ".png", dpi=110)
 
