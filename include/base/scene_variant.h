@@ -45,9 +45,10 @@ namespace Contact
     unsigned int degree;
     std::string  directory;
     /** A quiet variant (a coarse run of an error estimate, a pilot) writes
-     *  only what an estimate compares (its state at T and
-     *  time_series.csv): no VTU, Gamma_3 history or checkpoint, and it runs
-     *  without error estimate or target. A variant that is not quiet has
+     *  what an estimate compares (its state at T and time_series.csv) and,
+     *  where it adapts its mesh during the run, the adaptation's files: no
+     *  VTU, Gamma_3 history or checkpoint, and it runs without error
+     *  estimate or target. A variant that is not quiet has
      *  the output of the scene; of a scene with a target it is the chosen
      *  run, which runs with its error estimate. */
     bool quiet;

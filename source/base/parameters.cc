@@ -1077,9 +1077,9 @@ namespace Contact
         "the console and to <Output directory>/error_estimate.txt. On a mesh "
         "adapted by pilots the coarse runs are that mesh coarsened cell by "
         "cell; a run adapted during itself runs again from the coarser "
-        "meshes of the Geometry, adapting at the same times towards 1/2^dim "
-        "(1/4^dim, ...) of its 'Target unknowns', and is compared at T "
-        "only.");
+        "meshes of the Geometry, adapting at about the same times (the "
+        "interval scaled with k and rounded) towards 1/2^dim (1/4^dim, ...) "
+        "of its 'Target unknowns', and is compared at T only.");
       prm.declare_entry(
         "Separate space and time",
         "false",

@@ -71,8 +71,9 @@ namespace Contact
       return value ? "true" : "false";
     }
 
-    // The entries that a variant sets: h, k, degree and directory, and
-    // what a quiet variant switches off (the scene's values otherwise).
+    // The entries that a variant sets: h, k, degree and directory, how it
+    // adapts its mesh, and what a quiet variant switches off (the scene's
+    // values otherwise).
     std::map<std::string, std::string>
     variant_entries(const Parameters &scene, const SceneVariant &variant)
     {
@@ -89,8 +90,9 @@ namespace Contact
       // estimate's coarsened one), and adapts none by pilots itself. Of a
       // scene that adapts its mesh during the run, a variant (a coarse run
       // of its estimate) adapts the same way from its own coarser mesh: at
-      // the same times (every n-th step scaled with its k, at least every
-      // step), towards as many times fewer unknowns as its cells have more
+      // about the same times (every n-th step scaled with its k and rounded,
+      // at least every step; the same times where the factor divides n and
+      // N), towards as many times fewer unknowns as its cells have more
       // volume.
       const MeshAdaptationParameters &adaptation = scene.mesh_adaptation;
       entries[Entry::adaptation_cycles] = "0";
@@ -102,12 +104,12 @@ namespace Contact
       else
         {
           entries[Entry::adaptation_interval] = std::to_string(
-            std::max(1l,
+            std::max(1L,
                      std::lround(double(adaptation.interval) *
                                  variant.n_steps / scene.time.n_steps())));
           if (adaptation.target_unknowns > 0)
             entries[Entry::target_unknowns] = std::to_string(
-              std::max(1l,
+              std::max(1L,
                        std::lround(std::ldexp(
                          double(adaptation.target_unknowns),
                          int(scene.dimension) * variant.h_halvings))));

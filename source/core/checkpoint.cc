@@ -98,19 +98,32 @@ namespace Contact
       return entries;
     }
 
-    // The entries of a run with the declared defaults. A checkpoint written
-    // before an entry existed ran as the entry's default runs (an entry is
-    // added with the default that keeps the earlier behaviour), so the
-    // default stands in for it.
-    std::map<std::string, std::string> default_problem_entries()
+    // A checkpoint of an earlier version lacks the entries the program
+    // gained since. For each one that defines the problem, the value that
+    // reproduces a run from before it existed. The other entries of 'Mesh
+    // adaptation' describe how a mesh
+    // is adapted: of a run that adapted none they are irrelevant and this
+    // run's values stand in; of one that did, its values are unknown (their
+    // defaults need not be them: before 'Indicators' existed the pilots used
+    // all three) and the checkpoint is refused, naming them. Any other
+    // missing entry is
+    // refused too: an entry that defines the problem goes into this table
+    // when it is added.
+    void complete_older_entries(std::map<std::string, std::string> &stored,
+                                const std::map<std::string, std::string> &now)
     {
-      ParameterHandler prm;
-      Parameters::declare_parameters(prm);
-      std::ostringstream text;
-      prm.print_parameters(text,
-                           ParameterHandler::ShortPRM |
-                             ParameterHandler::KeepDeclarationOrder);
-      return problem_entries(text.str());
+      // (emplace() keeps the stored values.)
+      for (const auto &entry :
+           {std::pair{Entry::max_predicted_time, "0"},
+            std::pair{Entry::adaptation_cycles, "0"},
+            std::pair{Entry::adaptation_interval, "0"}})
+        stored.emplace(entry);
+      if (stored.at(Entry::adaptation_cycles) != "0" ||
+          stored.at(Entry::adaptation_interval) != "0")
+        return;
+      for (const auto &[entry, value] : now)
+        if (entry.rfind("Mesh adaptation/", 0) == 0)
+          stored.emplace(entry, value);
     }
 
     // The entries whose values differ, 'entry: checkpoint a, now b'.
@@ -124,11 +137,18 @@ namespace Contact
         return found == entries.end() ? std::string("(not set)") :
                                          "'" + found->second + "'";
       };
+      // An entry the checkpoint lacks was added to the program after the
+      // checkpoint was written (complete_older_entries()).
+      const auto stored_value = [&](const std::string &entry) {
+        return stored.count(entry) ? value(stored, entry) :
+                                     std::string("(unknown: the checkpoint is "
+                                                 "older than the entry)");
+      };
       std::map<std::string, std::string> all(stored);
       all.insert(now.begin(), now.end());
       for (const auto &[entry, unused] : all)
         if (value(stored, entry) != value(now, entry))
-          text += "\n  " + entry + ": " + value(stored, entry) +
+          text += "\n  " + entry + ": " + stored_value(entry) +
                   " in the checkpoint, " + value(now, entry) + " now";
       return text;
     }
@@ -461,9 +481,9 @@ namespace Contact
     if (stored.has_mesh_plan)
       archive &plan_text;
     archive &stored_shape &stored_entries;
-    // (emplace() keeps the stored values.)
-    for (const auto &entry : default_problem_entries())
-      stored_entries.emplace(entry);
+    const std::map<std::string, std::string> entries_now =
+      problem_entries(parameters.used_parameters);
+    complete_older_entries(stored_entries, entries_now);
     // (A checkpoint written before the mesh was part of the shape has
     // none to compare.)
     std::string problem_shape = shape(space.dof_handler,
@@ -480,8 +500,7 @@ namespace Contact
                                            parameters.time.end_time,
                                            time_step)));
     const std::string differences =
-      differing_entries(stored_entries,
-                        problem_entries(parameters.used_parameters));
+      differing_entries(stored_entries, entries_now);
     AssertThrow(differences.empty(),
                 ExcMessage("The checkpoint '" + name +
                            "' belongs to another problem: these entries "

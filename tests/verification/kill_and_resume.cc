@@ -30,7 +30,7 @@
    resumed run is built on that mesh and must reproduce the uninterrupted
    run, including its later adaptations.
 
-   Last, a checkpoint written by an earlier version of the program
+   Then a checkpoint written by an earlier version of the program
    (kill_and_resume_data/format_10: the same scene stopped after step 20,
    in checkpoint format 10, before the entries of 'Mesh adaptation' and
    'Accuracy/Maximum predicted time' existed) is resumed by this one: an
