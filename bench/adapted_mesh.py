@@ -91,8 +91,9 @@ RUNS = [
     adapted_during_run(" Q2 (Kelly of u)", ADAPTED_Q2, 20, (1500,))
 
 
-# The 3D scene (prm/barboteu2015_3d.prm, k = T/18): Q1 from h = 1/8, at
-# most one level finer (h >= 1/16), against Q2 with h = 1/16 and k = T/72.
+# The 3D scene (prm/barboteu2015_3d.prm, k = T/18): Q1 and Q2 from h = 1/8,
+# at most one level finer (h >= 1/16), against Q2 with h = 1/16 and
+# k = T/72.
 STEP_3D = "Time/Time step=0.061111111111111116"  # T / 18, the scene's k
 REFERENCE_3D = ["Geometry/Finite element degree=2", "Geometry/Cell size=0.0625",
                 "Time/Time step=0.015277777777777779"]
@@ -101,7 +102,11 @@ RUNS_3D = [
     ("uniform, h = 1/8", ["Geometry/Cell size=0.125"]),
     ("uniform, h = 1/16", ["Geometry/Cell size=0.0625"]),
 ] + adapted_by_pilots(" (Kelly of u, the default)", ADAPTED_3D, 2, (1500, 2500)) + \
-    adapted_during_run(" (Kelly of u)", ADAPTED_3D, 3, (1500, 2500))
+    adapted_during_run(" (Kelly of u)", ADAPTED_3D, 3, (1500, 2500)) + [
+    # Q2 from h = 1/8, at most one level finer: in the reference's space.
+    ("uniform Q2, h = 1/8", Q2 + ["Geometry/Cell size=0.125"]),
+] + adapted_by_pilots(" Q2 (Kelly of u)", Q2 + ADAPTED_3D, 2, (8000, 12000)) + \
+    adapted_during_run(" Q2 (Kelly of u)", Q2 + ADAPTED_3D, 3, (8000, 12000))
 
 # The bushing (prm/bushing.prm, Q2 on a curved mesh): uniform Q1 and Q2
 # meshes of 8 x 4^r cells, and Q2 adapted from r = 1 by at most three
@@ -124,7 +129,7 @@ RUNS_BUSHING = [
 
 SCENES = {
     "2d": ("barboteu2015.prm", STEP, REFERENCE, RUNS, 2,
-           "prm/barboteu2015.prm (Q1, k = T/141), V-error at T = 1.1 against Q2 with "
+           "prm/barboteu2015.prm (Q1 and Q2, k = T/141), V-error at T = 1.1 against Q2 with "
            "h = 1/256, k = T/564."),
     "3d": ("barboteu2015_3d.prm", STEP_3D, REFERENCE_3D, RUNS_3D, 1,
            "prm/barboteu2015_3d.prm (Q1, k = T/18), V-error at T = 1.1 against Q2 with "
