@@ -1355,6 +1355,19 @@ namespace Contact
                            Entry::adaptation_interval +
                            "' = " + std::to_string(mesh_adaptation.interval) +
                            " yet; allowed is one of the two, the other 0."));
+    // Settings under which the mesh cannot change at all.
+    check_entry(mesh_adaptation.max_levels > 0,
+                Entry::max_levels,
+                mesh_adaptation.max_levels,
+                "at least 1 where the mesh adapts (with 0 no cell may be "
+                "refined, and none coarser than the Geometry's)");
+    if (mesh_adaptation.interval > 0)
+      check_entry(mesh_adaptation.interval < time.n_steps(),
+                  Entry::adaptation_interval,
+                  mesh_adaptation.interval,
+                  "0 or below the run's " + std::to_string(time.n_steps()) +
+                    " steps (the mesh adapts after every n-th step but "
+                    "the last)");
     AssertThrow(geometry.cell_shape != GeometryParameters::CellShape::simplex,
                 ExcMessage(adapting +
                            "it refines quadrilaterals and "
@@ -1449,7 +1462,13 @@ namespace Contact
                            " runs one scene with its error estimate; "
                            "allowed with it are '" +
                            Entry::levels + "' = 0 and no --resume ('" +
-                           Entry::resume + "' = false)."));
+                           Entry::resume + "' = false)" +
+                           (target ? std::string(".") :
+                                     "; a run killed before its estimate "
+                                     "resumes with '" +
+                                       Entry::estimate_error +
+                                       "' = false, and continues without "
+                                       "it.")));
     if (!geometry.is_box())
       {
         check_entry(geometry.mesh_refinements >= 2,

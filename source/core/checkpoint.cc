@@ -6,7 +6,8 @@
    The file is a line naming the format, a line with the size and the
    CRC-32 of the rest, and the rest: the mesh's plan (the cycles by which a
    mesh adaptation changed the Geometry's mesh, MeshPlan), the shape of the
-   discrete problem, the entries of the .prm that define it, and the state.
+   discrete problem, the entries of the .prm that define it, the state, and
+   whether the mesh's adaptation after the checkpoint's step is still due.
    A damaged or truncated file, or one of another problem, is refused by
    name.
 
@@ -39,6 +40,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <utility>
@@ -48,9 +50,13 @@ namespace Contact
   namespace
   {
     // Format 11 begins with the mesh's plan (the cycles of its adaptation);
-    // format 10, before meshes changed during a run, is still read.
-    const std::string checkpoint_format         = "contact checkpoint 11";
-    const std::string checkpoint_format_no_plan = "contact checkpoint 10";
+    // format 12 ends with whether the adaptation after the checkpoint's step
+    // is still due (a run that ended at a step after which its mesh adapts
+    // did not adapt it: no step followed). Formats 10 and 11 are still read
+    // (with nothing due).
+    const std::string checkpoint_format = "contact checkpoint 12";
+    const std::string checkpoint_format_no_pending = "contact checkpoint 11";
+    const std::string checkpoint_format_no_plan    = "contact checkpoint 10";
     const ResultFiles checkpoint_files("checkpoint(\\.[0-9]+)?(\\.tmp)?");
 
     std::uint32_t crc32(const std::string &bytes)
@@ -61,9 +67,11 @@ namespace Contact
     }
 
     // What a resumed run may change without changing the discrete problem
-    // (README, 'When a run fails'): the end and the solver, and the output
+    // (README, 'When a run fails'): the end and the solver, the output
     // except the probes, the time series and the Gamma_3 history, whose
-    // rows and columns must continue.
+    // rows and columns must continue, and whether the run is followed by
+    // an error estimate (a resume is not: the estimate of a killed run is
+    // dropped).
     // k itself is part of the checkpoint's shape.
     bool may_change_on_resume(const std::string &entry)
     {
@@ -72,7 +80,8 @@ namespace Contact
         return false;
       return entry.rfind("Output/", 0) == 0 || entry.rfind("Solver/", 0) == 0 ||
              entry == Entry::end_time || entry == Entry::time_step ||
-             entry == Entry::max_steps;
+             entry == Entry::max_steps || entry == Entry::estimate_error ||
+             entry == Entry::separate_space_and_time;
     }
 
     // 'Section/Entry' -> value for the entries of the .prm (its ShortPRM
@@ -112,6 +121,11 @@ namespace Contact
     void complete_older_entries(std::map<std::string, std::string> &stored,
                                 const std::map<std::string, std::string> &now)
     {
+      // What an earlier version counted as part of the problem and this one
+      // lets change on resume.
+      for (auto entry = stored.begin(); entry != stored.end();)
+        entry = may_change_on_resume(entry->first) ? stored.erase(entry) :
+                                                     std::next(entry);
       // (emplace() keeps the stored values.)
       for (const auto &entry :
            {std::pair{Entry::max_predicted_time, "0"},
@@ -274,12 +288,13 @@ namespace Contact
     // @sect4{read_payload}
 
     // The checkpoint's bytes after its two header lines, checked against the
-    // size and CRC-32 stored there, and whether they begin with the mesh's
-    // plan.
+    // size and CRC-32 stored there, whether they begin with the mesh's plan
+    // and whether they end with the adaptation that is due.
     struct Payload
     {
       std::string bytes;
       bool        has_mesh_plan;
+      bool        has_pending_adaptation;
     };
 
     Payload read_payload(const std::string &name)
@@ -290,6 +305,7 @@ namespace Contact
       std::string format;
       std::getline(file, format);
       AssertThrow(format == checkpoint_format ||
+                    format == checkpoint_format_no_pending ||
                     format == checkpoint_format_no_plan,
                   ExcMessage("'" + name +
                              "' is not a checkpoint this program "
@@ -316,7 +332,9 @@ namespace Contact
                              "' is damaged: its checksum does not match its "
                              "contents. Resume from another copy, or start the "
                              "run again without --resume."));
-      return {bytes, format == checkpoint_format};
+      return {bytes,
+              format != checkpoint_format_no_plan,
+              format == checkpoint_format};
     }
   } // namespace
 
@@ -442,6 +460,12 @@ namespace Contact
       archive &plan_text &problem_shape &entries &state &friction_state;
       for (const auto &postprocessor : postprocessors)
         postprocessor->save(archive);
+      // The time loop adapts after every adaptation_interval-th step but
+      // the last (time_loop()).
+      bool due = adaptation_interval > 0 && state.step_number > 0 &&
+                 state.step_number % adaptation_interval == 0 &&
+                 state.step_number == n_time_steps;
+      archive &due;
     }
     const std::string bytes = payload.str();
     {
@@ -516,6 +540,9 @@ namespace Contact
     friction_solver->set_state(friction_state);
     for (const auto &postprocessor : postprocessors)
       postprocessor->load(archive);
+    adaptation_due = false;
+    if (stored.has_pending_adaptation)
+      archive &adaptation_due;
     const unsigned int step_number = state.step_number;
     AssertThrow(Utilities::MPI::min(step_number, mpi_communicator) ==
                   Utilities::MPI::max(step_number, mpi_communicator),

@@ -292,6 +292,8 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::time_loop()
   {
+    if (adaptation_due && state.step_number < n_time_steps)
+      transfer_to_adapted_mesh();
     for (++state.step_number; state.step_number <= n_time_steps;
          ++state.step_number)
       {

@@ -818,6 +818,33 @@ namespace Contact
                 << (1u << level) << " (choose N = T/k a multiple of "
                 << coarsest << ")." << std::endl;
         }
+      // A run adapted during itself: its coarse runs adapt the same way
+      // towards 1/2^dim of the unknowns per level, which a mesh too coarse
+      // to refine (a share of a few cells rounds to none) does not reach.
+      if (parameters.mesh_adaptation.interval > 0)
+        {
+          out << "The runs adapt their meshes during the run, from the h "
+              << "above towards 1/" << (1u << parameters.dimension)
+              << " of the unknowns per level (unknowns at T:";
+          for (const RunAtTimes &run : sequence)
+            out << " " << run.summary.n_dofs;
+          out << "); the differences are taken on this run's last mesh."
+              << std::endl;
+          for (unsigned int level = 1; level < sequence.size(); ++level)
+            {
+              const double ratio = double(sequence[level - 1].summary.n_dofs) /
+                                   sequence[level].summary.n_dofs;
+              const double nominal = 1u << parameters.dimension;
+              if (ratio > 2 * nominal || ratio < nominal / 2)
+                out << "Warning: the run with " << (1u << level) << "h has "
+                    << number_text(ratio) << " times fewer "
+                    << "unknowns than the run before it, not about "
+                    << number_text(nominal) << ": its mesh did not adapt as this run's "
+                    << "did, and the estimate, which assumes it did, may be "
+                    << "far off (start from a smaller '" << Entry::cell_size
+                    << "')." << std::endl;
+            }
+        }
       // A row without an estimate gets no bound either: the bound that
       // assumes the finer runs to converge at order 0.5 or more lies below
       // the difference to an 8 or 16 times finer run in 17 of the 64 rows

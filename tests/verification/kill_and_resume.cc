@@ -30,6 +30,11 @@
    resumed run is built on that mesh and must reproduce the uninterrupted
    run, including its later adaptations.
 
+   A run adapted every 7 steps that ends at step 63, a step after which
+   its mesh would adapt, is extended with --resume to the 71 steps of the
+   uninterrupted run: the adaptation that its end left out comes first,
+   and the extended run must reproduce the uninterrupted one.
+
    Then a checkpoint written by an earlier version of the program
    (kill_and_resume_data/format_10: the same scene stopped after step 20,
    in checkpoint format 10, before the entries of 'Mesh adaptation' and
@@ -398,6 +403,37 @@ void kill_and_resume(const unsigned int       processes,
 }
 
 
+// A finished run extended to the end of the uninterrupted run of the case
+// `name` with the same `variant`, against that run.
+void extend_finished_run(const std::string              &name,
+                         const std::vector<std::string> &variant)
+{
+  const std::string extended = "run-extended-1" + name;
+  fs::remove_all(extended);
+  fs::remove(extended + ".log");
+  std::vector<std::string> longer = variant;
+  for (const std::string set : {"--set", "Output/Checkpoint interval=5"})
+    longer.push_back(set);
+  // 63 of the uninterrupted run's 71 steps of k = 1.1/71.
+  std::vector<std::string> shorter = longer;
+  for (const std::string set : {"--set", "Time/End time=0.9760563380281692"})
+    shorter.push_back(set);
+  const int first = wait_for(start(1, extended, shorter));
+  longer.push_back("--resume");
+  const int second = wait_for(start(1, extended, longer));
+  const bool exited = WIFEXITED(first) && WEXITSTATUS(first) == 0 &&
+                      WIFEXITED(second) && WEXITSTATUS(second) == 0;
+  std::cout << "both runs exited with status 0: " << yes_no(exited)
+            << std::endl;
+  if (!exited)
+    std::cerr << contents(extended + ".log") << std::endl;
+  std::cout << "time_series.csv identical to the uninterrupted run: "
+            << yes_no(contents("run-full-1" + name + "/time_series.csv") ==
+                      contents(extended + "/time_series.csv"))
+            << std::endl;
+}
+
+
 // The checkpoint of an earlier version, resumed by this one, against the
 // uninterrupted run of the first case.
 void resume_earlier_version()
@@ -443,6 +479,16 @@ int main()
                    "Mesh adaptation/Max levels=1",
                    "--set",
                    "Mesh adaptation/Coarsen fraction=0.2"});
+  std::cout << "The same, ended at step 63 (a step after which the mesh "
+               "adapts) and extended to step 71:"
+            << std::endl;
+  extend_finished_run("-during",
+                      {"--set",
+                       "Mesh adaptation/Interval=7",
+                       "--set",
+                       "Mesh adaptation/Max levels=1",
+                       "--set",
+                       "Mesh adaptation/Coarsen fraction=0.2"});
   std::cout << "A checkpoint of format 10, from before the entries of mesh "
                "adaptation, one process:"
             << std::endl;
