@@ -246,11 +246,11 @@ namespace Contact
     DiscreteSpace<dim> space;
     // During the run: every how many steps, and what flags the cells
     // (0 and empty: the mesh stays; mesh_transfer.cc).
-    unsigned int                      adaptation_interval = 0;
-    std::function<void()>             choose_cells_to_adapt;
+    unsigned int          adaptation_interval = 0;
+    std::function<void()> choose_cells_to_adapt;
     // A resumed run whose checkpoint was written at the end of a run, at a
     // step after which the mesh adapts: the adaptation comes first.
-    bool adaptation_due = false;
+    bool                              adaptation_due = false;
     const std::unique_ptr<Loads<dim>> loads;
 
     // The matrices (assembly.cc) and the factor of K (time_stepping.cc),

@@ -1400,10 +1400,10 @@ namespace Contact
          {std::pair{Entry::levels, convergence_study.levels > 0},
           std::pair{Entry::target_error, accuracy.target_error > 0}})
       AssertThrow(!set,
-                  ExcMessage(adapting + "it cannot be combined with '" +
-                             entry + "' yet; allowed are '" +
-                             Entry::adaptation_cycles + "' = 0 and '" +
-                             Entry::adaptation_interval + "' = 0 there."));
+                  ExcMessage(adapting + "it cannot be combined with '" + entry +
+                             "' yet; allowed are '" + Entry::adaptation_cycles +
+                             "' = 0 and '" + Entry::adaptation_interval +
+                             "' = 0 there."));
   }
 
 
@@ -1512,16 +1512,17 @@ namespace Contact
       return std::string();
     };
     for (unsigned int d = 0; d < dimension; ++d)
-      check_entry(fits(d, geometry.cell_size),
-                  Entry::cell_size,
-                  geometry.cell_size,
-                  "a size that divides every edge of the box into a "
-                  "multiple of 4 cells with " +
-                    mode + " (the coarse runs have cells of 2h and 4h)" +
-                    suggestion() + "; here the edge " +
-                    std::string(1, "xyz"[d]) + " of length " +
-                    number_text(edge(d)) + " gets " +
-                    std::to_string(cells(d, geometry.cell_size)) + " cells");
+      if (!fits(d, geometry.cell_size))
+        check_entry(false,
+                    Entry::cell_size,
+                    geometry.cell_size,
+                    "a size that divides every edge of the box into a "
+                    "multiple of 4 cells with " +
+                      mode + " (the coarse runs have cells of 2h and 4h)" +
+                      suggestion() + "; here the edge " +
+                      std::string(1, "xyz"[d]) + " of length " +
+                      number_text(edge(d)) + " gets " +
+                      std::to_string(cells(d, geometry.cell_size)) + " cells");
   }
 
   // A probe's quantity needs the probe: the target must be one of this

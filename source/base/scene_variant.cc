@@ -95,7 +95,7 @@ namespace Contact
       // N), towards as many times fewer unknowns as its cells have more
       // volume.
       const MeshAdaptationParameters &adaptation = scene.mesh_adaptation;
-      entries[Entry::adaptation_cycles] = "0";
+      entries[Entry::adaptation_cycles]          = "0";
       if (adaptation.interval == 0)
         {
           entries[Entry::adaptation_interval] = "0";
@@ -105,8 +105,8 @@ namespace Contact
         {
           entries[Entry::adaptation_interval] = std::to_string(
             std::max(1L,
-                     std::lround(double(adaptation.interval) *
-                                 variant.n_steps / scene.time.n_steps())));
+                     std::lround(double(adaptation.interval) * variant.n_steps /
+                                 scene.time.n_steps())));
           if (adaptation.target_unknowns > 0)
             entries[Entry::target_unknowns] = std::to_string(
               std::max(1L,

@@ -54,7 +54,7 @@ namespace Contact
     // is still due (a run that ended at a step after which its mesh adapts
     // did not adapt it: no step followed). Formats 10 and 11 are still read
     // (with nothing due).
-    const std::string checkpoint_format = "contact checkpoint 12";
+    const std::string checkpoint_format            = "contact checkpoint 12";
     const std::string checkpoint_format_no_pending = "contact checkpoint 11";
     const std::string checkpoint_format_no_plan    = "contact checkpoint 10";
     const ResultFiles checkpoint_files("checkpoint(\\.[0-9]+)?(\\.tmp)?");
@@ -110,14 +110,12 @@ namespace Contact
     // A checkpoint of an earlier version lacks the entries the program
     // gained since. For each one that defines the problem, the value that
     // reproduces a run from before it existed. The other entries of 'Mesh
-    // adaptation' describe how a mesh
-    // is adapted: of a run that adapted none they are irrelevant and this
-    // run's values stand in; of one that did, its values are unknown (their
-    // defaults need not be them: before 'Indicators' existed the pilots used
-    // all three) and the checkpoint is refused, naming them. Any other
-    // missing entry is
-    // refused too: an entry that defines the problem goes into this table
-    // when it is added.
+    // adaptation' describe how a mesh is adapted: of a run that adapted none
+    // they are irrelevant and this run's values stand in; of one that did,
+    // its values are unknown (their defaults need not be them: before
+    // 'Indicators' existed the pilots used all three) and the checkpoint is
+    // refused, naming them. Any other missing entry is refused too: an entry
+    // that defines the problem goes into this table when it is added.
     void complete_older_entries(std::map<std::string, std::string> &stored,
                                 const std::map<std::string, std::string> &now)
     {
@@ -127,10 +125,9 @@ namespace Contact
         entry = may_change_on_resume(entry->first) ? stored.erase(entry) :
                                                      std::next(entry);
       // (emplace() keeps the stored values.)
-      for (const auto &entry :
-           {std::pair{Entry::max_predicted_time, "0"},
-            std::pair{Entry::adaptation_cycles, "0"},
-            std::pair{Entry::adaptation_interval, "0"}})
+      for (const auto &entry : {std::pair{Entry::max_predicted_time, "0"},
+                                std::pair{Entry::adaptation_cycles, "0"},
+                                std::pair{Entry::adaptation_interval, "0"}})
         stored.emplace(entry);
       if (stored.at(Entry::adaptation_cycles) != "0" ||
           stored.at(Entry::adaptation_interval) != "0")
@@ -504,7 +501,7 @@ namespace Contact
     // (The plan was read before the mesh was built.)
     if (stored.has_mesh_plan)
       archive &plan_text;
-    archive &stored_shape &stored_entries;
+    archive &stored_shape                   &stored_entries;
     const std::map<std::string, std::string> entries_now =
       problem_entries(parameters.used_parameters);
     complete_older_entries(stored_entries, entries_now);

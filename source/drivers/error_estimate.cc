@@ -839,7 +839,8 @@ namespace Contact
                 out << "Warning: the run with " << (1u << level) << "h has "
                     << number_text(ratio) << " times fewer "
                     << "unknowns than the run before it, not about "
-                    << number_text(nominal) << ": its mesh did not adapt as this run's "
+                    << number_text(nominal)
+                    << ": its mesh did not adapt as this run's "
                     << "did, and the estimate, which assumes it did, may be "
                     << "far off (start from a smaller '" << Entry::cell_size
                     << "')." << std::endl;
@@ -885,9 +886,9 @@ namespace Contact
     // is a multiple of 4.
     // A run whose mesh changes during it has no one mesh to compare its
     // earlier states on: only its state at T is compared.
-    const unsigned int  n_steps        = parameters.time.n_steps();
-    const bool          mesh_changes   = parameters.mesh_adaptation.interval > 0;
-    const unsigned int  history_factor = mesh_changes             ? 0 :
+    const unsigned int  n_steps      = parameters.time.n_steps();
+    const bool          mesh_changes = parameters.mesh_adaptation.interval > 0;
+    const unsigned int  history_factor = mesh_changes            ? 0 :
                                          n_steps % coarsest == 0 ? coarsest :
                                          n_steps % 4 == 0        ? 4 :
                                                                    0;

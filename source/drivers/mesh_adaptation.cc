@@ -624,13 +624,13 @@ namespace Contact
   template <int dim>
   void run_with_mesh_adaptation(const Parameters &scene)
   {
-    if (scene.mesh_adaptation.interval > 0 && scene.accuracy.estimate_error)
-      {
-        run_with_error_estimate<dim>(scene, {}, MeshPlan());
-        return;
-      }
     if (scene.mesh_adaptation.interval > 0)
       {
+        if (scene.accuracy.estimate_error)
+          {
+            run_with_error_estimate<dim>(scene, {}, MeshPlan());
+            return;
+          }
         ContactProblem<dim> problem(scene);
         adapt_during_run(problem, scene.mesh_adaptation);
         problem.run();

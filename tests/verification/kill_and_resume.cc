@@ -420,7 +420,7 @@ void extend_finished_run(const std::string              &name,
     shorter.push_back(set);
   const int first = wait_for(start(1, extended, shorter));
   longer.push_back("--resume");
-  const int second = wait_for(start(1, extended, longer));
+  const int  second = wait_for(start(1, extended, longer));
   const bool exited = WIFEXITED(first) && WEXITSTATUS(first) == 0 &&
                       WIFEXITED(second) && WEXITSTATUS(second) == 0;
   std::cout << "both runs exited with status 0: " << yes_no(exited)
@@ -442,7 +442,7 @@ void resume_earlier_version()
   fs::remove_all(resumed);
   fs::remove(resumed + ".log");
   fs::copy(CONTACT_TEST_DATA_DIR "/kill_and_resume_data/format_10", resumed);
-  const int status = wait_for(start(1, resumed, {"--resume"}));
+  const int  status = wait_for(start(1, resumed, {"--resume"}));
   const bool exited = WIFEXITED(status) && WEXITSTATUS(status) == 0;
   std::cout << "resumed run exited with status 0: " << yes_no(exited)
             << std::endl;
@@ -469,26 +469,20 @@ int main()
   // its checkpoint instead of running the pilots again.
   std::cout << "On a mesh adapted in two cycles, one process:" << std::endl;
   kill_and_resume(1, "-adapted", {"--set", "Mesh adaptation/Cycles=2"});
+  const std::vector<std::string> during = {
+    "--set",
+    "Mesh adaptation/Interval=7",
+    "--set",
+    "Mesh adaptation/Max levels=1",
+    "--set",
+    "Mesh adaptation/Coarsen fraction=0.2"};
   std::cout << "On a mesh adapted during the run every 7 steps, one process:"
             << std::endl;
-  kill_and_resume(1,
-                  "-during",
-                  {"--set",
-                   "Mesh adaptation/Interval=7",
-                   "--set",
-                   "Mesh adaptation/Max levels=1",
-                   "--set",
-                   "Mesh adaptation/Coarsen fraction=0.2"});
+  kill_and_resume(1, "-during", during);
   std::cout << "The same, ended at step 63 (a step after which the mesh "
                "adapts) and extended to step 71:"
             << std::endl;
-  extend_finished_run("-during",
-                      {"--set",
-                       "Mesh adaptation/Interval=7",
-                       "--set",
-                       "Mesh adaptation/Max levels=1",
-                       "--set",
-                       "Mesh adaptation/Coarsen fraction=0.2"});
+  extend_finished_run("-during", during);
   std::cout << "A checkpoint of format 10, from before the entries of mesh "
                "adaptation, one process:"
             << std::endl;
