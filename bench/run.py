@@ -53,6 +53,30 @@ def run(contact, prm, sets):
     return output, wall, usage.ru_maxrss / 1024.
 
 
+def own_estimate(contact, prm, sets, separate=False):
+    """The program's own error estimate of the V-norm of u at T for the
+    scene prm with sets: the row of its report as a dict (column -> text),
+    and the unknowns at T of the run (for a run adapted during itself)."""
+    command = [contact] + sum((["--set", s] for s in sets + [
+        "Accuracy/Estimate error=true",
+        f"Accuracy/Separate space and time={'true' if separate else 'false'}"]),
+        []) + [prm]
+    result = subprocess.run(command, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True)
+    if result.returncode != 0:
+        sys.exit("contact failed:\n" + result.stdout)
+    table = [line for line in result.stdout.splitlines() if line.startswith("| ")]
+    header = [c.strip() for c in table[0].strip().strip("|").split("|")]
+    for line in table[1:]:
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if cells[0] == "V-norm of u":
+            row = dict(zip(header, cells))
+            break
+    unknowns = re.search(r"Mesh: \d+ cells, Q\d, (\d+) unknowns", result.stdout).group(1)
+    adapted = re.search(r"unknowns at T: (\d+)", result.stdout)
+    return row, adapted.group(1) if adapted else unknowns
+
+
 def number(pattern, text):
     match = re.search(pattern, text)
     if not match:

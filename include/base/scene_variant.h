@@ -52,6 +52,10 @@ namespace Contact
      *  the output of the scene; of a scene with a target it is the chosen
      *  run, which runs with its error estimate. */
     bool quiet;
+    /** false: a scene that adapts its mesh during the run runs on its
+     *  uniform mesh instead (the uniform pilots and candidates of a
+     *  target). */
+    bool adapts_during_run = true;
   };
 
   /** The parameters of `variant` of `scene`, checked as those of a scene

@@ -99,17 +99,19 @@ namespace Contact
     }
 
     // The driver that the scene asks for: a convergence study, a run to a
-    // target error, a run with its error estimate, or a single run.
+    // target error (which adapts meshes itself where the scene asks for
+    // it), an adapted mesh, a run with its error estimate, or a single
+    // run.
     template <int dim>
     void run_driver(const Parameters &parameters)
     {
       if (parameters.convergence_study.levels > 0)
         run_convergence_study<dim>(parameters);
+      else if (parameters.accuracy.target_error > 0)
+        run_to_target<dim>(parameters);
       else if (parameters.mesh_adaptation.cycles > 0 ||
                parameters.mesh_adaptation.interval > 0)
         run_with_mesh_adaptation<dim>(parameters);
-      else if (parameters.accuracy.target_error > 0)
-        run_to_target<dim>(parameters);
       else if (parameters.accuracy.estimate_error)
         run_with_error_estimate<dim>(parameters);
       else

@@ -93,10 +93,10 @@ namespace Contact
       // about the same times (every n-th step scaled with its k and rounded,
       // at least every step; the same times where the factor divides n and
       // N), towards as many times fewer unknowns as its cells have more
-      // volume.
+      // volume. A variant without adaptation runs on the uniform mesh.
       const MeshAdaptationParameters &adaptation = scene.mesh_adaptation;
       entries[Entry::adaptation_cycles]          = "0";
-      if (adaptation.interval == 0)
+      if (adaptation.interval == 0 || !variant.adapts_during_run)
         {
           entries[Entry::adaptation_interval] = "0";
           entries[Entry::target_unknowns]     = "0";

@@ -26,6 +26,7 @@
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
 #include <drivers/error_estimate.h>
+#include <drivers/mesh_adaptation.h>
 #include <drivers/reference_interpolation.h>
 #include <drivers/target_error.h>
 
@@ -45,7 +46,8 @@ namespace Contact
     // What a target writes into its output directory: its table, and the
     // pilots' runs (kept by the run the target chose).
     const ResultFiles       target_table("target\\.txt");
-    const ResultDirectories pilot_runs("pilot-q[12]-[24]?h-[24]?k", true);
+    const ResultDirectories pilot_runs("pilot-q[12]-(adapted-)?[24]?h-[24]?k",
+                                       true);
   } // namespace
 
 
@@ -71,7 +73,9 @@ namespace Contact
     {
       std::string  name;
       unsigned int degree;
-      RunAtTimes   run;
+      // Of the family of meshes adapted during the run (scene_variant.cc).
+      bool       adapted;
+      RunAtTimes run;
     };
 
     double quantity_of(const RunSummary &summary, const std::string &name)
@@ -172,12 +176,14 @@ namespace Contact
       return {estimate.error, order, ""};
     }
 
-    // What a degree's pilots say: the space part of the V-norm and of the
-    // target quantity, and the fit a + b x of their wall times against x =
-    // unknowns * steps.
+    // What a degree's pilots say, of uniform meshes or of meshes adapted
+    // during the run: the space part of the V-norm and of the target
+    // quantity, and the fit a + b x of their wall times against x =
+    // unknowns * steps (unknowns at T).
     struct DegreeModel
     {
       unsigned int            degree;
+      bool                    adapted;
       DirectionFit            space_V;
       DirectionFit            space;
       types::global_dof_index n_dofs = 0;
@@ -209,7 +215,8 @@ namespace Contact
       // lazily: not a cost of its size.
       double n = 0, sx = 0, st = 0, sxx = 0, sxt = 0;
       for (const Pilot &pilot : pilots)
-        if (pilot.degree == model.degree && &pilot != &pilots.front())
+        if (pilot.degree == model.degree && pilot.adapted == model.adapted &&
+            &pilot != &pilots.front())
           {
             const RunSummary &run = pilot.run.summary;
             const double      x   = double(run.n_dofs) * run.n_steps;
@@ -234,6 +241,7 @@ namespace Contact
     struct Candidate
     {
       unsigned int            degree;
+      bool                    adapted;
       unsigned int            halvings;
       unsigned int            n_steps;
       types::global_dof_index n_dofs;
@@ -298,6 +306,7 @@ namespace Contact
           0. :
           time.error * std::pow(end_time / n_steps / K, time.order);
       return Candidate{model.degree,
+                       model.adapted,
                        m,
                        n_steps,
                        static_cast<types::global_dof_index>(n_dofs),
@@ -393,12 +402,18 @@ namespace Contact
           std::clamp((s * s + t * t - across * across) / (2 * s * t), 0., 1.);
     }
 
-    // The pilots of one degree: H, 2H, 4H at K, and for the first degree
-    // also 2K and 4K at H (the time part, shared by the degrees).
+    // The pilots of one degree and mesh family: H, 2H, 4H at K, and for
+    // the first degree on uniform meshes also 2K and 4K at H (the time
+    // part, shared by the degrees and by both families: to leading order
+    // it does not depend on the mesh). The adapted family starts from the
+    // same meshes and adapts them during the run towards 'Target unknowns'
+    // times 1, 1/2^dim and 1/4^dim; its runs keep no states over time (no
+    // one mesh holds them).
     template <int dim>
     void
     run_pilots_of_degree(const Parameters  &parameters,
                          const unsigned int degree,
+                         const bool         adapted,
                          const bool         with_time,
                          PilotResults      &results,
                          const std::function<void(const std::string &)> &print)
@@ -415,21 +430,27 @@ namespace Contact
                            const unsigned int time_factor) {
         const std::string name =
           "pilot-q" + std::to_string(degree) + "-" +
+          (adapted ? "adapted-" : "") +
           (space_factor > 1 ? std::to_string(space_factor) : "") + "h-" +
           (time_factor > 1 ? std::to_string(time_factor) : "") + "k";
         const std::string directory = parameters.output.directory + "/" + name;
-        auto              problem   = std::make_unique<ContactProblem<dim>>(
+        const Parameters  own =
           parameters_of(parameters,
                         {-static_cast<int>(space_factor / 2),
-                                        N0 / time_factor,
-                                        degree,
-                                        directory,
-                                        true}));
+                         N0 / time_factor,
+                         degree,
+                         directory,
+                         true,
+                         adapted});
+        auto problem = std::make_unique<ContactProblem<dim>>(own);
+        if (adapted)
+          adapt_during_run(*problem, own.mesh_adaptation);
         pilots.push_back({name,
                           degree,
+                          adapted,
                           run_onto(*problem,
                                    interpolate.get(),
-                                   1,
+                                   adapted ? 0 : 1,
                                    directory + "/console.log")});
         print(
           "Target error: pilot " + name + ": " +
@@ -463,6 +484,7 @@ namespace Contact
       // time ((5.26)).
       const bool field = quantity == V_norm || quantity == worst_V_error;
       results.models.push_back({degree,
+                                adapted,
                                 fit(1, 2, V_norm, degree),
                                 fit(1, 2, quantity, degree + (field ? 0 : 1)),
                                 pilots[first].run.summary.n_dofs});
@@ -473,6 +495,44 @@ namespace Contact
       results.time_V = fit(3, 4, V_norm, 1.);
       results.time   = fit(3, 4, quantity, 1.);
       measure_size_and_cosine(*base, pilots, first, quantity, results);
+    }
+
+    // A scene that adapts its mesh during the run has two families of
+    // candidates, uniform and adapted meshes, unless the target quantity
+    // needs the states over time on one mesh.
+    bool has_adapted_family(const Parameters &parameters)
+    {
+      return parameters.mesh_adaptation.interval > 0 &&
+             parameters.accuracy.target_quantity.name() != worst_V_error;
+    }
+
+    // The scene as the candidates of a degree and family run it. Meshes
+    // adapted during the run refine their start mesh by as much as the
+    // scene's degree would: 'Target unknowns' times the ratio of the
+    // degree's unknowns on the uniform mesh H to those of the scene's
+    // degree (from the uniform pilots, which run first).
+    Parameters scene_of(const Parameters   &scene,
+                        const PilotResults &results,
+                        const unsigned int  degree,
+                        const bool          adapted)
+    {
+      Parameters own = scene;
+      if (!adapted || scene.mesh_adaptation.target_unknowns == 0)
+        return own;
+      types::global_dof_index of_degree = 0, of_scene_degree = 0;
+      for (const DegreeModel &model : results.models)
+        if (!model.adapted)
+          {
+            if (model.degree == degree)
+              of_degree = model.n_dofs;
+            if (model.degree == scene.geometry.fe_degree)
+              of_scene_degree = model.n_dofs;
+          }
+      Assert(of_degree > 0 && of_scene_degree > 0, ExcInternalError());
+      own.mesh_adaptation.target_unknowns = static_cast<unsigned int>(
+        std::lround(double(scene.mesh_adaptation.target_unknowns) * of_degree /
+                    of_scene_degree));
+      return own;
     }
 
     template <int dim>
@@ -492,7 +552,15 @@ namespace Contact
       PilotResults results;
       for (const unsigned int degree : degrees)
         run_pilots_of_degree<dim>(
-          parameters, degree, degree == degrees.front(), results, print);
+          parameters, degree, false, degree == degrees.front(), results, print);
+      if (has_adapted_family(parameters))
+        for (const unsigned int degree : degrees)
+          run_pilots_of_degree<dim>(scene_of(parameters, results, degree, true),
+                                    degree,
+                                    true,
+                                    false,
+                                    results,
+                                    print);
       for (DegreeModel &model : results.models)
         fit_cost(model,
                  results.pilots,
@@ -546,7 +614,8 @@ namespace Contact
                             parameters.accuracy.separate_space_and_time))
               if (!best || c->predicted_cost < best->predicted_cost)
                 best = c;
-          out << "Degree " << model.degree << ": "
+          out << "Degree " << model.degree
+              << (model.adapted ? ", adapted during the run" : "") << ": "
               << fit_text("space error E_h",
                           model.space,
                           results.pilots.front().run.summary.cell_size,
@@ -560,8 +629,8 @@ namespace Contact
               out << "; cheapest run predicted within " << allowed << unit
                   << ": h = H/" << (1u << best->halvings) << ", k = T/"
                   << best->n_steps << ", about " << best->n_dofs
-                  << " unknowns, predicted error " << best->predicted_error
-                  << unit;
+                  << (best->adapted ? " unknowns at T" : " unknowns")
+                  << ", predicted error " << best->predicted_error << unit;
               if (!measured)
                 out << ", " << best->predicted_cost << " unknowns * steps";
               else if (timings)
@@ -606,6 +675,31 @@ namespace Contact
         out << "; space and time errors combine as |e_h + e_k|^2 = E_h^2 + "
             << "E_k^2 + 2 c E_h E_k with c = " << results.cosine;
       out << std::endl;
+      const MeshAdaptationParameters &adaptation = parameters.mesh_adaptation;
+      if (has_adapted_family(parameters))
+        {
+          out << "The adapted pilots adapt their meshes every "
+              << adaptation.interval << " steps";
+          if (adaptation.target_unknowns > 0)
+            {
+              out << " towards";
+              for (const DegreeModel &model : results.models)
+                if (model.adapted)
+                  out << " "
+                      << scene_of(parameters, results, model.degree, true)
+                           .mesh_adaptation.target_unknowns
+                      << " (Q" << model.degree << ")";
+              out << " unknowns from H, and 1/" << (1u << parameters.dimension)
+                  << " and 1/" << (1u << (2 * parameters.dimension))
+                  << " of that from 2H and 4H";
+            }
+          out << " (their unknowns above: at T)." << std::endl;
+        }
+      else if (adaptation.interval > 0)
+        out << "Meshes adapted during the run are no candidates for "
+            << quantity << ": a mesh that changes during the run holds no "
+            << "states of earlier times to compare (the target compares '"
+            << V_norm << "' or a quantity at T of both families)." << std::endl;
       return out.str();
     }
 
@@ -624,6 +718,7 @@ namespace Contact
       std::ostringstream out;
       out << std::setprecision(3) << "Target error " << target << unit
           << " for " << quantity << ": chosen degree " << chosen.degree
+          << (chosen.adapted ? " on a mesh adapted during the run" : "")
           << ", h = " << run.cell_size << " m, k = " << run.time_step << " s ("
           << run.n_dofs << " unknowns, " << run.n_steps
           << " steps); predicted error " << chosen.predicted_error << unit
@@ -672,12 +767,12 @@ namespace Contact
     // The orders that the pilots of `degree` measured, with which the
     // estimate of the chosen run extrapolates.
     KnownOrders known_orders(const PilotResults &pilots,
-                             const unsigned int  degree,
+                             const Candidate    &chosen,
                              const std::string  &quantity)
     {
       KnownOrders orders;
       for (const DegreeModel &model : pilots.models)
-        if (model.degree == degree)
+        if (model.degree == chosen.degree && model.adapted == chosen.adapted)
           {
             orders[quantity] = {model.space.order,
                                 pilots.time.order,
@@ -759,8 +854,9 @@ namespace Contact
     std::ostringstream choice_line;
     choice_line << std::setprecision(3)
                 << "Target error: the chosen run, degree " << chosen->degree
-                << ", h = H/" << (1u << chosen->halvings) << ", k = T/"
-                << chosen->n_steps << ", predicted error "
+                << ", h = H/" << (1u << chosen->halvings)
+                << (chosen->adapted ? " adapted during the run" : "")
+                << ", k = T/" << chosen->n_steps << ", predicted error "
                 << chosen->predicted_error << unit_of_target(parameters);
     if (measured && parameters.output.print_timings)
       choice_line << ", predicted wall time " << chosen->predicted_cost << " s";
@@ -779,14 +875,16 @@ namespace Contact
                            Entry::target_error + "'."));
     const Timer        chosen_timer;
     const EstimatedRun result = run_with_error_estimate<dim>(
-      parameters_of(parameters,
-                    {static_cast<int>(chosen->halvings),
-                     chosen->n_steps,
-                     chosen->degree,
-                     directory,
-                     false}),
+      parameters_of(
+        scene_of(parameters, pilots, chosen->degree, chosen->adapted),
+        {static_cast<int>(chosen->halvings),
+         chosen->n_steps,
+         chosen->degree,
+         directory,
+         false,
+         chosen->adapted}),
       known_orders(pilots,
-                   chosen->degree,
+                   *chosen,
                    parameters.accuracy.target_quantity.name()));
     print("\n" + chosen_report(parameters, *chosen, result, target));
     if (parameters.output.print_timings)
