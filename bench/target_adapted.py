@@ -15,7 +15,8 @@ at a corner, where a uniform mesh converges at about h^(2/3) only; its own
 error, estimated by the program ('Accuracy/Estimate error'), is printed
 with the table.
 The uniform run that the target 1e-2 chooses is not run: it has 4.2 million
-unknowns, more than this machine's memory holds with the direct solver
+unknowns (the table's 4.6 million are the model's estimate from the
+pilots), more than this machine's memory holds with the direct solver
 (an earlier run of this script started it and was stopped with 22 of 23 GB
 in use). 'Maximum predicted time' = 1 s makes the program print its
 choice and stop before it.

@@ -1104,8 +1104,8 @@ namespace Contact
         "target then runs, with its error estimate (as 'Estimate error'). "
         "A scene that adapts its mesh during the run ('Mesh "
         "adaptation/Interval' > 0) adds pilots adapted during the run from "
-        "H, 2H, 4H, and chooses between uniform and adapted meshes (for a "
-        "'Target quantity' at T). "
+        "H, 2H, 4H, and chooses between uniform and adapted meshes (for "
+        "every 'Target quantity' but the largest V-error over time). "
         "The choice and the predicted and estimated errors are printed and "
         "written to <Output directory>/target.txt.");
       prm.declare_entry("Target error type",
@@ -1408,6 +1408,19 @@ namespace Contact
     // A target compares uniform meshes with meshes adapted during the run
     // (target_error.cc); the pilots' adaptation would need its own cycles
     // at each candidate h.
+    // Its 'Target unknowns' is the size of the scene's degree's adapted
+    // mesh, scaled for the other of the degrees 1 and 2 that it compares.
+    check_entry(accuracy.target_error == 0 ||
+                  mesh_adaptation.target_unknowns == 0 ||
+                  geometry.fe_degree <= 2,
+                Entry::finite_element_degree,
+                geometry.fe_degree,
+                "1 or 2 with '" + Entry::target_error + "' > 0 and '" +
+                  Entry::target_unknowns +
+                  "' > 0 (the target compares degrees 1 and 2, and scales "
+                  "'" +
+                  Entry::target_unknowns +
+                  "' from the scene's degree to the other)");
     AssertThrow(accuracy.target_error == 0 || mesh_adaptation.cycles == 0,
                 ExcMessage(adapting + "it cannot be combined with '" +
                            Entry::target_error +

@@ -91,22 +91,27 @@ namespace Contact
       // scene that adapts its mesh during the run, a variant (a coarse run
       // of its estimate) adapts the same way from its own coarser mesh: at
       // about the same times (every n-th step scaled with its k and rounded,
-      // at least every step; the same times where the factor divides n and
-      // N), towards as many times fewer unknowns as its cells have more
-      // volume. A variant without adaptation runs on the uniform mesh.
+      // at least every step and before its last; the same times where the
+      // factor divides n and N), towards as many times fewer unknowns as its
+      // cells have more volume. A variant without adaptation runs on the
+      // uniform mesh, and so does one of a single step (the mesh adapts
+      // after a step but the last).
       const MeshAdaptationParameters &adaptation = scene.mesh_adaptation;
       entries[Entry::adaptation_cycles]          = "0";
-      if (adaptation.interval == 0 || !variant.adapts_during_run)
+      const long interval =
+        std::min(std::max(1L,
+                          std::lround(double(adaptation.interval) *
+                                      variant.n_steps / scene.time.n_steps())),
+                 long(variant.n_steps) - 1);
+      if (adaptation.interval == 0 || !variant.adapts_during_run ||
+          interval < 1)
         {
           entries[Entry::adaptation_interval] = "0";
           entries[Entry::target_unknowns]     = "0";
         }
       else
         {
-          entries[Entry::adaptation_interval] = std::to_string(
-            std::max(1L,
-                     std::lround(double(adaptation.interval) * variant.n_steps /
-                                 scene.time.n_steps())));
+          entries[Entry::adaptation_interval] = std::to_string(interval);
           if (adaptation.target_unknowns > 0)
             entries[Entry::target_unknowns] = std::to_string(
               std::max(1L,
