@@ -65,9 +65,10 @@ def own_estimate(contact, prm, sets, separate=False):
                             stderr=subprocess.STDOUT, text=True)
     if result.returncode != 0:
         sys.exit("contact failed:\n" + result.stdout)
-    table = [line for line in result.stdout.splitlines() if line.startswith("| ")]
-    header = [c.strip() for c in table[0].strip().strip("|").split("|")]
-    for line in table[1:]:
+    lines = result.stdout.splitlines()
+    first = next(i for i, line in enumerate(lines) if line.startswith("| quantity "))
+    header = [c.strip() for c in lines[first].strip().strip("|").split("|")]
+    for line in lines[first + 1:]:
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
         if cells[0] == "V-norm of u":
             row = dict(zip(header, cells))
