@@ -824,8 +824,13 @@ namespace Contact
       if (parameters.mesh_adaptation.interval > 0)
         {
           out << "The runs adapt their meshes during the run, from the h "
-              << "above towards 1/" << (1u << parameters.dimension)
-              << " of the unknowns per level (unknowns at T:";
+              << "above";
+          if (parameters.mesh_adaptation.target_unknowns > 0)
+            out << " towards 1/" << (1u << parameters.dimension)
+                << " of the unknowns per level";
+          else
+            out << " by the same fractions";
+          out << " (unknowns at T:";
           for (const RunAtTimes &run : sequence)
             out << " " << run.summary.n_dofs;
           out << "); the differences are taken on this run's last mesh."

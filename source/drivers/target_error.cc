@@ -79,9 +79,11 @@ namespace Contact
     {
       std::string  name;
       unsigned int degree;
-      // Of the family of meshes adapted during the run (scene_variant.cc).
-      bool       adapted;
-      RunAtTimes run;
+      // Of the family of meshes adapted during the run (scene_variant.cc),
+      // with the number of adaptations that changed its mesh.
+      bool         adapted;
+      RunAtTimes   run;
+      unsigned int mesh_changes = 0;
     };
 
     double quantity_of(const RunSummary &summary, const std::string &name)
@@ -365,9 +367,16 @@ namespace Contact
                          const std::string  &at_unit)
     {
       std::ostringstream out;
-      out << std::setprecision(3) << what << " " << fit.error
-          << (std::isfinite(fit.error) ? unit : std::string()) << " at " << at
-          << " " << at_unit << ", order " << fit.order;
+      out << std::setprecision(3) << what << " ";
+      if (std::isnan(fit.error))
+        out << "none";
+      else
+        out << fit.error << unit;
+      out << " at " << at << " " << at_unit << ", order ";
+      if (std::isnan(fit.order))
+        out << "none";
+      else
+        out << fit.order;
       if (!fit.note.empty())
         out << " (" << fit.note << ")";
       return out.str();
@@ -461,6 +470,7 @@ namespace Contact
                                    interpolate.get(),
                                    adapted ? 0 : 1,
                                    directory + "/console.log")});
+        pilots.back().mesh_changes = problem->get_mesh_plan().n_cycles();
         print(
           "Target error: pilot " + name + ": " +
           sub_run_line(pilots.back().run.summary, directory + "/console.log"));
@@ -497,6 +507,21 @@ namespace Contact
                                 fit(1, 2, V_norm, degree),
                                 fit(1, 2, quantity, degree + (field ? 0 : 1)),
                                 pilots[first].run.summary.n_dofs});
+      // Pilots whose meshes never changed are uniform ones: no family of
+      // their own (a 'Target unknowns' below the start mesh's, or a
+      // 'Refine fraction' of 0, refines nothing).
+      bool changed = false;
+      for (std::size_t i = first; i < pilots.size(); ++i)
+        changed = changed || pilots[i].mesh_changes > 0;
+      if (adapted && !changed)
+        for (DirectionFit *space_fit :
+             {&results.models.back().space_V, &results.models.back().space})
+          *space_fit = {
+            std::numeric_limits<double>::quiet_NaN(),
+            std::numeric_limits<double>::quiet_NaN(),
+            "its pilots' meshes did not change during the run, no cell met '" +
+              Entry::refine_fraction + "' towards '" + Entry::target_unknowns +
+              "': no adapted family, no prediction"};
       if (!with_time)
         return;
       run(1, 2);
@@ -675,6 +700,15 @@ namespace Contact
           for (const Pilot &pilot : results.pilots)
             if (pilot.adapted && pilot.degree == model.degree)
               sizes.push_back(pilot.run.summary.n_dofs);
+          std::string unchanged;
+          for (const Pilot &pilot : results.pilots)
+            if (pilot.adapted && pilot.degree == model.degree &&
+                pilot.mesh_changes == 0)
+              unchanged += " " + pilot.name;
+          if (!unchanged.empty() && std::isfinite(model.space.error))
+            out << "Warning: the meshes of the adapted pilots" << unchanged
+                << " did not change during the run: their family's order "
+                << "mixes adapted and uniform meshes." << std::endl;
           bool off = false;
           for (std::size_t i = 1; i < sizes.size(); ++i)
             {
@@ -773,8 +807,12 @@ namespace Contact
           << (chosen.adapted ? " at the start" : "")
           << ", k = " << run.time_step << " s (" << run.n_dofs << " unknowns, "
           << run.n_steps << " steps); predicted error "
-          << chosen.predicted_error << unit << ", estimated error " << estimated
-          << unit << " (error_estimate.txt)" << std::endl;
+          << chosen.predicted_error << unit << ", estimated error ";
+      if (std::isnan(estimated))
+        out << "none";
+      else
+        out << estimated << unit;
+      out << " (error_estimate.txt)" << std::endl;
       if (std::isnan(estimated))
         out << "Warning: the runs of the chosen run's estimate give no "
             << "estimate of " << quantity << " (error_estimate.txt says "
@@ -837,6 +875,110 @@ namespace Contact
   } // namespace
 
 
+  namespace
+  {
+    // The pilots, the choice and the chosen run with its estimate.
+    template <int dim>
+    void choose_and_run(const Parameters &parameters,
+                        const Timer      &timer,
+                        const std::function<void(const std::string &)> &print)
+    {
+      const std::string &directory = parameters.output.directory;
+      const PilotResults pilots =
+        run_pilots<dim>(parameters,
+                        [&](const std::string &line) { print(line + "\n"); });
+      const double target = target_of(parameters.accuracy, pilots);
+      print("\n" + pilots_report(pilots, parameters, target));
+      std::ostringstream choice;
+      choice << std::setprecision(3);
+      const std::optional<Candidate> chosen =
+        choose(pilots, parameters, dim, target, choice);
+      print(choice.str());
+      bool some_degree_predicts = false;
+      for (const DegreeModel &model : pilots.models)
+        some_degree_predicts =
+          some_degree_predicts || std::isfinite(model.space.error);
+      const bool predicts =
+        std::isfinite(pilots.time.error) && some_degree_predicts;
+      AssertThrow(chosen || predicts,
+                  ExcMessage(
+                    "Entry '" + Entry::target_error +
+                    "' = " + number_text(parameters.accuracy.target_error) +
+                    ": the pilots are not in the asymptotic range for "
+                    "'" +
+                    parameters.accuracy.target_quantity.name() +
+                    "' (see the lines above: an order below " +
+                    number_text(min_plausible_order) +
+                    " or differences that change sign), so they "
+                    "predict nothing. Start from a smaller '" +
+                    Entry::cell_size + "' and '" + Entry::time_step +
+                    "', or choose another '" + Entry::target_quantity + "'."));
+      AssertThrow(chosen,
+                  ExcMessage("Entry '" + Entry::target_error + "' = " +
+                             number_text(parameters.accuracy.target_error) +
+                             ": the pilots predict an error above the target "
+                             "for every degree up to h = H/" +
+                             std::to_string(1u << max_halvings) + " and '" +
+                             Entry::max_steps + "' = " +
+                             std::to_string(parameters.time.max_steps) +
+                             " steps (see the lines above). Ask for a larger "
+                             "target, or start from a smaller '" +
+                             Entry::cell_size + "' and '" + Entry::time_step +
+                             "' if the pilots are not yet in the asymptotic "
+                             "range."));
+
+      const bool measured = parameters.accuracy.cost_model ==
+                            AccuracyParameters::CostModel::measured;
+      std::ostringstream choice_line;
+      choice_line << std::setprecision(3)
+                  << "Target error: the chosen run, degree " << chosen->degree
+                  << ", h = H/" << (1u << chosen->halvings)
+                  << (chosen->adapted ? " adapted during the run" : "")
+                  << ", k = T/" << chosen->n_steps << ", predicted error "
+                  << chosen->predicted_error << unit_of_target(parameters);
+      if (measured && parameters.output.print_timings)
+        choice_line << ", predicted wall time " << chosen->predicted_cost
+                    << " s";
+      choice_line << ", with its error estimate" << std::endl;
+      print(choice_line.str());
+      const double limit = parameters.accuracy.max_predicted_time;
+      AssertThrow(limit == 0 || !measured || chosen->predicted_cost <= limit,
+                  ExcMessage("Entry '" + Entry::max_predicted_time +
+                             "' = " + number_text(limit) +
+                             " s: the run chosen above is predicted to take " +
+                             (parameters.output.print_timings ?
+                                number_text(chosen->predicted_cost) + " s" :
+                                std::string("longer")) +
+                             " with its estimate; it was not run. Raise the "
+                             "limit, or ask for a larger '" +
+                             Entry::target_error + "'."));
+      const Timer        chosen_timer;
+      const EstimatedRun result = run_with_error_estimate<dim>(
+        parameters_of(
+          scene_of(parameters, pilots, chosen->degree, chosen->adapted),
+          {static_cast<int>(chosen->halvings),
+           chosen->n_steps,
+           chosen->degree,
+           directory,
+           false,
+           chosen->adapted}),
+        known_orders(pilots,
+                     *chosen,
+                     parameters.accuracy.target_quantity.name()));
+      print("\n" + chosen_report(parameters, *chosen, result, target));
+      if (parameters.output.print_timings)
+        {
+          std::ostringstream times;
+          times << std::setprecision(3) << "Wall time: pilots "
+                << pilots.wall_time << " s, the chosen run with its estimate "
+                << chosen_timer.wall_time() << " s, total " << timer.wall_time()
+                << " s" << std::endl;
+          print(times.str());
+        }
+    }
+  } // namespace
+
+
   // @sect3{run_to_target}
 
   template <int dim>
@@ -857,103 +999,29 @@ namespace Contact
     // reaches the target, the directory holds the pilots only.
     remove_results(directory, false, MPI_COMM_WORLD);
 
-    const PilotResults pilots =
-      run_pilots<dim>(parameters,
-                      [&](const std::string &line) { print(line + "\n"); });
-    const double target = target_of(parameters.accuracy, pilots);
-    print("\n" + pilots_report(pilots, parameters, target));
-    std::ostringstream choice;
-    choice << std::setprecision(3);
-    const std::optional<Candidate> chosen =
-      choose(pilots, parameters, dim, target, choice);
-    print(choice.str());
-    bool some_degree_predicts = false;
-    for (const DegreeModel &model : pilots.models)
-      some_degree_predicts =
-        some_degree_predicts || std::isfinite(model.space.error);
-    const bool predicts =
-      std::isfinite(pilots.time.error) && some_degree_predicts;
-    AssertThrow(chosen || predicts,
-                ExcMessage(
-                  "Entry '" + Entry::target_error +
-                  "' = " + number_text(parameters.accuracy.target_error) +
-                  ": the pilots are not in the asymptotic range for "
-                  "'" +
-                  parameters.accuracy.target_quantity.name() +
-                  "' (see the lines above: an order below " +
-                  number_text(min_plausible_order) +
-                  " or differences that change sign), so they "
-                  "predict nothing. Start from a smaller '" +
-                  Entry::cell_size + "' and '" + Entry::time_step +
-                  "', or choose another '" + Entry::target_quantity + "'."));
-    AssertThrow(chosen,
-                ExcMessage("Entry '" + Entry::target_error + "' = " +
-                           number_text(parameters.accuracy.target_error) +
-                           ": the pilots predict an error above the target "
-                           "for every degree up to h = H/" +
-                           std::to_string(1u << max_halvings) + " and '" +
-                           Entry::max_steps +
-                           "' = " + std::to_string(parameters.time.max_steps) +
-                           " steps (see the lines above). Ask for a larger "
-                           "target, or start from a smaller '" +
-                           Entry::cell_size + "' and '" + Entry::time_step +
-                           "' if the pilots are not yet in the asymptotic "
-                           "range."));
-
-    const bool measured =
-      parameters.accuracy.cost_model == AccuracyParameters::CostModel::measured;
-    std::ostringstream choice_line;
-    choice_line << std::setprecision(3)
-                << "Target error: the chosen run, degree " << chosen->degree
-                << ", h = H/" << (1u << chosen->halvings)
-                << (chosen->adapted ? " adapted during the run" : "")
-                << ", k = T/" << chosen->n_steps << ", predicted error "
-                << chosen->predicted_error << unit_of_target(parameters);
-    if (measured && parameters.output.print_timings)
-      choice_line << ", predicted wall time " << chosen->predicted_cost << " s";
-    choice_line << ", with its error estimate" << std::endl;
-    print(choice_line.str());
-    const double limit = parameters.accuracy.max_predicted_time;
-    AssertThrow(limit == 0 || !measured || chosen->predicted_cost <= limit,
-                ExcMessage("Entry '" + Entry::max_predicted_time +
-                           "' = " + number_text(limit) +
-                           " s: the run chosen above is predicted to take " +
-                           (parameters.output.print_timings ?
-                              number_text(chosen->predicted_cost) + " s" :
-                              std::string("longer")) +
-                           " with its estimate; it was not run. Raise the "
-                           "limit, or ask for a larger '" +
-                           Entry::target_error + "'."));
-    const Timer        chosen_timer;
-    const EstimatedRun result = run_with_error_estimate<dim>(
-      parameters_of(
-        scene_of(parameters, pilots, chosen->degree, chosen->adapted),
-        {static_cast<int>(chosen->halvings),
-         chosen->n_steps,
-         chosen->degree,
-         directory,
-         false,
-         chosen->adapted}),
-      known_orders(pilots,
-                   *chosen,
-                   parameters.accuracy.target_quantity.name()));
-    print("\n" + chosen_report(parameters, *chosen, result, target));
-    if (parameters.output.print_timings)
+    // What the target prints also goes to target.txt, however the target
+    // ends: a target stopped by an error records why.
+    const auto write_record = [&]() {
+      if (!root)
+        return;
+      std::ofstream file(directory + "/target.txt");
+      file << text.str();
+      AssertThrow(file.good(),
+                  ExcMessage("Cannot write '" + directory + "/target.txt'."));
+    };
+    try
       {
-        std::ostringstream times;
-        times << std::setprecision(3) << "Wall time: pilots "
-              << pilots.wall_time << " s, the chosen run with its estimate "
-              << chosen_timer.wall_time() << " s, total " << timer.wall_time()
-              << " s" << std::endl;
-        print(times.str());
+        choose_and_run<dim>(parameters, timer, print);
       }
-    if (root)
+    catch (const ExceptionBase &exc)
       {
-        std::ofstream file(directory + "/target.txt");
-        file << text.str();
-        AssertThrow(file.good(),
-                    ExcMessage("Cannot write '" + directory + "/target.txt'."));
+        std::ostringstream reason;
+        exc.print_info(reason);
+        text << "\nStopped: " << Utilities::trim(reason.str()) << std::endl;
+        write_record();
+        throw;
       }
+    write_record();
   }
 
 
