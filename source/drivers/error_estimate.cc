@@ -748,14 +748,20 @@ namespace Contact
             << "1/16). '" << Entry::separate_space_and_time
             << "' = true estimates the two parts with their own orders."
             << std::endl;
+      // What the pilots' orders do (estimate_of, add_parts): raise an
+      // estimate that the row's own runs give, never make one.
       for (const auto &[name, known] : orders)
         out << name << ": the target's pilots measured the orders "
             << known.space << " in h and " << known.time << " in k; "
             << (std::abs(known.space - known.time) >= min_order_separation ?
-                  "estimated as the sum of a space and a time part with "
-                  "these orders." :
-                  "too close to tell the parts apart: one order, as for "
-                  "the other rows.")
+                  "where the row's own runs give an estimate, it is raised "
+                  "to the sum of a space and a time part with these orders "
+                  "if that is larger." :
+                  std::string("too close to tell the parts apart: not "
+                              "used") +
+                    (separate ? "; the space and the time part take the "
+                                "orders of their own runs." :
+                                "; one order, as for the other rows."))
             << std::endl;
       write_table(
         rows, parameters.dimension, sequence.size() - 1, exact, separate, out);
