@@ -1405,11 +1405,9 @@ namespace Contact
                            Entry::levels + "' yet; allowed are '" +
                            Entry::adaptation_cycles + "' = 0 and '" +
                            Entry::adaptation_interval + "' = 0 there."));
-    // A target compares uniform meshes with meshes adapted during the run
-    // (target_error.cc); the pilots' adaptation would need its own cycles
-    // at each candidate h.
-    // Its 'Target unknowns' is the size of the scene's degree's adapted
-    // mesh, scaled for the other of the degrees 1 and 2 that it compares.
+    // A target's 'Target unknowns' is the size of the scene's degree's
+    // adapted mesh, scaled for the other of the degrees 1 and 2 that it
+    // compares.
     check_entry(accuracy.target_error == 0 ||
                   mesh_adaptation.target_unknowns == 0 ||
                   geometry.fe_degree <= 2,
@@ -1421,6 +1419,9 @@ namespace Contact
                   "'" +
                   Entry::target_unknowns +
                   "' from the scene's degree to the other)");
+    // A target compares uniform meshes with meshes adapted during the run
+    // (target_error.cc); the pilots' adaptation would need its own cycles
+    // at each candidate h.
     AssertThrow(accuracy.target_error == 0 || mesh_adaptation.cycles == 0,
                 ExcMessage(adapting + "it cannot be combined with '" +
                            Entry::target_error +

@@ -359,6 +359,17 @@ namespace Contact
       return out.str();
     }
 
+    // A number with 3 digits and its unit, or "none" for NaN (nothing
+    // measured or predicted).
+    std::string number_or_none(const double value, const std::string &unit)
+    {
+      if (std::isnan(value))
+        return "none";
+      std::ostringstream out;
+      out << std::setprecision(3) << value << unit;
+      return out.str();
+    }
+
     // `unit`: of the error, with its leading space; `at_unit`: of h or k.
     std::string fit_text(const std::string  &what,
                          const DirectionFit &fit,
@@ -367,16 +378,9 @@ namespace Contact
                          const std::string  &at_unit)
     {
       std::ostringstream out;
-      out << std::setprecision(3) << what << " ";
-      if (std::isnan(fit.error))
-        out << "none";
-      else
-        out << fit.error << unit;
-      out << " at " << at << " " << at_unit << ", order ";
-      if (std::isnan(fit.order))
-        out << "none";
-      else
-        out << fit.order;
+      out << what << " " << number_or_none(fit.error, unit) << " at "
+          << std::setprecision(3) << at << " " << at_unit << ", order "
+          << number_or_none(fit.order, "");
       if (!fit.note.empty())
         out << " (" << fit.note << ")";
       return out.str();
@@ -461,7 +465,7 @@ namespace Contact
                                true,
                                adapted}));
         auto problem = std::make_unique<ContactProblem<dim>>(own);
-        if (adapted)
+        if (own.mesh_adaptation.interval > 0)
           adapt_during_run(*problem, own.mesh_adaptation);
         pilots.push_back({name,
                           degree,
@@ -697,14 +701,14 @@ namespace Contact
           if (!model.adapted)
             continue;
           std::vector<types::global_dof_index> sizes;
+          std::string                          unchanged;
           for (const Pilot &pilot : results.pilots)
             if (pilot.adapted && pilot.degree == model.degree)
-              sizes.push_back(pilot.run.summary.n_dofs);
-          std::string unchanged;
-          for (const Pilot &pilot : results.pilots)
-            if (pilot.adapted && pilot.degree == model.degree &&
-                pilot.mesh_changes == 0)
-              unchanged += " " + pilot.name;
+              {
+                sizes.push_back(pilot.run.summary.n_dofs);
+                if (pilot.mesh_changes == 0)
+                  unchanged += " " + pilot.name;
+              }
           if (!unchanged.empty() && std::isfinite(model.space.error))
             out << "Warning: the meshes of the adapted pilots" << unchanged
                 << " did not change during the run: their family's order "
@@ -807,12 +811,9 @@ namespace Contact
           << (chosen.adapted ? " at the start" : "")
           << ", k = " << run.time_step << " s (" << run.n_dofs << " unknowns, "
           << run.n_steps << " steps); predicted error "
-          << chosen.predicted_error << unit << ", estimated error ";
-      if (std::isnan(estimated))
-        out << "none";
-      else
-        out << estimated << unit;
-      out << " (error_estimate.txt)" << std::endl;
+          << chosen.predicted_error << unit << ", estimated error "
+          << number_or_none(estimated, unit) << " (error_estimate.txt)"
+          << std::endl;
       if (std::isnan(estimated))
         out << "Warning: the runs of the chosen run's estimate give no "
             << "estimate of " << quantity << " (error_estimate.txt says "
@@ -872,11 +873,10 @@ namespace Contact
           }
       return orders;
     }
-  } // namespace
 
 
-  namespace
-  {
+    // @sect3{The pilots, the choice and the chosen run}
+
     // The pilots, the choice and the chosen run with its estimate.
     template <int dim>
     void choose_and_run(const Parameters &parameters,
