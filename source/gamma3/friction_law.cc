@@ -279,14 +279,15 @@ namespace Contact
                             const unsigned int      max_iterations,
                             Vector<double>         &eta,
                             Vector<double>         &v,
-                            std::vector<NodeState> &state)
+                            std::vector<NodeState> &state,
+                            const double            relative_tolerance)
   {
     AssertDimension(eta.size(), g.size() * m);
     TrescaResult                  result;
     Vector<double>                c = c_initial;
     std::vector<std::vector<int>> history;
     const double                  tolerance =
-      friction_residual_tolerance *
+      relative_tolerance *
       std::max(g.linfty_norm(), std::numeric_limits<double>::min());
 
     if (velocity)
@@ -774,17 +775,20 @@ namespace Contact
     // One convexification step from (eta, v): the Tresca problem with the
     // bounds of the slip rates of v, which lowers E because j is concave
     // along |v| (a majorisation), its forces and velocities in
-    // (new_eta, new_v). False if the active set method did not converge.
-    bool convexification_step(const TrescaNewtonStep &newton_step,
-                              const unsigned int      m,
-                              const NodalLaw         &law,
-                              const Vector<double>   &c,
-                              const unsigned int      max_active_set_iterations,
-                              const Vector<double>   &eta,
-                              const Vector<double>   &v,
-                              Vector<double>         &new_eta,
-                              Vector<double>         &new_v,
-                              FrictionNewtonResult   &result)
+    // (new_eta, new_v). False if the active set method did not converge to
+    // `tolerance` (relative to the largest bound).
+    bool
+    convexification_step(const TrescaNewtonStep &newton_step,
+                         const unsigned int      m,
+                         const NodalLaw         &law,
+                         const Vector<double>   &c,
+                         const unsigned int      max_active_set_iterations,
+                         const Vector<double>   &eta,
+                         const Vector<double>   &v,
+                         Vector<double>         &new_eta,
+                         Vector<double>         &new_v,
+                         FrictionNewtonResult   &result,
+                         const double tolerance = friction_residual_tolerance)
     {
       Vector<double> bound(c.size());
       for (unsigned int p = 0; p < c.size(); ++p)
@@ -804,7 +808,8 @@ namespace Contact
                                                max_active_set_iterations,
                                                new_eta,
                                                new_v,
-                                               state);
+                                               state,
+                                               tolerance);
       ++result.convexification_steps;
       result.active_set_iterations += tresca.iterations;
       return tresca.converged;
@@ -917,7 +922,8 @@ namespace Contact
                                   v,
                                   start_eta,
                                   start_v,
-                                  result))
+                                  result,
+                                  start_residual_tolerance))
           {
             result.tresca_failed = true;
             return result;
