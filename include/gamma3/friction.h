@@ -47,6 +47,11 @@ namespace Contact
    *  a direction with the directional derivative E' < 0 is accepted when E
    *  decreases by at least sufficient_decrease t |E'|. */
   constexpr double sufficient_decrease = 1e-4;
+  /** Where neither Newton model's step lowers E within three halvings, the
+   *  step with the true slopes is halved further while its length stays
+   *  above this fraction (down to 1/64) before a convexification step is
+   *  taken (solve_friction_newton()). */
+  constexpr double shortest_true_step = 0.01;
 
   /**
    * The slip threshold mu(s) S of (3.6) of the slip rate s = |w_tau|, for
@@ -354,10 +359,12 @@ namespace Contact
    *   plain decrease where that derivative is not negative); it is halved
    *   up to three times; if that fails, the other model (capped or true
    *   slope) is tried from the same iterate (a failed true step also halves
-   *   the residual below which the true slope is taken again), and if both
-   *   fail, or the step's solver refuses its matrix
-   *   (ExcIndefiniteNewtonMatrix: both models give it the same capped
-   *   matrix), a convexification step is taken instead (the Tresca problem
+   *   the residual below which the true slope is taken again); if both
+   *   fail, the true step is halved further, down to 1/64
+   *   (shortest_true_step, no solve), and if that fails too, or the step's
+   *   solver refuses its matrix (ExcIndefiniteNewtonMatrix: both models
+   *   give it the same capped matrix), a convexification step is taken
+   *   instead (the Tresca problem
    *   with the bounds of the current slip rates), which lowers E because j
    *   is concave along |v| (a majorisation).
    * - After three full capped steps on repeating sets whose residual grew

@@ -471,13 +471,14 @@ namespace Contact
 
     // Backtracking on E from (eta, v) towards the Newton iterate
     // (new_eta, new_v), which (eta, v) move to together, v = v_free - D eta
-    // being affine in eta, so that a shorter step costs no solve: halved at
-    // most three times (a third halving saves convexification steps, a
-    // fourth was never taken in the 3D scenes). A length t is accepted on
-    // sufficient decrease, E(t) <= E(0) + sufficient_decrease t min(E', 0)
-    // up to the accuracy of E (law.energy_accuracy; near the solution the
-    // decrease is below it). Returns the step length, 0 if none was
-    // accepted.
+    // being affine in eta, so that a shorter step costs no solve: halved
+    // while the length stays above shortest_length (three times by default:
+    // a third halving saves convexification steps, a fourth was rarely
+    // taken in the 3D scenes; see solve_friction_newton() for the longer
+    // search). A length t is accepted on sufficient decrease, E(t) <= E(0) +
+    // sufficient_decrease t min(E', 0) up to the accuracy of E
+    // (law.energy_accuracy; near the solution the decrease is below it).
+    // Returns the step length, 0 if none was accepted.
     double backtrack(const NodalLaw       &law,
                      const Vector<double> &v_free,
                      const Vector<double> &eta,
@@ -485,7 +486,8 @@ namespace Contact
                      const double          energy,
                      Vector<double>       &new_eta,
                      Vector<double>       &new_v,
-                     double               &new_energy)
+                     double               &new_energy,
+                     const double          shortest_length = 0.1)
     {
       const unsigned int m = v.size() / law.weights.size();
       Vector<double>     dv(new_v);
@@ -501,7 +503,7 @@ namespace Contact
       };
       if (sufficient(1.))
         return 1.;
-      for (double length = 0.5; length > 0.1; length /= 2)
+      for (double length = 0.5; length > shortest_length; length /= 2)
         {
           new_eta = eta;
           new_eta.add(length, full_eta, -length, eta);
@@ -991,6 +993,9 @@ namespace Contact
     // stick (propose_stick()).
     unsigned int       creeping    = 0;
     const unsigned int creep_limit = 3;
+    // The full step with the true slopes from the current iterate, kept
+    // while it failed there (see below).
+    Vector<double> true_step_eta, true_step_v;
     while (!solved && result.iterations < max_iterations)
       {
         ++result.iterations;
@@ -1013,6 +1018,11 @@ namespace Contact
           {
             if (std::isnan(energy))
               energy = law.energy(v_free(), eta, v, scale);
+            if (!capped)
+              {
+                true_step_eta = new_eta;
+                true_step_v   = new_v;
+              }
             length = backtrack(
               law, v_free(), eta, v, energy, new_eta, new_v, new_energy);
           }
@@ -1029,6 +1039,28 @@ namespace Contact
                 linearisation = linearise_law(m, eta, v, law, c, capped);
                 continue;
               }
+          }
+        if (length == 0. && uncapped_failed)
+          {
+            // Neither model's step lowered E within three halvings. Where
+            // the Hessian on the slip set is nearly singular the true step
+            // is far too long but its direction still descends: it is
+            // searched down to 1/64 of its length, which costs no solve,
+            // before the convexification step, which costs several (on the
+            // 3D scene at h = k = 1/16 with CG-AMG, 10.7 instead of 11.2
+            // solves with K per step, the same solutions:
+            // doc/algorithm.md).
+            new_eta = true_step_eta;
+            new_v   = true_step_v;
+            length  = backtrack(law,
+                               v_free(),
+                               eta,
+                               v,
+                               energy,
+                               new_eta,
+                               new_v,
+                               new_energy,
+                               shortest_true_step);
           }
         capped_failed = uncapped_failed = false;
         if (length == 0.)

@@ -8,16 +8,16 @@
    the reduced Hessian W_SS + diag(g'(s_p)) on the slip set S, W = D^{-1})
    looks at every end point:
    - with the curvature test replaced by one that certifies every point,
-     some starts end on a saddle in three of the four cases (what the test
-     must catch; at alpha = 5 none does since Newton's first iterate is the
-     convexification's);
+     some starts end on a saddle in each of the four cases (what the test
+     must catch; at alpha = 5 none did before a failed true step was
+     searched down to 1/64 of its length, shortest_true_step);
    - with the curvature test of DelassusOperator (from W, and from D alone)
      and with the capacitance test from Newton steps, which a path falls
      back on where its own test cannot tell, every start converges to a
      local minimum: where the method met a saddle it left it along its
-     negative curvature (in each of those three cases some starts do, the
-     same starts with every test) and went on to a minimum; none is handed
-     back to the convexification. */
+     negative curvature (in each case some starts do, the same starts with
+     every test) and went on to a minimum; none is handed back to the
+     convexification. */
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
