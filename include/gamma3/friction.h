@@ -32,11 +32,12 @@ namespace Contact
    *  nonconvex stops once its sets repeat and its residual is below this
    *  fraction of its largest bound: the sets, which select the solution,
    *  are then decided, and the remaining digits are left to Newton's
-   *  method, whose steps solve the same conditions on those sets. (On every
-   *  test scene, and on the 3D scene at h = k = 1/32, the solutions are
-   *  those of the start solved to friction_residual_tolerance; at 1e-2 the
-   *  3D scene at h = k = 1/16 ends on another local minimum:
-   *  doc/algorithm.md.) */
+   *  method, whose steps solve the same conditions on those sets. (Every
+   *  test scene ends on the solutions of the start solved to
+   *  friction_residual_tolerance, to the printed digits, and the 3D scene
+   *  at h = k = 1/32 with the same stick/slip counts at every printed
+   *  step; at 1e-2 the 3D scene at h = k = 1/16 ends on another local
+   *  minimum: doc/algorithm.md.) */
   constexpr double start_residual_tolerance = 1e-3;
   /** While the stick/slip sets still change, Newton's model caps the
    *  weakening at this fraction of the convexity limit, where the model is
@@ -157,11 +158,10 @@ namespace Contact
    * there are no such directions: the slip set fixes eta_p = g_p sign(z_p)
    * and the method ends when the sets and signs repeat, with (eta, v)
    * exact. For m = 2 the slip directions converge superlinearly; the method
-   * stops when the sets repeat and eta - P(z) is below `tolerance` times
-   * max_p g_p (round-off unless the caller asks for less). If a set
-   * seen before (not the last one) comes back, the method cycles; c is then
-   * halved, which is what cures the cycling at slip onset
-   * (doc/algorithm.md).
+   * stops when the sets repeat and eta - P(z) is below `relative_tolerance`
+   * times max_p g_p (round-off unless the caller asks for less). If a set seen
+   * before (not the last one) comes back, the method cycles; c is then halved,
+   * which is what cures the cycling at slip onset (doc/algorithm.md).
    */
   struct TrescaResult
   {
@@ -261,7 +261,7 @@ namespace Contact
                Vector<double>         &eta,
                Vector<double>         &v,
                std::vector<NodeState> &state,
-               const double            tolerance = friction_residual_tolerance);
+               const double relative_tolerance = friction_residual_tolerance);
 
   /**
    * The nodal friction law with the coefficient not frozen: node p's bound
@@ -360,7 +360,8 @@ namespace Contact
    *   up to three times; if that fails, the other model (capped or true
    *   slope) is tried from the same iterate (a failed true step also halves
    *   the residual below which the true slope is taken again); if both
-   *   fail, the true step is halved further, down to 1/64
+   *   fail (or the true step, where no cap makes it the only model), the
+   *   true step is halved further, down to 1/64
    *   (shortest_true_step, no solve), and if that fails too, or the step's
    *   solver refuses its matrix (ExcIndefiniteNewtonMatrix: both models
    *   give it the same capped matrix), a convexification step is taken

@@ -1042,9 +1042,11 @@ namespace Contact
           }
         if (length == 0. && uncapped_failed)
           {
-            // Neither model's step lowered E within three halvings. Where
+            // Neither model's step lowered E within three halvings (or the
+            // true one, where no cap makes it the only model). Where
             // the Hessian on the slip set is nearly singular the true step
-            // is far too long but its direction still descends: it is
+            // is far too long, and a short step along it may still lower E
+            // (the line search decides, as for every step): it is
             // searched down to 1/64 of its length, which costs no solve,
             // before the convexification step, which costs several (on the
             // 3D scene at h = k = 1/16 with CG-AMG, 10.7 instead of 11.2
