@@ -29,10 +29,11 @@ namespace Contact
    *  much relative to its size: round-off of the sum. */
   constexpr double energy_round_off = 1e-13;
   /** The Tresca problem with which Newton's method starts where E may be
-   *  nonconvex stops once its sets repeat and its residual is below this
-   *  fraction of its largest bound: the sets, which select the solution,
-   *  are then decided, and the remaining digits are left to Newton's
-   *  method, whose steps solve the same conditions on those sets. (Every
+   *  nonconvex, and that of a convexification step inside it, stops once
+   *  its sets repeat and its residual is below this fraction of its
+   *  largest bound: the sets, which select the solution, are then
+   *  decided, and the remaining digits are left to Newton's method, whose
+   *  steps solve the same conditions on those sets. (Every
    *  test scene ends on the solutions of the start solved to
    *  friction_residual_tolerance, to the printed digits, and the 3D scene
    *  at h = k = 1/32 with the same stick/slip counts at every printed
@@ -367,7 +368,9 @@ namespace Contact
    *   give it the same capped matrix), a convexification step is taken
    *   instead (the Tresca problem
    *   with the bounds of the current slip rates), which lowers E because j
-   *   is concave along |v| (a majorisation).
+   *   is concave along |v| (a majorisation); it is solved to
+   *   start_residual_tolerance, and to friction_residual_tolerance only
+   *   where that rougher solution does not lower E.
    * - After three full capped steps on repeating sets whose residual grew
    *   (the capped model creeping towards a node's stick state), the slip
    *   nodes weakening faster than the cap that slowed down are proposed to

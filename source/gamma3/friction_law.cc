@@ -498,7 +498,9 @@ namespace Contact
       const auto full_eta(new_eta), full_v(new_v);
       const auto sufficient = [&](const double length) {
         new_energy = law.energy(v_free, new_eta, new_v, scale);
-        return new_energy <= energy + sufficient_decrease * length * descent +
+        // (A step whose solve broke down gives no finite E to compare.)
+        return std::isfinite(new_energy) &&
+               new_energy <= energy + sufficient_decrease * length * descent +
                                law.energy_accuracy * scale;
       };
       if (sufficient(1.))
@@ -1068,22 +1070,37 @@ namespace Contact
         if (length == 0.)
           {
             // No descent along the Newton direction: one convexification
-            // step instead.
-            if (!convexification_step(newton_step,
-                                      m,
-                                      law,
-                                      c,
-                                      max_active_set_iterations,
-                                      eta,
-                                      v,
-                                      new_eta,
-                                      new_v,
-                                      result))
+            // step instead, solved like the start (its sets decide where
+            // Newton goes on from). Should that rough solution not lower E
+            // (the exact one does), it is solved to the full tolerance.
+            if (std::isnan(energy))
+              energy = law.energy(v_free(), eta, v, scale);
+            bool solved_step = false;
+            for (const double step_tolerance :
+                 {start_residual_tolerance, friction_residual_tolerance})
+              {
+                solved_step = convexification_step(newton_step,
+                                                   m,
+                                                   law,
+                                                   c,
+                                                   max_active_set_iterations,
+                                                   eta,
+                                                   v,
+                                                   new_eta,
+                                                   new_v,
+                                                   result,
+                                                   step_tolerance);
+                if (!solved_step)
+                  break;
+                new_energy = law.energy(v_free(), new_eta, new_v, scale);
+                if (new_energy <= energy + law.energy_accuracy * scale)
+                  break;
+              }
+            if (!solved_step)
               {
                 result.tresca_failed = true;
                 break;
               }
-            new_energy = law.energy(v_free(), new_eta, new_v, scale);
           }
         else if (length < 1.)
           ++result.damped_steps;
