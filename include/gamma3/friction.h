@@ -54,6 +54,11 @@ namespace Contact
    *  above this fraction (down to 1/64) before a convexification step is
    *  taken (solve_friction_newton()). */
   constexpr double shortest_true_step = 0.01;
+  /** Where the capped model's full steps on repeating sets lower the
+   *  residual by less than 30 % twice in a row, a full step is
+   *  extrapolated to lengths 2, 4, ... up to this while E keeps falling
+   *  (solve_friction_newton()). */
+  constexpr double longest_extrapolation = 8;
 
   /**
    * The slip threshold mu(s) S of (3.6) of the slip rate s = |w_tau|, for
@@ -375,6 +380,11 @@ namespace Contact
    *   (the capped model creeping towards a node's stick state), the slip
    *   nodes weakening faster than the cap that slowed down are proposed to
    *   stick: one Newton step with them held, taken if it lowers E.
+   * - After two full capped steps in a row on repeating sets whose residual
+   *   fell by less than 30 % (E nearly flat along the step, the model's
+   *   curvature far above E's), a full capped step is extrapolated to
+   *   lengths 2, 4, ... up to longest_extrapolation while E keeps falling
+   *   (no solve).
    * - Where E is convex its one stationary point is the minimiser
    *   whichever way it is reached: the first step starts from the previous
    *   step's forces, slip velocities and sets (eta, v on entry), and a step

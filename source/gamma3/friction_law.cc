@@ -517,6 +517,38 @@ namespace Contact
       return 0.;
     }
 
+    // Along a step that lowered E at full length, longer lengths 2, 4, ...
+    // up to longest_extrapolation while each lowers E further (no solve:
+    // eta and v move together). (new_eta, new_v, new_energy) are the full
+    // step on entry and the longest such step on return.
+    void extrapolate(const NodalLaw       &law,
+                     const Vector<double> &v_free,
+                     const Vector<double> &eta,
+                     const Vector<double> &v,
+                     Vector<double>       &new_eta,
+                     Vector<double>       &new_v,
+                     double               &new_energy)
+    {
+      const Vector<double> full_eta(new_eta), full_v(new_v);
+      Vector<double>       trial_eta(eta.size()), trial_v(v.size());
+      for (double length = 2.; length <= longest_extrapolation; length *= 2)
+        {
+          trial_eta = eta;
+          trial_eta.add(length, full_eta, -length, eta);
+          trial_v = v;
+          trial_v.add(length, full_v, -length, v);
+          double       scale = 0;
+          const double trial_energy =
+            law.energy(v_free, trial_eta, trial_v, scale);
+          if (!(std::isfinite(trial_energy) &&
+                trial_energy < new_energy - law.energy_accuracy * scale))
+            return;
+          new_eta.swap(trial_eta);
+          new_v.swap(trial_v);
+          new_energy = trial_energy;
+        }
+    }
+
     // The responses of the capped model to more force along zhat_b on the
     // slip nodes B that weaken faster than `cap`, and the capacitance matrix
     // they give. With the true slopes the Newton matrix is
@@ -995,6 +1027,14 @@ namespace Contact
     // stick (propose_stick()).
     unsigned int       creeping    = 0;
     const unsigned int creep_limit = 3;
+    // Full capped steps on repeating sets whose residual fell by less than
+    // 30 %: where E is nearly flat along the step (near a fold of the
+    // slip solutions, at slip onset) the model's curvature is far above
+    // E's, and its steps are far too short. After slow_limit such steps in
+    // a row, a full capped step is extrapolated (extrapolate()).
+    unsigned int           slow_steps       = 0;
+    const unsigned int     slow_limit       = 2;
+    constexpr const double slow_contraction = 0.7;
     // The full step with the true slopes from the current iterate, kept
     // while it failed there (see below).
     Vector<double> true_step_eta, true_step_v;
@@ -1104,6 +1144,8 @@ namespace Contact
           }
         else if (length < 1.)
           ++result.damped_steps;
+        else if (capped && slow_steps >= slow_limit)
+          extrapolate(law, v_free(), eta, v, new_eta, new_v, new_energy);
 
         const std::vector<int> previous_sets = set_signature(linearisation);
         eta.swap(new_eta);
@@ -1120,9 +1162,12 @@ namespace Contact
             creeping = 0;
             continue;
           }
+        const bool full_capped_step = capped && sets_repeat && length == 1.;
         creeping =
-          (capped && sets_repeat && length == 1. && residual > last_residual ?
-             creeping + 1 :
+          (full_capped_step && residual > last_residual ? creeping + 1 : 0);
+        slow_steps =
+          (full_capped_step && residual > slow_contraction * last_residual ?
+             slow_steps + 1 :
              0);
         if (creeping >= creep_limit && result.iterations < max_iterations)
           {
