@@ -38,7 +38,8 @@ namespace Contact
    *  friction_residual_tolerance, to the printed digits, and the 3D scene
    *  at h = k = 1/32 with the same stick/slip counts at every printed
    *  step; at 1e-2 the 3D scene at h = k = 1/16 ends on another local
-   *  minimum: doc/algorithm.md.) */
+   *  minimum: doc/algorithm.md, which also gives what the same stop
+   *  changed in the convexification step.) */
   constexpr double start_residual_tolerance = 1e-3;
   /** While the stick/slip sets still change, Newton's model caps the
    *  weakening at this fraction of the convexity limit, where the model is

@@ -1028,13 +1028,14 @@ namespace Contact
     unsigned int       creeping    = 0;
     const unsigned int creep_limit = 3;
     // Full capped steps on repeating sets whose residual fell by less than
-    // 30 %: where E is nearly flat along the step (near a fold of the
-    // slip solutions, at slip onset) the model's curvature is far above
-    // E's, and its steps are far too short. After slow_limit such steps in
-    // a row, a full capped step is extrapolated (extrapolate()).
-    unsigned int           slow_steps       = 0;
-    const unsigned int     slow_limit       = 2;
-    constexpr const double slow_contraction = 0.7;
+    // 30 % (or grew, so creeping steps count too): where E is nearly flat along
+    // the step (near a fold of the slip solutions, at slip onset) the model's
+    // curvature is far above E's, and its steps are far too short. After
+    // slow_limit such steps in a row, a full capped step is extrapolated
+    // (extrapolate()).
+    unsigned int       slow_steps       = 0;
+    const unsigned int slow_limit       = 2;
+    const double       slow_contraction = 0.7;
     // The full step with the true slopes from the current iterate, kept
     // while it failed there (see below).
     Vector<double> true_step_eta, true_step_v;
