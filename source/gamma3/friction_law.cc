@@ -469,6 +469,17 @@ namespace Contact
       return derivative;
     }
 
+    // x = from + t (to - from): the point at length t along the step from
+    // `from` to `to`.
+    void point_along(const Vector<double> &from,
+                     const Vector<double> &to,
+                     const double          t,
+                     Vector<double>       &x)
+    {
+      x = from;
+      x.add(t, to, -t, from);
+    }
+
     // Backtracking on E from (eta, v) towards the Newton iterate
     // (new_eta, new_v), which (eta, v) move to together, v = v_free - D eta
     // being affine in eta, so that a shorter step costs no solve: halved
@@ -507,10 +518,8 @@ namespace Contact
         return 1.;
       for (double length = 0.5; length > shortest_length; length /= 2)
         {
-          new_eta = eta;
-          new_eta.add(length, full_eta, -length, eta);
-          new_v = v;
-          new_v.add(length, full_v, -length, v);
+          point_along(eta, full_eta, length, new_eta);
+          point_along(v, full_v, length, new_v);
           if (sufficient(length))
             return length;
         }
@@ -533,10 +542,8 @@ namespace Contact
       Vector<double>       trial_eta(eta.size()), trial_v(v.size());
       for (double length = 2.; length <= longest_extrapolation; length *= 2)
         {
-          trial_eta = eta;
-          trial_eta.add(length, full_eta, -length, eta);
-          trial_v = v;
-          trial_v.add(length, full_v, -length, v);
+          point_along(eta, full_eta, length, trial_eta);
+          point_along(v, full_v, length, trial_v);
           double       scale = 0;
           const double trial_energy =
             law.energy(v_free, trial_eta, trial_v, scale);
@@ -846,7 +853,6 @@ namespace Contact
                                                new_v,
                                                state,
                                                tolerance);
-      ++result.convexification_steps;
       result.active_set_iterations += tresca.iterations;
       return tresca.converged;
     }
@@ -949,6 +955,7 @@ namespace Contact
     if (nonconvex)
       {
         Vector<double> start_eta, start_v(v);
+        ++result.convexification_steps;
         if (!convexification_step(newton_step,
                                   m,
                                   law,
@@ -977,6 +984,23 @@ namespace Contact
     double residual      = std::numeric_limits<double>::infinity();
     double uncap_below   = 0.1 * largest_bound;
     bool   capped_failed = false, uncapped_failed = false;
+    // Full capped steps on repeating sets whose residual grew: where a
+    // node's true weakening is much steeper than the cap, the capped model
+    // creeps towards its stick state (the residual grows by 10 to 40 % per
+    // step while E falls by little, until the node sticks), so after
+    // creep_limit such steps the nodes that slow down are proposed to
+    // stick (propose_stick()).
+    unsigned int       creeping    = 0;
+    const unsigned int creep_limit = 3;
+    // Full capped steps on repeating sets whose residual fell by less than
+    // 30 % (or grew, so creeping steps count too): where E is nearly flat along
+    // the step (near a fold of the slip solutions, at slip onset) the model's
+    // curvature is far above E's, and its steps are far too short. After
+    // slow_limit such steps in a row, a full capped step is extrapolated
+    // (extrapolate()).
+    unsigned int       slow_steps       = 0;
+    const unsigned int slow_limit       = 2;
+    const double       slow_contraction = 0.7;
     // At a solution of the law: whether it ends the step, i.e. is a
     // certified local minimum, or a saddle that could not be left. A saddle
     // is left along its negative curvature (leave_saddle()) up to
@@ -1010,8 +1034,9 @@ namespace Contact
       result.beyond_convexity_limit = false;
       capped                        = may_uncap;
       capped_failed = uncapped_failed = false;
-      residual      = std::numeric_limits<double>::infinity();
-      linearisation = linearise_law(m, eta, v, law, c, capped);
+      creeping = slow_steps = 0;
+      residual              = std::numeric_limits<double>::infinity();
+      linearisation         = linearise_law(m, eta, v, law, c, capped);
       return false;
     };
     // The start may already solve the step (a sticking step after a
@@ -1019,23 +1044,6 @@ namespace Contact
     const bool solved =
       nonconvex && law_residual(m, linearisation, eta, v, c) <= tolerance &&
       ends_step();
-    // Full capped steps on repeating sets whose residual grew: where a
-    // node's true weakening is much steeper than the cap, the capped model
-    // creeps towards its stick state (the residual grows by 10 to 40 % per
-    // step while E falls by little, until the node sticks), so after
-    // creep_limit such steps the nodes that slow down are proposed to
-    // stick (propose_stick()).
-    unsigned int       creeping    = 0;
-    const unsigned int creep_limit = 3;
-    // Full capped steps on repeating sets whose residual fell by less than
-    // 30 % (or grew, so creeping steps count too): where E is nearly flat along
-    // the step (near a fold of the slip solutions, at slip onset) the model's
-    // curvature is far above E's, and its steps are far too short. After
-    // slow_limit such steps in a row, a full capped step is extrapolated
-    // (extrapolate()).
-    unsigned int       slow_steps       = 0;
-    const unsigned int slow_limit       = 2;
-    const double       slow_contraction = 0.7;
     // The full step with the true slopes from the current iterate, kept
     // while it failed there (see below).
     Vector<double> true_step_eta, true_step_v;
@@ -1046,6 +1054,9 @@ namespace Contact
         new_v        = v;
         double scale = 0, new_energy = energy, length = 1.;
         bool   refused = false;
+        // The model whose step is taken (the longer search below takes the
+        // true one).
+        bool capped_step = capped;
         try
           {
             newton_step(linearisation, new_eta, new_v);
@@ -1095,9 +1106,10 @@ namespace Contact
             // 3D scene at h = k = 1/16 with CG-AMG, 10.7 instead of 11.2
             // solves with K per step, the same solutions:
             // doc/algorithm.md).
-            new_eta = true_step_eta;
-            new_v   = true_step_v;
-            length  = backtrack(law,
+            new_eta     = true_step_eta;
+            new_v       = true_step_v;
+            capped_step = false;
+            length      = backtrack(law,
                                v_free(),
                                eta,
                                v,
@@ -1113,10 +1125,12 @@ namespace Contact
             // No descent along the Newton direction: one convexification
             // step instead, solved like the start (its sets decide where
             // Newton goes on from). Should that rough solution not lower E
-            // (the exact one does), it is solved to the full tolerance.
+            // (the exact one does), it is solved to the full tolerance and
+            // taken (converged, its residual and so its E are finite).
             if (std::isnan(energy))
               energy = law.energy(v_free(), eta, v, scale);
             bool solved_step = false;
+            ++result.convexification_steps;
             for (const double step_tolerance :
                  {start_residual_tolerance, friction_residual_tolerance})
               {
@@ -1145,7 +1159,7 @@ namespace Contact
           }
         else if (length < 1.)
           ++result.damped_steps;
-        else if (capped && slow_steps >= slow_limit)
+        else if (capped_step && slow_steps >= slow_limit)
           extrapolate(law, v_free(), eta, v, new_eta, new_v, new_energy);
 
         const std::vector<int> previous_sets = set_signature(linearisation);
@@ -1160,10 +1174,10 @@ namespace Contact
           {
             if (ends_step())
               break;
-            creeping = 0;
             continue;
           }
-        const bool full_capped_step = capped && sets_repeat && length == 1.;
+        const bool full_capped_step =
+          capped_step && sets_repeat && length == 1.;
         creeping =
           (full_capped_step && residual > last_residual ? creeping + 1 : 0);
         slow_steps =
@@ -1185,13 +1199,13 @@ namespace Contact
                               eta,
                               v))
               {
+                slow_steps    = 0;
                 linearisation = linearise_law(m, eta, v, law, c, capped);
                 residual      = law_residual(m, linearisation, eta, v, c);
                 continue;
               }
           }
-        if (may_uncap && capped && sets_repeat && length == 1. &&
-            residual < uncap_below)
+        if (may_uncap && full_capped_step && residual < uncap_below)
           {
             capped        = false;
             linearisation = linearise_law(m, eta, v, law, c, capped);
