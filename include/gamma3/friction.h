@@ -317,9 +317,10 @@ namespace Contact
     unsigned int damped_steps = 0;
     /** Convexification steps (a Tresca problem with the bounds of the
      *  current slip rates): the start where E may be nonconvex and those
-     *  taken where the Newton step did not lower E (one each, also where
-     *  its Tresca problem was solved twice), and the active set iterations
-     *  they took. */
+     *  tried where no Newton step lowered E or the solver refused the
+     *  Newton matrix (one each, also where its Tresca problem was solved
+     *  twice or did not converge), and the active set iterations they
+     *  took. */
     unsigned int convexification_steps = 0;
     unsigned int active_set_iterations = 0;
     /** Converged to a solution of the law that is a local minimum of E:

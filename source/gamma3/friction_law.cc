@@ -1006,7 +1006,8 @@ namespace Contact
     // is left along its negative curvature (leave_saddle()) up to
     // max_saddle_exits times per step; E is then below the saddle's, which
     // no later step returns to (every one lowers E), and the method goes
-    // on from there with the capped model.
+    // on from there with the capped model (where the law has a cap), its
+    // counters of slow and creeping steps reset.
     const unsigned int max_saddle_exits = 3;
     const auto         ends_step        = [&]() {
       const Curvature verdict =
