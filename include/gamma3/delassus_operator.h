@@ -121,6 +121,8 @@ namespace Contact
       bool                                      velocity_form = false;
       std::vector<unsigned int>                 unknowns;
       std::unique_ptr<LAPACKFullMatrix<double>> factor;
+      // Whether the factor is Cholesky's (else LU's).
+      bool cholesky = false;
     };
     mutable FactorisedBlock last_factorised_block;
     /** W v_free of the velocity form, for the last v_free. */
