@@ -14,11 +14,15 @@ convexification iterations per step, the steps that ended beyond the
 convexity limit and those the convexification took over (Newton's summary
 line), active set iterations per step, solves
 with K per step, CG iterations per step, time per step, its ratio to one
-substitution with the factor of K, wall time and peak memory. Everything is
-measured in this run; the table goes to --out as Markdown.
+substitution with the factor of K, wall time and peak memory. Every run is
+repeated REPEATS times in a row: the counts must agree; times and peak
+memory are the medians of the repeats (the ratio also with its smallest and
+largest value).
+Everything is measured in this run; the table goes to --out as Markdown.
 """
 import os
 import re
+import statistics
 import sys
 import tempfile
 
@@ -34,6 +38,9 @@ SCENES = [
     ("3D, h = k = 1/16, CG-AMG", "barboteu2015_3d.prm",
      ["Solver/Linear solver=CG-AMG"], "constraints"),
 ]
+
+# Runs of each configuration; the times printed are their median.
+REPEATS = 3
 
 # The program's default (nothing set) and the paper's method.
 METHODS = (("default (Newton)", []),
@@ -91,6 +98,24 @@ def run_scene(contact, scene, sets, path, method_sets, directory, reference_blas
     }
 
 
+def repeated(*arguments):
+    """run_scene REPEATS times: the counts of the first run (all must give
+    the same), the median of the times, the ratio's range."""
+    runs = [run_scene(*arguments) for _ in range(REPEATS)]
+    timed = ("per step", "ratio", "wall", "memory")
+    for x in runs[1:]:
+        for key, value in x.items():
+            if key not in timed and value != runs[0][key]:
+                sys.exit(f"{arguments[1]} {arguments[2]} on the {arguments[3]} path "
+                         f"with {arguments[4] or 'the default method'}: the repeats "
+                         f"differ in '{key}': {value} against {runs[0][key]}")
+    result = dict(runs[0])
+    for key in timed:
+        result[key] = statistics.median(x[key] for x in runs)
+    result["ratio range"] = (min(x["ratio"] for x in runs), max(x["ratio"] for x in runs))
+    return result
+
+
 def main():
     contact, out, lines = start("friction_solver.md", [
         "scene", "path", "BLAS", "friction method", "unknowns",
@@ -98,7 +123,7 @@ def main():
         "steps beyond the convexity limit", "steps taken over",
         "convexification it./step", "active set it./step",
         "solves with K/step", "CG it./step", "per step [ms]",
-        "step / substitution (or solve)", "wall [s]", "peak memory [MB]"])
+        "step / substitution (or solve): median (range)", "wall [s]", "peak memory [MB]"])
     lines.insert(1, f"BLAS: {blas_in_use()} (reference: {REFERENCE_BLAS})")
     print(lines[1])
     notes = []
@@ -108,16 +133,18 @@ def main():
             for reference_blas in blas_choices:
                 r = {}
                 for method, method_sets in METHODS:
-                    x = r[method] = run_scene(
+                    x = r[method] = repeated(
                         contact, scene, sets, path, method_sets,
                         f"{tmp}/{len(lines)}", reference_blas)
+                    low, high = x["ratio range"]
                     line = (f"| {name} | {path} | {'reference' if reference_blas else 'optimised'} "
                             f"| {method} | {x['unknowns']:.0f} | {x['gamma3']:.0f} "
                             f"| {x['steps']:.0f} | {x['newton']:.2f} "
                             f"| {x['beyond']:.0f} | {x['taken over']:.0f} "
                             f"| {x['convexification']:.1f} | {x['active set']:.1f} "
                             f"| {x['solves']:.1f} | {x['cg']:.0f} | {x['per step']:.1f} "
-                            f"| {x['ratio']:.2f} | {x['wall']:.2f} | {x['memory']:.0f} |")
+                            f"| {x['ratio']:.2f} ({low:.2f} to {high:.2f}) "
+                            f"| {x['wall']:.2f} | {x['memory']:.0f} |")
                     lines.append(line)
                     print(line, flush=True)
                 notes.append(
