@@ -1,23 +1,22 @@
 #!/usr/bin/env python3
 """The friction solve on Gamma_3: builds the program in Release and runs the
-2D default scene and the 3D scene (prm/barboteu2015_3d.prm at h = k = 1/16
-and 1/32) on the Delassus path, and the 3D scene at 1/16 on the
+2D default scene and the 3D scene (prm/barboteu2015_3d.prm at h = k =
+1/16 and 1/32) on the Delassus path, and the 3D scene at 1/16 on the
 constraints path with the direct solver and with CG-AMG, each with the
-default friction method (no 'Solver/Friction method' set: Newton) and with
-'Solver/Friction method = convexification', and the Delassus runs once more
-with the reference BLAS/LAPACK instead of the optimised one.
+default friction method (no 'Solver/Friction method' set: Newton) and
+with 'Solver/Friction method = convexification', and the Delassus runs
+once more with the reference BLAS/LAPACK instead of the optimised one.
 
     python3 bench/friction_solver.py [--out bench/friction_solver.md]
 
 Printed for every run: unknowns, free nodes on Gamma_3, steps, Newton and
 convexification iterations per step, the steps that ended beyond the
 convexity limit and those the convexification took over (Newton's summary
-line), active set iterations per step, solves
-with K per step, CG iterations per step, time per step, its ratio to one
-substitution with the factor of K, wall time and peak memory. Every run is
-repeated REPEATS times in a row: the counts must agree; times and peak
-memory are the medians of the repeats (the ratio also with its smallest and
-largest value).
+line), active set iterations per step, solves with K per step, CG iterations
+per step, time per step, its ratio to one substitution with the factor of K
+(or solve with K), wall time and peak memory. Every run is repeated REPEATS
+times in a row: the counts must agree; times and peak memory are the medians
+of the repeats (the ratio also with its smallest and largest value).
 Everything is measured in this run; the table goes to --out as Markdown.
 """
 import os
