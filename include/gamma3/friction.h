@@ -248,11 +248,6 @@ namespace Contact
    *  definite: one Cholesky factorisation of its symmetric part. */
   Curvature definiteness(LAPACKFullMatrix<double> matrix);
 
-  /** v_free, formed when first asked for: on the constraints path it costs
-   *  a solve with K that a step solved by its start or its first Newton
-   *  step never needs (e.g. a sticking step after a sticking one). */
-  using FreeVelocity = std::function<const Vector<double> &()>;
-
   /** The method with the linear algebra supplied by the caller (e.g. on the
    *  whole body instead of on D). The first sets are those of eta and the
    *  velocity v = velocity(eta); without a velocity function (an empty
@@ -275,8 +270,7 @@ namespace Contact
    * g_p(s) = m_p S mu(s) at slip rate s, its derivative, and the energy of
    * a step on Gamma_3 (the discrete counterpart of (3.8)),
    *   E(v) = 1/2 (v - v_free)^T D^{-1} (v - v_free) + sum_p m_p j(|v_p|),
-   * evaluated as 1/2 eta . (v_free - v) + sum_p m_p j(|v_p|) for
-   * v = v_free - D eta.
+   * which is 1/2 eta^T D eta + sum_p m_p j(|v_p|) for v = v_free - D eta.
    */
   struct NodalLaw
   {
@@ -296,14 +290,21 @@ namespace Contact
      *  line search accepts a step whose E is above the last one by less
      *  than this times the size of E's terms. */
     double energy_accuracy = energy_round_off;
+    /** The size of the body's velocities in the step (max |w_{n-1}|): the
+     *  solves' error in v, and so in E, is relative to it. */
+    double velocity_scale = 0;
 
     /** Whether E may be nonconvex: the steepest weakening of the law is not
      *  below weakening_cap_fraction times the convexity limit. */
     bool   may_be_nonconvex() const;
     double bound(const unsigned int p, const double s) const;
     double slope(const unsigned int p, const double s) const;
-    /** E, and in scale the sum of its terms' sizes (for round-off). */
-    double energy(const Vector<double> &v_free,
+    /** E at (eta, v) minus 1/2 eta_0^T D eta_0 of a reference iterate
+     *  (eta_0, v_0): 1/2 (eta + eta_0) . (v_0 - v) + sum_p m_p j(|v_p|),
+     *  for iterates with v = v_free - D eta (no v_free needed). In scale
+     *  the size of its error (round-off and the solves' accuracy). */
+    double energy(const Vector<double> &reference_eta,
+                  const Vector<double> &reference_v,
                   const Vector<double> &eta,
                   const Vector<double> &v,
                   double               &scale) const;
@@ -391,8 +392,10 @@ namespace Contact
    *   (no solve).
    * - Where E is convex its one stationary point is the minimiser
    *   whichever way it is reached: the first step starts from the previous
-   *   step's forces, slip velocities and sets (eta, v on entry), and a step
-   *   that converges at once never asks for v_free. Where E may be
+   *   step's forces, slip velocities and sets (eta, v on entry), which
+   *   need not solve this step's equations; E is measured from the first
+   *   iterate that does (NodalLaw::energy()), so no step forms v_free,
+   *   which on the constraints path would cost a solve. Where E may be
    *   nonconvex (law.may_be_nonconvex()) the start selects the solution:
    *   the first iterate is then the convexification's, the Tresca problem
    *   with the bounds of the previous slip rates (a descent from the
@@ -422,7 +425,6 @@ namespace Contact
                         const CurvatureTest    &curvature,
                         const unsigned int      n_components,
                         const NodalLaw         &law,
-                        const FreeVelocity     &v_free,
                         const Vector<double>   &c,
                         const unsigned int      max_iterations,
                         const unsigned int      max_active_set_iterations,

@@ -368,8 +368,10 @@ namespace Contact
     std::pair<double, bool>
                 largest_weighted_delassus_eigenvalue(const double tolerance);
     void        solve_friction_problem(const StepLabel &label,
+                                       const double     velocity_scale,
                                        StepStatistics  &statistics);
-    std::string solve_by_newton(StepStatistics &statistics);
+    std::string solve_by_newton(const double    velocity_scale,
+                                StepStatistics &statistics);
     void        solve_by_convexification(const StepLabel &label,
                                          StepStatistics  &statistics);
     std::pair<TrescaVelocity, TrescaNewtonStep> path_operators();

@@ -426,24 +426,54 @@ namespace Contact
     return weights[p] * law.bound_derivative(s);
   }
 
-  double NodalLaw::energy(const Vector<double> &v_free,
+  // For two iterates with v = v_free - D eta (D symmetric),
+  //   eta^T D eta - eta_0^T D eta_0 = (eta + eta_0) . D (eta - eta_0)
+  //                                 = (eta + eta_0) . (v_0 - v),
+  // so E - eta_0^T D eta_0 / 2, which orders the iterates as E does, needs
+  // no v_free (which on the constraints path costs a solve with K). A
+  // solve's error in v is relative to the body's velocities, and the
+  // quadratic term pairs them with the mean forces: the sum of those
+  // products is the scale of its error.
+  double NodalLaw::energy(const Vector<double> &reference_eta,
+                          const Vector<double> &reference_v,
                           const Vector<double> &eta,
                           const Vector<double> &v,
                           double               &scale) const
   {
     const unsigned int m         = v.size() / weights.size();
-    double             quadratic = 0, friction = 0;
+    double             quadratic = 0, friction = 0, forces = 0;
+    double             speed = velocity_scale;
     for (unsigned int r = 0; r < v.size(); ++r)
-      quadratic += 0.5 * eta[r] * (v_free[r] - v[r]);
+      {
+        const double mean_force = 0.5 * (eta[r] + reference_eta[r]);
+        quadratic += mean_force * (reference_v[r] - v[r]);
+        forces += std::abs(mean_force);
+        speed = std::max({speed, std::abs(v[r]), std::abs(reference_v[r])});
+      }
     for (unsigned int p = 0; p < weights.size(); ++p)
       friction += weights[p] * law.potential(node_norm(v, p, m));
-    scale = std::abs(quadratic) + std::abs(friction);
+    scale = std::abs(quadratic) + std::abs(friction) + forces * speed;
     return quadratic + friction;
   }
 
 
   namespace
   {
+    // E of the step's iterates, measured from a reference iterate
+    // (NodalLaw::energy()).
+    struct StepEnergy
+    {
+      const NodalLaw &law;
+      Vector<double>  reference_eta, reference_v;
+
+      double operator()(const Vector<double> &eta,
+                        const Vector<double> &v,
+                        double               &scale) const
+      {
+        return law.energy(reference_eta, reference_v, eta, v, scale);
+      }
+    };
+
     // The directional derivative E'(v; dv) of E at an iterate (eta, v) with
     // v = v_free - D eta, whose quadratic term has the gradient
     // D^{-1} (v - v_free) = -eta: where v_p != 0 the potential contributes
@@ -491,7 +521,7 @@ namespace Contact
     // (law.energy_accuracy; near the solution the decrease is below it).
     // Returns the step length, 0 if none was accepted.
     double backtrack(const NodalLaw       &law,
-                     const Vector<double> &v_free,
+                     const StepEnergy     &energy_of,
                      const Vector<double> &eta,
                      const Vector<double> &v,
                      const double          energy,
@@ -508,7 +538,7 @@ namespace Contact
       double     scale = 0;
       const auto full_eta(new_eta), full_v(new_v);
       const auto sufficient = [&](const double length) {
-        new_energy = law.energy(v_free, new_eta, new_v, scale);
+        new_energy = energy_of(new_eta, new_v, scale);
         // (A step whose solve broke down gives no finite E to compare.)
         return std::isfinite(new_energy) &&
                new_energy <= energy + sufficient_decrease * length * descent +
@@ -531,7 +561,7 @@ namespace Contact
     // eta and v move together). (new_eta, new_v, new_energy) are the full
     // step on entry and the longest such step on return.
     void extrapolate(const NodalLaw       &law,
-                     const Vector<double> &v_free,
+                     const StepEnergy     &energy_of,
                      const Vector<double> &eta,
                      const Vector<double> &v,
                      Vector<double>       &new_eta,
@@ -544,9 +574,8 @@ namespace Contact
         {
           point_along(eta, full_eta, length, trial_eta);
           point_along(v, full_v, length, trial_v);
-          double       scale = 0;
-          const double trial_energy =
-            law.energy(v_free, trial_eta, trial_v, scale);
+          double       scale        = 0;
+          const double trial_energy = energy_of(trial_eta, trial_v, scale);
           if (!(std::isfinite(trial_energy) &&
                 trial_energy < new_energy - law.energy_accuracy * scale))
             return;
@@ -686,8 +715,7 @@ namespace Contact
     // The length t in +-reach 2^{-k}, k = 0, ..., 9, with the lowest
     // E(eta + t deta, v + t dv), if that is below `energy` (then lowered to
     // it) beyond round-off; 0 otherwise.
-    double lowest_energy_along(const NodalLaw       &law,
-                               const Vector<double> &v_free,
+    double lowest_energy_along(const StepEnergy     &energy_of,
                                const Vector<double> &eta,
                                const Vector<double> &v,
                                const Vector<double> &direction_eta,
@@ -704,8 +732,7 @@ namespace Contact
             trial_eta.add(sign * length, direction_eta);
             trial_v = v;
             trial_v.add(sign * length, direction_v);
-            const double trial_energy =
-              law.energy(v_free, trial_eta, trial_v, scale);
+            const double trial_energy = energy_of(trial_eta, trial_v, scale);
             if (trial_energy < energy - energy_round_off * scale)
               {
                 energy      = trial_energy;
@@ -730,7 +757,7 @@ namespace Contact
     bool leave_saddle(const TrescaNewtonStep               &newton_step,
                       const unsigned int                    m,
                       const NodalLaw                       &law,
-                      const Vector<double>                 &v_free,
+                      const StepEnergy                     &energy_of,
                       const std::vector<NodeLinearisation> &linearisation,
                       double                               &energy,
                       Vector<double>                       &eta,
@@ -758,8 +785,7 @@ namespace Contact
         largest_change = std::max(largest_change, node_norm(direction_v, p, m));
       if (!(largest_change > 0))
         return false;
-      const double length = lowest_energy_along(law,
-                                                v_free,
+      const double length = lowest_energy_along(energy_of,
                                                 eta,
                                                 v,
                                                 direction_eta,
@@ -864,7 +890,7 @@ namespace Contact
     bool propose_stick(const TrescaNewtonStep        &newton_step,
                        const unsigned int             m,
                        const NodalLaw                &law,
-                       const Vector<double>          &v_free,
+                       const StepEnergy              &energy_of,
                        const Vector<double>          &previous_v,
                        std::vector<NodeLinearisation> proposal,
                        double                        &energy,
@@ -895,7 +921,7 @@ namespace Contact
           return false;
         }
       double       scale        = 0;
-      const double trial_energy = law.energy(v_free, trial_eta, trial_v, scale);
+      const double trial_energy = energy_of(trial_eta, trial_v, scale);
       if (!(trial_energy < energy - energy_round_off * scale))
         return false;
       eta.swap(trial_eta);
@@ -925,7 +951,6 @@ namespace Contact
                         const CurvatureTest    &curvature,
                         const unsigned int      m,
                         const NodalLaw         &law,
-                        const FreeVelocity     &v_free,
                         const Vector<double>   &c,
                         const unsigned int      max_iterations,
                         const unsigned int      max_active_set_iterations,
@@ -949,8 +974,19 @@ namespace Contact
     // (friction.h); elsewhere the first step is taken from the
     // linearisation at the previous step's state. The energy is only
     // formed when a line search needs it, so that a step solved by its
-    // start or its first full Newton step never asks for v_free.
-    double     energy    = std::numeric_limits<double>::quiet_NaN();
+    // start or its first full Newton step never forms it. It is measured
+    // from the first iterate where it is needed (NodalLaw::energy()), a
+    // solution of the step's equations with v = v_free - D eta: the
+    // start's where E may be nonconvex, a Newton step's otherwise.
+    double     energy = std::numeric_limits<double>::quiet_NaN();
+    StepEnergy energy_of{law, {}, {}};
+    const auto energy_from = [&](const Vector<double> &reference_eta,
+                                 const Vector<double> &reference_v) {
+      energy_of.reference_eta = reference_eta;
+      energy_of.reference_v   = reference_v;
+      double scale            = 0;
+      return energy_of(reference_eta, reference_v, scale);
+    };
     const bool nonconvex = law.may_be_nonconvex();
     if (nonconvex)
       {
@@ -1015,15 +1051,14 @@ namespace Contact
       if (verdict != Curvature::not_positive ||
           result.saddle_exits == max_saddle_exits)
         return true;
-      double scale = 0;
       if (std::isnan(energy))
-        energy = law.energy(v_free(), eta, v, scale);
+        energy = energy_from(eta, v);
       // The true slopes: the iterate may have converged with the capped
       // model, whose slopes are all at the cap.
       if (!leave_saddle(newton_step,
                         m,
                         law,
-                        v_free(),
+                        energy_of,
                         linearise_law(m, eta, v, law, c, false),
                         energy,
                         eta,
@@ -1072,14 +1107,14 @@ namespace Contact
         if (!refused && (result.iterations > 1 || nonconvex))
           {
             if (std::isnan(energy))
-              energy = law.energy(v_free(), eta, v, scale);
+              energy = energy_from(eta, v);
             if (!capped)
               {
                 true_step_eta = new_eta;
                 true_step_v   = new_v;
               }
             length = backtrack(
-              law, v_free(), eta, v, energy, new_eta, new_v, new_energy);
+              law, energy_of, eta, v, energy, new_eta, new_v, new_energy);
           }
         if (length == 0. && !refused)
           {
@@ -1111,7 +1146,7 @@ namespace Contact
             new_v       = true_step_v;
             capped_step = false;
             length      = backtrack(law,
-                               v_free(),
+                               energy_of,
                                eta,
                                v,
                                energy,
@@ -1128,8 +1163,13 @@ namespace Contact
             // Newton goes on from). Should that rough solution not lower E
             // (the exact one does), it is solved to the full tolerance and
             // taken (converged, its residual and so its E are finite).
-            if (std::isnan(energy))
-              energy = law.energy(v_free(), eta, v, scale);
+            // Where the solver refused the first Newton step of a convex
+            // problem, the iterate is still the previous step's state,
+            // which does not solve this step's equations: E is not known
+            // there, and the rough solution is taken.
+            const bool energy_known = nonconvex || result.iterations > 1;
+            if (std::isnan(energy) && energy_known)
+              energy = energy_from(eta, v);
             bool solved_step = false;
             ++result.convexification_steps;
             for (const double step_tolerance :
@@ -1148,7 +1188,12 @@ namespace Contact
                                                    step_tolerance);
                 if (!solved_step)
                   break;
-                new_energy = law.energy(v_free(), new_eta, new_v, scale);
+                if (!energy_known)
+                  {
+                    new_energy = energy_from(new_eta, new_v);
+                    break;
+                  }
+                new_energy = energy_of(new_eta, new_v, scale);
                 if (new_energy <= energy + law.energy_accuracy * scale)
                   break;
               }
@@ -1161,7 +1206,7 @@ namespace Contact
         else if (length < 1.)
           ++result.damped_steps;
         else if (capped_step && slow_steps >= slow_limit)
-          extrapolate(law, v_free(), eta, v, new_eta, new_v, new_energy);
+          extrapolate(law, energy_of, eta, v, new_eta, new_v, new_energy);
 
         const std::vector<int> previous_sets = set_signature(linearisation);
         eta.swap(new_eta);
@@ -1193,7 +1238,7 @@ namespace Contact
             if (propose_stick(newton_step,
                               m,
                               law,
-                              v_free(),
+                              energy_of,
                               new_v,
                               linearisation,
                               energy,

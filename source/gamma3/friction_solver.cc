@@ -323,7 +323,7 @@ namespace Contact
     last_law_residual_allowance = 0;
     path->begin_step(step_rhs, velocity);
     if (!friction_law.is_frictionless() && !gamma3.nodes.empty())
-      solve_friction_problem(label, statistics);
+      solve_friction_problem(label, velocity.linfty_norm(), statistics);
     if (reversed_friction_force)
       current.friction_force *= -1.;
     path->final_velocity(current.friction_force, velocity);
@@ -346,7 +346,8 @@ namespace Contact
   // is one Tresca problem either way.
   template <int dim>
   void FrictionSolver<dim>::solve_friction_problem(const StepLabel &label,
-                                                   StepStatistics  &statistics)
+                                                   const double velocity_scale,
+                                                   StepStatistics &statistics)
   {
     const bool newton = parameters.solver.friction_method ==
                           SolverParameters::FrictionMethod::newton &&
@@ -356,7 +357,8 @@ namespace Contact
         solve_by_convexification(label, statistics);
         return;
       }
-    const std::string newton_failure = solve_by_newton(statistics);
+    const std::string newton_failure =
+      solve_by_newton(velocity_scale, statistics);
     if (newton_failure.empty())
       return;
     try
@@ -395,7 +397,8 @@ namespace Contact
   // Far from the solution its model caps the weakening at 0.9 times the
   // convexity limit, where the model is still convex.
   template <int dim>
-  std::string FrictionSolver<dim>::solve_by_newton(StepStatistics &statistics)
+  std::string FrictionSolver<dim>::solve_by_newton(const double velocity_scale,
+                                                   StepStatistics &statistics)
   {
     Vector<double> eta(current.friction_force), v(current.slip_velocity);
     std::vector<NodeState> state;
@@ -405,6 +408,7 @@ namespace Contact
                  weakening_cap_fraction * convexity_limit};
     law.convexity_limit               = convexity_limit;
     law.energy_accuracy               = path->energy_accuracy();
+    law.velocity_scale                = velocity_scale;
     const FrictionNewtonResult result = solve_friction_newton(
       newton_step,
       [this](const std::vector<NodeLinearisation> &linearisation) {
@@ -412,7 +416,6 @@ namespace Contact
       },
       dim - 1,
       law,
-      [this]() -> const Vector<double> & { return path->free_slip_velocity(); },
       active_set_parameter,
       parameters.solver.max_newton_iterations,
       parameters.solver.max_active_set_iterations,

@@ -11,7 +11,10 @@
      another solution than the convexification's (both are printed);
    - a Newton iteration that leaves out the derivative of the bound is the
      convexification's step: it needs more iterations (the check that the
-     derivative is in the Jacobian). */
+     derivative is in the Jacobian);
+   - the step's energy E measured from a reference iterate, without v_free,
+     differs between iterates as E does (and not for a velocity that is
+     not v_free - D eta). */
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
@@ -135,7 +138,6 @@ FrictionNewtonResult solve_from_rest(const DelassusOperator   &delassus,
     },
     m,
     law,
-    [&]() -> const Vector<double> & { return v_free; },
     c,
     200,
     500,
@@ -335,8 +337,71 @@ void check_factor_reuse()
             << std::endl;
 }
 
+// E measured from a reference iterate (NodalLaw::energy(), no v_free)
+// orders iterates as E itself does: for iterates with v = v_free - D eta
+// its differences are those of 1/2 eta . (v_free - v) + sum_p j(|v_p|).
+// A velocity that is not v_free - D eta breaks the identity, which the
+// check must see.
+void check_energy_without_v_free(const unsigned int m)
+{
+  const unsigned int       n = 12;
+  const FullMatrix<double> D = make_delassus(n, m);
+  const Law                law{0.3, 1., 0.5, 20.};
+  const FrictionLaw        friction_law = make_friction_law(law);
+  Vector<double>           weights(n);
+  weights = 1.;
+  NodalLaw nodal_law{friction_law, weights};
+
+  Vector<double>              v_free(n * m);
+  std::vector<Vector<double>> eta(3, Vector<double>(n * m)),
+    v(3, Vector<double>(n * m));
+  for (unsigned int r = 0; r < n * m; ++r)
+    {
+      v_free[r] = std::sin(1. + 2. * r);
+      for (unsigned int k = 0; k < 3; ++k)
+        eta[k][r] = 0.3 * std::cos(0.7 * r + k);
+    }
+  const auto with_v_free = [&](const Vector<double> &force,
+                               const Vector<double> &velocity) {
+    double value = 0;
+    for (unsigned int r = 0; r < n * m; ++r)
+      value += 0.5 * force[r] * (v_free[r] - velocity[r]);
+    for (unsigned int p = 0; p < n; ++p)
+      value += friction_law.potential(node_norm(velocity, p, m));
+    return value;
+  };
+  const auto largest_mismatch = [&]() {
+    double mismatch = 0, scale = 0;
+    for (unsigned int k = 1; k < 3; ++k)
+      {
+        const double difference =
+          nodal_law.energy(eta[0], v[0], eta[k], v[k], scale) -
+          nodal_law.energy(eta[0], v[0], eta[0], v[0], scale);
+        mismatch = std::max(mismatch,
+                            std::abs(difference - (with_v_free(eta[k], v[k]) -
+                                                   with_v_free(eta[0], v[0]))));
+      }
+    return mismatch;
+  };
+  for (unsigned int k = 0; k < 3; ++k)
+    {
+      D.vmult(v[k], eta[k]);
+      v[k].sadd(-1., 1., v_free);
+    }
+  const double mismatch = largest_mismatch();
+  v[2][0] += 1e-3;
+  const double broken = largest_mismatch();
+  std::cout << "E from a reference iterate (m = " << m
+            << "): differences as with v_free: "
+            << (mismatch < 1e-13 ? "yes" : "no")
+            << "; with a velocity that is not v_free - D eta: "
+            << (broken > 1e-5 ? "differ" : "agree") << std::endl;
+}
+
 int main()
 {
+  check_energy_without_v_free(1);
+  check_energy_without_v_free(2);
   check_factor_reuse();
   compare_forms(1);
   compare_forms(2);

@@ -171,7 +171,6 @@ namespace
           },
           1,
           nodal_law,
-          [&]() -> const Vector<double> & { return v_free; },
           c,
           200,
           500,
