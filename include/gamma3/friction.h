@@ -288,7 +288,7 @@ namespace Contact
     double convexity_limit = 0;
     /** The relative accuracy of E (ContactPath::energy_accuracy()): a
      *  line search accepts a step whose E is above the last one by less
-     *  than this times the size of E's terms. */
+     *  than this times the size of E's error (energy()). */
     double energy_accuracy = energy_round_off;
     /** The size of the body's velocities in the step (max |w_{n-1}|): the
      *  solves' error in v, and so in E, is relative to it. */
@@ -394,8 +394,11 @@ namespace Contact
    *   whichever way it is reached: the first step starts from the previous
    *   step's forces, slip velocities and sets (eta, v on entry), which
    *   need not solve this step's equations; E is measured from the first
-   *   iterate that does (NodalLaw::energy()), so no step forms v_free,
-   *   which on the constraints path would cost a solve. Where E may be
+   *   iterate that does (NodalLaw::energy()), so the method never forms
+   *   v_free, which on the constraints path would cost a solve (where the
+   *   solver refuses the first step of a convex problem, the
+   *   convexification step that replaces it is taken without a
+   *   comparison, and E is measured from its result). Where E may be
    *   nonconvex (law.may_be_nonconvex()) the start selects the solution:
    *   the first iterate is then the convexification's, the Tresca problem
    *   with the bounds of the previous slip rates (a descent from the

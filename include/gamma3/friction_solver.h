@@ -241,8 +241,9 @@ namespace Contact
   /**
    * The linear algebra of one path between the body and Gamma_3
    * (contact_paths.cc). A step calls begin_step() first, then the methods
-   * on Gamma_3 call free_slip_velocity(), velocity_of_force() and
-   * newton_step(), and velocity() gives w_n for the final forces.
+   * on Gamma_3 call newton_step() (the convexification also
+   * free_slip_velocity() and velocity_of_force()), and velocity() gives
+   * w_n for the final forces.
    */
   template <int dim>
   class ContactPath

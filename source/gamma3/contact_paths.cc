@@ -505,8 +505,8 @@ namespace Contact
         v_free.reinit(0);
       }
 
-      // Formed only when asked for: a step whose first Newton step already
-      // solves the friction problem (every sticking step) does without it.
+      // Formed only when asked for, by the convexification (Newton's method
+      // measures E without it).
       const Vector<double> &free_slip_velocity() override
       {
         if (v_free.size() == 0)
@@ -518,9 +518,9 @@ namespace Contact
         return v_free;
       }
 
-      // The last step's final forces (the start of Newton's method, whose
-      // energy it compares with where E may be nonconvex) cost no solve
-      // beyond v_free: D eta is known from that step.
+      // The last step's final forces (where the convexification starts)
+      // cost no solve beyond v_free where that step formed its v_free: D eta
+      // is then known from it.
       void velocity_of_force(const Vector<double> &eta,
                              Vector<double>       &v) override
       {

@@ -440,6 +440,8 @@ namespace Contact
                           const Vector<double> &v,
                           double               &scale) const
   {
+    AssertDimension(reference_eta.size(), eta.size());
+    AssertDimension(reference_v.size(), v.size());
     const unsigned int m         = v.size() / weights.size();
     double             quadratic = 0, friction = 0, forces = 0;
     double             speed = velocity_scale;
@@ -733,7 +735,7 @@ namespace Contact
             trial_v = v;
             trial_v.add(sign * length, direction_v);
             const double trial_energy = energy_of(trial_eta, trial_v, scale);
-            if (trial_energy < energy - energy_round_off * scale)
+            if (trial_energy < energy - energy_of.law.energy_accuracy * scale)
               {
                 energy      = trial_energy;
                 best_length = sign * length;
@@ -922,7 +924,7 @@ namespace Contact
         }
       double       scale        = 0;
       const double trial_energy = energy_of(trial_eta, trial_v, scale);
-      if (!(trial_energy < energy - energy_round_off * scale))
+      if (!(trial_energy < energy - law.energy_accuracy * scale))
         return false;
       eta.swap(trial_eta);
       v.swap(trial_v);
@@ -980,8 +982,12 @@ namespace Contact
     // start's where E may be nonconvex, a Newton step's otherwise.
     double     energy = std::numeric_limits<double>::quiet_NaN();
     StepEnergy energy_of{law, {}, {}};
+    // Whether (eta, v) solve the step's equations: not the previous step's
+    // state on entry.
+    bool       solves_step = false;
     const auto energy_from = [&](const Vector<double> &reference_eta,
                                  const Vector<double> &reference_v) {
+      Assert(std::isnan(energy), ExcInternalError());
       energy_of.reference_eta = reference_eta;
       energy_of.reference_v   = reference_v;
       double scale            = 0;
@@ -1009,6 +1015,7 @@ namespace Contact
           }
         eta.swap(start_eta);
         v.swap(start_v);
+        solves_step = true;
       }
     auto           linearisation = linearise_law(m, eta, v, law, c, capped);
     Vector<double> new_eta(eta), new_v(v);
@@ -1052,7 +1059,10 @@ namespace Contact
           result.saddle_exits == max_saddle_exits)
         return true;
       if (std::isnan(energy))
-        energy = energy_from(eta, v);
+        {
+          Assert(solves_step, ExcInternalError());
+          energy = energy_from(eta, v);
+        }
       // The true slopes: the iterate may have converged with the capped
       // model, whose slopes are all at the cap.
       if (!leave_saddle(newton_step,
@@ -1107,7 +1117,10 @@ namespace Contact
         if (!refused && (result.iterations > 1 || nonconvex))
           {
             if (std::isnan(energy))
-              energy = energy_from(eta, v);
+              {
+                Assert(solves_step, ExcInternalError());
+                energy = energy_from(eta, v);
+              }
             if (!capped)
               {
                 true_step_eta = new_eta;
@@ -1167,8 +1180,7 @@ namespace Contact
             // problem, the iterate is still the previous step's state,
             // which does not solve this step's equations: E is not known
             // there, and the rough solution is taken.
-            const bool energy_known = nonconvex || result.iterations > 1;
-            if (std::isnan(energy) && energy_known)
+            if (std::isnan(energy) && solves_step)
               energy = energy_from(eta, v);
             bool solved_step = false;
             ++result.convexification_steps;
@@ -1188,7 +1200,7 @@ namespace Contact
                                                    step_tolerance);
                 if (!solved_step)
                   break;
-                if (!energy_known)
+                if (!solves_step)
                   {
                     new_energy = energy_from(new_eta, new_v);
                     break;
@@ -1211,6 +1223,7 @@ namespace Contact
         const std::vector<int> previous_sets = set_signature(linearisation);
         eta.swap(new_eta);
         v.swap(new_v);
+        solves_step                = true;
         energy                     = new_energy;
         linearisation              = linearise_law(m, eta, v, law, c, capped);
         const double last_residual = residual;
