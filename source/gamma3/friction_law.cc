@@ -993,6 +993,11 @@ namespace Contact
       double scale            = 0;
       return energy_of(reference_eta, reference_v, scale);
     };
+    // E at the current iterate, where it is first needed.
+    const auto energy_here = [&]() {
+      Assert(solves_step, ExcInternalError());
+      return energy_from(eta, v);
+    };
     const bool nonconvex = law.may_be_nonconvex();
     if (nonconvex)
       {
@@ -1059,10 +1064,7 @@ namespace Contact
           result.saddle_exits == max_saddle_exits)
         return true;
       if (std::isnan(energy))
-        {
-          Assert(solves_step, ExcInternalError());
-          energy = energy_from(eta, v);
-        }
+        energy = energy_here();
       // The true slopes: the iterate may have converged with the capped
       // model, whose slopes are all at the cap.
       if (!leave_saddle(newton_step,
@@ -1117,10 +1119,7 @@ namespace Contact
         if (!refused && (result.iterations > 1 || nonconvex))
           {
             if (std::isnan(energy))
-              {
-                Assert(solves_step, ExcInternalError());
-                energy = energy_from(eta, v);
-              }
+              energy = energy_here();
             if (!capped)
               {
                 true_step_eta = new_eta;
@@ -1181,7 +1180,7 @@ namespace Contact
             // which does not solve this step's equations: E is not known
             // there, and the rough solution is taken.
             if (std::isnan(energy) && solves_step)
-              energy = energy_from(eta, v);
+              energy = energy_here();
             bool solved_step = false;
             ++result.convexification_steps;
             for (const double step_tolerance :
