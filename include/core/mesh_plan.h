@@ -44,10 +44,8 @@ namespace Contact
     void add_cycle_from_flags(const Triangulation<dim> &mesh);
 
     /** As text, one line per cycle and kind ("refine <ids>" or "coarsen
-     *  <ids>"), and back; read() throws with the file's name on a line it
-     *  cannot read. */
+     *  <ids>"); from_text() reads it back. */
     std::string     text() const;
-    static MeshPlan read(const std::string &file_name);
     /** The plan for the scene's mesh with `levels` fewer global
      *  refinements (cell size times 2^levels): each cell named by its
      *  ancestor `levels` generations up, so that the mesh is this plan's
@@ -55,7 +53,8 @@ namespace Contact
      *  levels, the finer part is coarsened). */
     MeshPlan coarser(const unsigned int levels) const;
 
-    /** The same from the text, with the name of the file it came from. */
+    /** The plan of text(); throws naming `file_name`, where the text came
+     *  from, on a line it cannot read. */
     static MeshPlan from_text(const std::string &text,
                               const std::string &file_name);
   };

@@ -49,14 +49,14 @@ namespace Contact
 {
   namespace
   {
-    // Format 11 begins with the mesh's plan (the cycles of its adaptation);
-    // format 12 ends with whether the adaptation after the checkpoint's step
-    // is still due (a run that ended at a step after which its mesh adapts
-    // did not adapt it: no step followed). Formats 10 and 11 are still read
-    // (with nothing due).
-    const std::string checkpoint_format            = "contact checkpoint 12";
-    const std::string checkpoint_format_no_pending = "contact checkpoint 11";
-    const std::string checkpoint_format_no_plan    = "contact checkpoint 10";
+    // The one format this program reads and writes. A change of what a
+    // checkpoint holds (its payload, or an entry that defines the problem)
+    // raises the number, and a checkpoint of any other number is refused by
+    // it (read_payload()): a run continued from it would silently differ.
+    const unsigned int checkpoint_version = 12;
+    const std::string  checkpoint_prefix  = "contact checkpoint ";
+    const std::string  checkpoint_format =
+      checkpoint_prefix + std::to_string(checkpoint_version);
     const ResultFiles checkpoint_files("checkpoint(\\.[0-9]+)?(\\.tmp)?");
 
     std::uint32_t crc32(const std::string &bytes)
@@ -107,36 +107,6 @@ namespace Contact
       return entries;
     }
 
-    // A checkpoint of an earlier version lacks the entries the program
-    // gained since. For each one that defines the problem, the value that
-    // reproduces a run from before it existed. The other entries of 'Mesh
-    // adaptation' describe how a mesh is adapted: of a run that adapted none
-    // they are irrelevant and this run's values stand in; of one that did,
-    // its values are unknown (their defaults need not be them: before
-    // 'Indicators' existed the pilots used all three) and the checkpoint is
-    // refused, naming them. Any other missing entry is refused too: an entry
-    // that defines the problem goes into this table when it is added.
-    void complete_older_entries(std::map<std::string, std::string> &stored,
-                                const std::map<std::string, std::string> &now)
-    {
-      // What an earlier version counted as part of the problem and this one
-      // lets change on resume.
-      for (auto entry = stored.begin(); entry != stored.end();)
-        entry = may_change_on_resume(entry->first) ? stored.erase(entry) :
-                                                     std::next(entry);
-      // (emplace() keeps the stored values.)
-      for (const auto &entry : {std::pair{Entry::max_predicted_time, "0"},
-                                std::pair{Entry::adaptation_cycles, "0"},
-                                std::pair{Entry::adaptation_interval, "0"}})
-        stored.emplace(entry);
-      if (stored.at(Entry::adaptation_cycles) != "0" ||
-          stored.at(Entry::adaptation_interval) != "0")
-        return;
-      for (const auto &[entry, value] : now)
-        if (entry.rfind("Mesh adaptation/", 0) == 0)
-          stored.emplace(entry, value);
-    }
-
     // The entries whose values differ, 'entry: checkpoint a, now b'.
     std::string
     differing_entries(const std::map<std::string, std::string> &stored,
@@ -148,18 +118,11 @@ namespace Contact
         return found == entries.end() ? std::string("(not set)") :
                                          "'" + found->second + "'";
       };
-      // An entry the checkpoint lacks was added to the program after the
-      // checkpoint was written (complete_older_entries()).
-      const auto stored_value = [&](const std::string &entry) {
-        return stored.count(entry) ? value(stored, entry) :
-                                     std::string("(unknown: the checkpoint is "
-                                                 "older than the entry)");
-      };
       std::map<std::string, std::string> all(stored);
       all.insert(now.begin(), now.end());
       for (const auto &[entry, unused] : all)
         if (value(stored, entry) != value(now, entry))
-          text += "\n  " + entry + ": " + stored_value(entry) +
+          text += "\n  " + entry + ": " + value(stored, entry) +
                   " in the checkpoint, " + value(now, entry) + " now";
       return text;
     }
@@ -282,33 +245,44 @@ namespace Contact
              "without --resume.";
     }
 
+    // @sect4{require_format}
+
+    // The first line of a checkpoint names its format. A checkpoint of
+    // another version is refused by its number, anything else as not a
+    // checkpoint.
+    void require_format(const std::string &name, const std::string &format)
+    {
+      const bool other_version =
+        format != checkpoint_format && format.rfind(checkpoint_prefix, 0) == 0;
+      AssertThrow(!other_version,
+                  ExcMessage(
+                    "'" + name + "' is a checkpoint of format " +
+                    format.substr(checkpoint_prefix.size()) +
+                    ", written by another version of this program; this "
+                    "version reads format " +
+                    std::to_string(checkpoint_version) +
+                    " only. Resume it with the version that wrote it, or "
+                    "start the run again without --resume."));
+      AssertThrow(format == checkpoint_format,
+                  ExcMessage("'" + name +
+                             "' is not a checkpoint this program reads: it "
+                             "does not begin with the line '" +
+                             checkpoint_format + "' (damaged?)."));
+    }
+
+
     // @sect4{read_payload}
 
     // The checkpoint's bytes after its two header lines, checked against the
-    // size and CRC-32 stored there, whether they begin with the mesh's plan
-    // and whether they end with the adaptation that is due.
-    struct Payload
-    {
-      std::string bytes;
-      bool        has_mesh_plan;
-      bool        has_pending_adaptation;
-    };
-
-    Payload read_payload(const std::string &name)
+    // size and CRC-32 stored there.
+    std::string read_payload(const std::string &name)
     {
       std::ifstream file(name, std::ios::binary);
       AssertThrow(file,
                   ExcMessage("Cannot read the checkpoint '" + name + "'."));
       std::string format;
       std::getline(file, format);
-      AssertThrow(format == checkpoint_format ||
-                    format == checkpoint_format_no_pending ||
-                    format == checkpoint_format_no_plan,
-                  ExcMessage("'" + name +
-                             "' is not a checkpoint this program "
-                             "reads: it does not begin with the line '" +
-                             checkpoint_format +
-                             "' (written by an older version, or damaged)."));
+      require_format(name, format);
       std::size_t   size     = 0;
       std::uint32_t checksum = 0;
       file >> size >> checksum;
@@ -329,9 +303,7 @@ namespace Contact
                              "' is damaged: its checksum does not match its "
                              "contents. Resume from another copy, or start the "
                              "run again without --resume."));
-      return {bytes,
-              format != checkpoint_format_no_plan,
-              format == checkpoint_format};
+      return bytes;
     }
   } // namespace
 
@@ -382,20 +354,12 @@ namespace Contact
   {
     const std::string name =
       checkpoint_name(parameters.output.directory, mpi_communicator);
-    const Payload stored = read_payload(name);
-    // A checkpoint of format 10 of a run on a mesh adapted by pilots has
-    // the plan beside it (its adapted_mesh.txt).
-    const std::string plan_file =
-      parameters.output.directory + "/adapted_mesh.txt";
-    if (!stored.has_mesh_plan && std::filesystem::exists(plan_file))
-      mesh_plan = MeshPlan::read(plan_file);
     std::string plan_text;
-    if (stored.has_mesh_plan)
-      {
-        std::istringstream              payload(stored.bytes, std::ios::binary);
-        boost::archive::binary_iarchive archive(payload);
-        archive                        &plan_text;
-      }
+    {
+      std::istringstream payload(read_payload(name), std::ios::binary);
+      boost::archive::binary_iarchive archive(payload);
+      archive                        &plan_text;
+    }
     // A set of checkpoints of different steps (a job killed while they were
     // written) may have different plans: refused here, before the processes
     // build different meshes (load_checkpoint() compares the steps).
@@ -403,8 +367,7 @@ namespace Contact
     AssertThrow(Utilities::MPI::min(plan_hash, mpi_communicator) ==
                   Utilities::MPI::max(plan_hash, mpi_communicator),
                 ExcMessage(mixed_checkpoints(parameters.output.directory)));
-    if (stored.has_mesh_plan)
-      mesh_plan = MeshPlan::from_text(plan_text, name);
+    mesh_plan = MeshPlan::from_text(plan_text, name);
   }
 
 
@@ -493,27 +456,21 @@ namespace Contact
   {
     const std::string name =
       checkpoint_name(parameters.output.directory, mpi_communicator);
-    const Payload                      stored = read_payload(name);
-    std::istringstream                 payload(stored.bytes, std::ios::binary);
+    std::istringstream payload(read_payload(name), std::ios::binary);
     boost::archive::binary_iarchive    archive(payload);
     std::string                        plan_text, stored_shape;
     std::map<std::string, std::string> stored_entries;
     // (The plan was read before the mesh was built.)
-    if (stored.has_mesh_plan)
-      archive &plan_text;
-    archive &stored_shape                   &stored_entries;
+    archive &plan_text &stored_shape        &stored_entries;
     const std::map<std::string, std::string> entries_now =
       problem_entries(parameters.used_parameters);
-    complete_older_entries(stored_entries, entries_now);
-    // (A checkpoint written before the mesh was part of the shape has
-    // none to compare.)
-    std::string problem_shape = shape(space.dof_handler,
-                                      friction_solver->boundary().nodes.size(),
-                                      time_step,
-                                      exact_solution != nullptr,
-                                      mpi_communicator);
-    if (stored_shape.find(", mesh vertex sum ") != std::string::npos)
-      problem_shape += mesh_fingerprint(space.dof_handler, mpi_communicator);
+    const std::string problem_shape =
+      shape(space.dof_handler,
+            friction_solver->boundary().nodes.size(),
+            time_step,
+            exact_solution != nullptr,
+            mpi_communicator) +
+      mesh_fingerprint(space.dof_handler, mpi_communicator);
     AssertThrow(same_problem(stored_shape, problem_shape),
                 ExcMessage(another_problem(name,
                                            stored_shape,
@@ -537,9 +494,7 @@ namespace Contact
     friction_solver->set_state(friction_state);
     for (const auto &postprocessor : postprocessors)
       postprocessor->load(archive);
-    adaptation_due = false;
-    if (stored.has_pending_adaptation)
-      archive &adaptation_due;
+    archive           &adaptation_due;
     const unsigned int step_number = state.step_number;
     AssertThrow(Utilities::MPI::min(step_number, mpi_communicator) ==
                   Utilities::MPI::max(step_number, mpi_communicator),

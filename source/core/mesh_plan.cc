@@ -8,7 +8,6 @@
 #include <core/mesh_plan.h>
 
 #include <algorithm>
-#include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -113,18 +112,6 @@ namespace Contact
           out << '\n';
         }
     return out.str();
-  }
-
-
-  MeshPlan MeshPlan::read(const std::string &file_name)
-  {
-    std::ifstream file(file_name);
-    AssertThrow(file,
-                ExcMessage("Cannot read the adapted mesh's cycles '" +
-                           file_name + "'."));
-    std::ostringstream text;
-    text << file.rdbuf();
-    return from_text(text.str(), file_name);
   }
 
 
