@@ -45,7 +45,7 @@ namespace Contact
 
     /** As text, one line per cycle and kind ("refine <ids>" or "coarsen
      *  <ids>"); from_text() reads it back. */
-    std::string     text() const;
+    std::string text() const;
     /** The plan for the scene's mesh with `levels` fewer global
      *  refinements (cell size times 2^levels): each cell named by its
      *  ancestor `levels` generations up, so that the mesh is this plan's
