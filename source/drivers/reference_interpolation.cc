@@ -41,6 +41,126 @@ namespace Contact
         }
       return value;
     }
+
+
+    template <int dim>
+    using CellBox = std::pair<BoundingBox<dim>,
+                              typename DoFHandler<dim>::active_cell_iterator>;
+
+    // An R-tree of the bounding boxes of this process's cells, each widened
+    // by round-off of the cell's size.
+    template <int dim>
+    RTree<CellBox<dim>> cell_tree(const DoFHandler<dim> &dof_handler)
+    {
+      std::vector<CellBox<dim>> boxes;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            BoundingBox<dim> box = cell->bounding_box();
+            box.extend(1e-10 * cell->diameter());
+            boxes.emplace_back(box, cell);
+          }
+      return pack_rtree(boxes);
+    }
+
+
+    // Per node, whether any process has it in one of its cells.
+    template <int dim>
+    std::vector<unsigned int> found_by_some_process(
+      const std::vector<typename ReferenceInterpolation<dim>::NodeInCell>
+                        &located,
+      const unsigned int n_nodes)
+    {
+      std::vector<unsigned int> found(n_nodes, 0);
+      for (const auto &node : located)
+        found[node.node] = 1;
+      MPI_Allreduce(MPI_IN_PLACE,
+                    found.data(),
+                    found.size(),
+                    MPI_UNSIGNED,
+                    MPI_MAX,
+                    MPI_COMM_WORLD);
+      return found;
+    }
+
+
+    // Per node, the process that takes it: the one with the nearest cell
+    // (the lowest rank among equals), where that is within 0.1 of the unit
+    // cell; invalid_unsigned_int where no process takes it.
+    std::vector<unsigned int>
+    nearest_process(const std::vector<double> &distance)
+    {
+      std::vector<double> smallest(distance.size());
+      MPI_Allreduce(distance.data(),
+                    smallest.data(),
+                    distance.size(),
+                    MPI_DOUBLE,
+                    MPI_MIN,
+                    MPI_COMM_WORLD);
+      std::vector<unsigned int> taker(distance.size());
+      for (unsigned int m = 0; m < distance.size(); ++m)
+        taker[m] = (distance[m] < 0.1 && distance[m] == smallest[m]) ?
+                     Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) :
+                     numbers::invalid_unsigned_int;
+      MPI_Allreduce(MPI_IN_PLACE,
+                    taker.data(),
+                    taker.size(),
+                    MPI_UNSIGNED,
+                    MPI_MIN,
+                    MPI_COMM_WORLD);
+      return taker;
+    }
+
+
+    // @sect4{add_nodes_outside_every_cell}
+
+    // A node on a curved boundary may lie just outside every cell of a
+    // coarser level (the coarse cells' boundary is the mapping's polynomial,
+    // or the chord, not the circle): the nearest cell of all processes takes
+    // it, at its projection onto that cell. (Only on meshes of hypercubes,
+    // whose distance to the unit cell deal.II 9.4 knows; the reductions are
+    // collective either way.)
+    template <int dim>
+    void add_nodes_outside_every_cell(
+      const ContactProblem<dim>                                     &level,
+      const RTree<CellBox<dim>>                                     &tree,
+      const std::vector<Point<dim>>                                 &all_nodes,
+      std::vector<typename ReferenceInterpolation<dim>::NodeInCell> &located)
+    {
+      const bool hypercubes = level.get_dof_handler()
+                                .get_triangulation()
+                                .all_reference_cells_are_hyper_cube();
+      const std::vector<unsigned int> found =
+        found_by_some_process<dim>(located, all_nodes.size());
+      std::vector<double> distance(all_nodes.size(),
+                                   std::numeric_limits<double>::max());
+      std::vector<typename ReferenceInterpolation<dim>::NodeInCell> nearest(
+        all_nodes.size());
+      for (unsigned int m = 0; m < all_nodes.size(); ++m)
+        if (found[m] == 0 && hypercubes)
+          for (const auto &[box, cell] :
+               tree | boost::geometry::index::adaptors::queried(
+                        boost::geometry::index::nearest(all_nodes[m], 4)))
+            try
+              {
+                const Point<dim> unit =
+                  level.get_mapping().transform_real_to_unit_cell(cell,
+                                                                  all_nodes[m]);
+                const double d = GeometryInfo<dim>::distance_to_unit_cell(unit);
+                if (d < distance[m])
+                  {
+                    distance[m] = d;
+                    nearest[m]  = {
+                       m, cell, GeometryInfo<dim>::project_to_unit_cell(unit)};
+                  }
+              }
+            catch (const typename Mapping<dim>::ExcTransformationFailed &)
+              {}
+      const std::vector<unsigned int> taker = nearest_process(distance);
+      for (unsigned int m = 0; m < all_nodes.size(); ++m)
+        if (taker[m] == Utilities::MPI::this_mpi_process(MPI_COMM_WORLD))
+          located.push_back(nearest[m]);
+    }
   } // namespace
 
 
@@ -111,21 +231,7 @@ namespace Contact
   std::vector<typename ReferenceInterpolation<dim>::NodeInCell>
   ReferenceInterpolation<dim>::locate(const ContactProblem<dim> &level) const
   {
-    using Cell = typename DoFHandler<dim>::active_cell_iterator;
-    std::vector<std::pair<BoundingBox<dim>, Cell>> boxes;
-    for (const auto &cell : level.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          BoundingBox<dim> box = cell->bounding_box();
-          box.extend(1e-10 * cell->diameter());
-          boxes.emplace_back(box, cell);
-        }
-    const auto tree = pack_rtree(boxes);
-    const bool cell_shape_is_hypercube =
-      level.get_dof_handler()
-        .get_triangulation()
-        .all_reference_cells_are_hyper_cube();
-
+    const auto              tree = cell_tree(level.get_dof_handler());
     std::vector<NodeInCell> located;
     for (unsigned int m = 0; m < all_nodes.size(); ++m)
       for (const auto &[box, cell] :
@@ -144,66 +250,7 @@ namespace Contact
           }
         catch (const typename Mapping<dim>::ExcTransformationFailed &)
           {}
-
-    // A node on a curved boundary may lie just outside every cell of a
-    // coarser level (the coarse cells' boundary is the mapping's polynomial,
-    // or the chord, not the circle): the nearest cell of all processes takes
-    // it, at its projection onto that cell.
-    std::vector<unsigned int> found(all_nodes.size(), 0);
-    for (const NodeInCell &node : located)
-      found[node.node] = 1;
-    MPI_Allreduce(MPI_IN_PLACE,
-                  found.data(),
-                  found.size(),
-                  MPI_UNSIGNED,
-                  MPI_MAX,
-                  MPI_COMM_WORLD);
-    std::vector<double>     distance(all_nodes.size(),
-                                 std::numeric_limits<double>::max());
-    std::vector<NodeInCell> nearest(all_nodes.size());
-    for (unsigned int m = 0; m < all_nodes.size(); ++m)
-      if (found[m] == 0 && cell_shape_is_hypercube)
-        for (const auto &[box, cell] :
-             tree | boost::geometry::index::adaptors::queried(
-                      boost::geometry::index::nearest(all_nodes[m], 4)))
-          try
-            {
-              const Point<dim> unit =
-                level.get_mapping().transform_real_to_unit_cell(cell,
-                                                                all_nodes[m]);
-              const double d = GeometryInfo<dim>::distance_to_unit_cell(unit);
-              if (d < distance[m])
-                {
-                  distance[m] = d;
-                  nearest[m]  = {m,
-                                 cell,
-                                 GeometryInfo<dim>::project_to_unit_cell(unit)};
-                }
-            }
-          catch (const typename Mapping<dim>::ExcTransformationFailed &)
-            {}
-    std::vector<double> smallest(distance.size());
-    MPI_Allreduce(distance.data(),
-                  smallest.data(),
-                  distance.size(),
-                  MPI_DOUBLE,
-                  MPI_MIN,
-                  MPI_COMM_WORLD);
-    std::vector<unsigned int> taker(all_nodes.size());
-    for (unsigned int m = 0; m < all_nodes.size(); ++m)
-      taker[m] =
-        (found[m] == 0 && distance[m] < 0.1 && distance[m] == smallest[m]) ?
-          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) :
-          numbers::invalid_unsigned_int;
-    MPI_Allreduce(MPI_IN_PLACE,
-                  taker.data(),
-                  taker.size(),
-                  MPI_UNSIGNED,
-                  MPI_MIN,
-                  MPI_COMM_WORLD);
-    for (unsigned int m = 0; m < all_nodes.size(); ++m)
-      if (taker[m] == Utilities::MPI::this_mpi_process(MPI_COMM_WORLD))
-        located.push_back(nearest[m]);
+    add_nodes_outside_every_cell(level, tree, all_nodes, located);
     return located;
   }
 

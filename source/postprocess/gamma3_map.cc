@@ -24,108 +24,137 @@
 
 namespace Contact
 {
+  namespace
+  {
+    // Calls `visit(cell, face)` for each Gamma_3 face of this process's
+    // cells.
+    template <int dim, typename Visit>
+    void for_each_contact_face(const DiscreteSpace<dim>           &space,
+                               const std::set<types::boundary_id> &ids,
+                               const Visit                        &visit)
+    {
+      for (const auto &cell : space.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                ids.count(cell->face(f)->boundary_id()) != 0)
+              visit(cell, f);
+    }
+
+
+    // @sect4{contact_weights}
+
+    // The weights int psi_p ds of the basis functions psi_p of V_h on
+    // Gamma_3, with the space's face rule, assembled as a load and condensed
+    // by the hanging nodes' constraints (a hanging node's integral goes to
+    // the nodes it follows; the friction solver adds these shares node by
+    // node instead). Ghosted: read at every node of this process's faces.
+    template <int dim>
+    VectorType contact_weights(const DiscreteSpace<dim>           &space,
+                               const std::set<types::boundary_id> &ids)
+    {
+      const FiniteElement<dim>            &fe = space.fe;
+      FEFaceValues<dim>                    integrals(*space.mapping,
+                                  fe,
+                                  space.face_quadrature,
+                                  update_values | update_JxW_values);
+      std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+      VectorType assembled(space.locally_owned_dofs, space.mpi_communicator);
+      Vector<double> cell_weights(fe.n_dofs_per_cell());
+      for_each_contact_face(space, ids, [&](const auto &cell, const auto f) {
+        integrals.reinit(cell, f);
+        cell->get_dof_indices(cell_dofs);
+        cell_weights = 0;
+        for (unsigned int j = 0; j < fe.n_dofs_per_face(f); ++j)
+          {
+            const unsigned int i = fe.face_to_cell_index(j, f);
+            if (fe.system_to_component_index(i).first == 0)
+              for (const unsigned int q : integrals.quadrature_point_indices())
+                cell_weights[i] +=
+                  integrals.shape_value_component(i, q, 0) * integrals.JxW(q);
+          }
+        space.hanging_node_constraints.distribute_local_to_global(cell_weights,
+                                                                  cell_dofs,
+                                                                  assembled);
+      });
+      assembled.compress(VectorOperation::add);
+      return space.ghosted(assembled);
+    }
+
+
+    // @sect4{contact_node_records}
+
+    // Per node of this process's Gamma_3 faces, one record of
+    // `record_size<dim>` numbers: dofs, location, weight, the number of
+    // fixed directions and the directions (a node on several faces or
+    // processes has several records).
+    template <int dim>
+    constexpr unsigned int record_size = dim + dim + 1 + 1 + dim *dim;
+
+    template <int dim>
+    std::vector<double>
+    contact_node_records(const DiscreteSpace<dim>           &space,
+                         const std::set<types::boundary_id> &ids,
+                         const VectorType                   &weights)
+    {
+      const FiniteElement<dim>            &fe = space.fe;
+      std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+      std::vector<double>                  records;
+      for_each_contact_face(space, ids, [&](const auto &cell, const auto f) {
+        cell->get_dof_indices(cell_dofs);
+        for (unsigned int j = 0; j < fe.n_dofs_per_face(f); ++j)
+          {
+            const unsigned int i = fe.face_to_cell_index(j, f);
+            const auto [component, base_index] =
+              fe.system_to_component_index(i);
+            // A hanging node is no node of V_h (with Q2 it may lie where
+            // the coarse edge's own node is).
+            if (component != 0 ||
+                space.hanging_node_constraints.is_constrained(cell_dofs[i]))
+              continue;
+            std::array<types::global_dof_index, dim> dofs;
+            for (unsigned int d = 0; d < dim; ++d)
+              dofs[d] = cell_dofs[fe.component_to_system_index(d, base_index)];
+            records.insert(records.end(), dofs.begin(), dofs.end());
+            const Point<dim> x = space.mapping->transform_unit_to_real_cell(
+              cell, fe.base_element(0).unit_support_point(base_index));
+            for (unsigned int d = 0; d < dim; ++d)
+              records.push_back(x[d]);
+            records.push_back(weights(dofs[0]));
+            const auto fixed = fixed_directions<dim>(dofs, space.constraints);
+            records.push_back(fixed.size());
+            for (unsigned int r = 0; r < dim; ++r)
+              for (unsigned int d = 0; d < dim; ++d)
+                records.push_back(r < fixed.size() ? fixed[r][d] : 0.);
+          }
+      });
+      return records;
+    }
+  } // namespace
+
+
   // @sect4{Gamma3Map::Gamma3Map}
 
-  // Each process integrates over the Gamma_3 faces of its own cells the
-  // weight int psi_p ds with the space's face rule, and reads the
-  // constraints of the nodes there; the parts are gathered on every
-  // process.
+  // Each process integrates the weights over the Gamma_3 faces of its own
+  // cells and reads the constraints of the nodes there; the records of all
+  // processes are gathered on every process, one node per first dof.
   template <int dim>
   Gamma3Map<dim>::Gamma3Map(const DiscreteSpace<dim> &discrete_space,
                             const std::vector<types::boundary_id> &contact_ids)
     : space(discrete_space)
   {
-    const std::set<types::boundary_id>   ids(contact_ids.begin(),
+    const std::set<types::boundary_id> ids(contact_ids.begin(),
                                            contact_ids.end());
-    const FiniteElement<dim>            &fe = space.fe;
-    FEFaceValues<dim>                    integrals(*space.mapping,
-                                fe,
-                                space.face_quadrature,
-                                update_values | update_JxW_values);
-    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-
-    // The weights int psi_p ds of the basis functions psi_p of V_h on
-    // Gamma_3, assembled as a load and condensed by the hanging nodes'
-    // constraints (a hanging node's integral goes to the nodes it follows;
-    // the friction solver adds these shares node by node instead).
-    const AffineConstraints<double> &hanging = space.hanging_node_constraints;
-    VectorType     assembled(space.locally_owned_dofs, space.mpi_communicator);
-    Vector<double> cell_weights(fe.n_dofs_per_cell());
-    for (const auto &cell : space.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              ids.count(cell->face(f)->boundary_id()) != 0)
-            {
-              integrals.reinit(cell, f);
-              cell->get_dof_indices(cell_dofs);
-              cell_weights = 0;
-              for (unsigned int j = 0; j < fe.n_dofs_per_face(f); ++j)
-                {
-                  const unsigned int i = fe.face_to_cell_index(j, f);
-                  if (fe.system_to_component_index(i).first == 0)
-                    for (const unsigned int q :
-                         integrals.quadrature_point_indices())
-                      cell_weights[i] +=
-                        integrals.shape_value_component(i, q, 0) *
-                        integrals.JxW(q);
-                }
-              hanging.distribute_local_to_global(cell_weights,
-                                                 cell_dofs,
-                                                 assembled);
-            }
-    assembled.compress(VectorOperation::add);
-    const VectorType weights = space.ghosted(assembled);
-
-    // Per node and process: dofs, location, weight, the number of fixed
-    // directions and the directions.
-    constexpr unsigned int record_size = dim + dim + 1 + 1 + dim * dim;
-    std::vector<double>    records;
-    for (const auto &cell : space.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              ids.count(cell->face(f)->boundary_id()) != 0)
-            {
-              integrals.reinit(cell, f);
-              cell->get_dof_indices(cell_dofs);
-              for (unsigned int j = 0; j < fe.n_dofs_per_face(f); ++j)
-                {
-                  const unsigned int i = fe.face_to_cell_index(j, f);
-                  const auto [component, base_index] =
-                    fe.system_to_component_index(i);
-                  // A hanging node is no node of V_h (with Q2 it may lie
-                  // where the coarse edge's own node is).
-                  if (component != 0 || hanging.is_constrained(cell_dofs[i]))
-                    continue;
-                  std::array<types::global_dof_index, dim> dofs;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    dofs[d] =
-                      cell_dofs[fe.component_to_system_index(d, base_index)];
-                  records.insert(records.end(), dofs.begin(), dofs.end());
-                  const Point<dim> x =
-                    space.mapping->transform_unit_to_real_cell(
-                      cell, fe.base_element(0).unit_support_point(base_index));
-                  for (unsigned int d = 0; d < dim; ++d)
-                    records.push_back(x[d]);
-                  records.push_back(weights(dofs[0]));
-                  const auto fixed =
-                    fixed_directions<dim>(dofs, space.constraints);
-                  records.push_back(fixed.size());
-                  for (unsigned int r = 0; r < dim; ++r)
-                    for (unsigned int d = 0; d < dim; ++d)
-                      records.push_back(r < fixed.size() ? fixed[r][d] : 0.);
-                }
-            }
+    const std::vector<double>          records =
+      contact_node_records(space, ids, contact_weights(space, ids));
 
     std::map<types::global_dof_index, Node> by_dof;
     for (const auto &part :
          Utilities::MPI::all_gather(space.mpi_communicator, records))
-      for (auto r = part.begin(); r != part.end(); r += record_size)
+      for (auto r = part.begin(); r != part.end(); r += record_size<dim>)
         {
-          const auto key   = static_cast<types::global_dof_index>(r[0]);
-          const bool first = (by_dof.count(key) == 0);
-          if (!first)
+          const auto key = static_cast<types::global_dof_index>(r[0]);
+          if (by_dof.count(key) != 0)
             continue;
           Node &node  = by_dof[key];
           node.weight = r[2 * dim];
