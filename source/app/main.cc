@@ -20,9 +20,8 @@ namespace
   // OpenBLAS, Debian's default BLAS, lets its threads spin while they wait.
   // The dense matrices of this program (Gamma_3, a few hundred rows) gain
   // nothing from threads, and on a machine loaded by other jobs the spinning
-  // made the default scene 2.6 times slower (16.5 s against 6.3 s with one
-  // thread, measured with two busy processes on the two cores). So: one
-  // thread, if the BLAS in use is OpenBLAS.
+  // threads take the cores from the program's own work. So: one thread, if
+  // the BLAS in use is OpenBLAS.
   void use_one_blas_thread()
   {
     using SetThreads = void (*)(int);
@@ -32,12 +31,11 @@ namespace
   }
 
   // Started without mpirun, the program is an Open MPI singleton, which by
-  // default spawns a runtime daemon and probes every network transport:
-  // 0.35 s of the 0.85 s start-up measured on this machine, more than the
-  // whole time stepping of small runs. One process needs neither, so unless
-  // a launcher is present (or the user set these entries), the singleton is
-  // made isolated and limited to the loopback transport. Other MPI
-  // libraries ignore the variables.
+  // default spawns a runtime daemon and probes every network transport,
+  // which can take longer than the whole time stepping of a small run. One
+  // process needs neither, so unless a launcher is present (or the user set
+  // these entries), the singleton is made isolated and limited to the
+  // loopback transport. Other MPI libraries ignore the variables.
   void quick_singleton_start()
   {
     if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr ||
@@ -96,9 +94,8 @@ int main(int argc, char *argv[])
   // One thread per process for deal.II's task-based loops, which are then
   // serial. (The VTU output's std::async thread is a thread of its own,
   // outside this limit.)
-  // (Two threads in the self-checks' cell loop, the largest loop of a
-  // step, left its time on the default scene unchanged, 0.38-0.43 s
-  // against 0.42 s, measured.)
+  // (More threads did not shorten the self-checks' cell loop, the largest
+  // loop of a step.)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
     {

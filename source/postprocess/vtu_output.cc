@@ -102,13 +102,12 @@ namespace Contact
 
   // One VTU output: copies of the fields at t_n, and the thread that turns
   // them into a file. DataOut's patches and the compression take most of
-  // an output's time (measured: 18 + 18 ms of 45 ms per output of the
-  // paper's scene); they run in a background thread while the time loop
-  // goes on, and finish_vtu() waits for them before the next output, a
-  // checkpoint, a change of the mesh or the end of the run. The thread reads
-  // the mesh, the DoFHandlers and the mapping, which the steps do not change,
-  // and
-  // makes no MPI calls: DataOut's ghosted copies of the fields (MPI calls)
+  // an output's time (bench/output.md measures what the output adds to a
+  // run); they run in a background thread while the time loop goes on, and
+  // finish_vtu() waits for them before the next output, a checkpoint, a
+  // change of the mesh or the end of the run. The thread reads the mesh, the
+  // DoFHandlers and the mapping, which the steps do not change, and makes no
+  // MPI calls: DataOut's ghosted copies of the fields (MPI calls)
   // are made before it starts.
   template <int dim>
   class VtuOutput : public Postprocessor<dim>
