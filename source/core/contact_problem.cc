@@ -13,9 +13,9 @@
 #include <base/scene_variant.h>
 #include <base/version.h>
 #include <core/contact_problem.h>
+#include <core/csv_file.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
-#include <postprocess/csv_file.h>
 
 #include <algorithm>
 #include <cerrno>

@@ -1,9 +1,9 @@
 /* gamma3_history.csv ('Output/Gamma3 history'): the state of every node
    of Gamma_3 at every step. */
 
+#include <core/csv_file.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
-#include <postprocess/csv_file.h>
 
 #include <iomanip>
 

@@ -2,9 +2,9 @@
    step did, the energies, and the columns of the other postprocessors
    (self-checks, momenta, probes, errors). */
 
+#include <core/csv_file.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
-#include <postprocess/csv_file.h>
 
 #include <iomanip>
 

@@ -3,7 +3,7 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <postprocess/csv_file.h>
+#include <core/csv_file.h>
 
 #include <cerrno>
 #include <cstring>
