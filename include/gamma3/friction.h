@@ -1,6 +1,14 @@
 /**
- * The friction law of the paper and the nodal Tresca problem that one
- * convexification iteration solves on Gamma_3.
+ * The friction law of the paper, the nodal Tresca problem that one
+ * convexification iteration solves on Gamma_3, and Newton's method on the
+ * full law:
+ *
+ *   friction_law.cc          FrictionLaw, NodalLaw (the energy of a step)
+ *   anderson_acceleration.cc AndersonAcceleration
+ *   tresca_active_set.cc     solve_tresca(), by the primal-dual active set
+ *                            method
+ *   friction_newton.cc       solve_friction_newton() (FrictionNewton,
+ *                            friction_newton.h)
  */
 #ifndef contact_friction_h
 #define contact_friction_h
@@ -28,39 +36,11 @@ namespace Contact
   /** An iterate lowers the energy E on Gamma_3 if E grows by at most this
    *  much relative to its size: round-off of the sum. */
   constexpr double energy_round_off = 1e-13;
-  /** The Tresca problem with which Newton's method starts where E may be
-   *  nonconvex, and that of a convexification step inside it, stops once
-   *  its sets repeat and its residual is below this fraction of its
-   *  largest bound: the sets, which select the solution, are then
-   *  decided, and the remaining digits are left to Newton's method, whose
-   *  steps solve the same conditions on those sets. (Every
-   *  test scene ends on the solutions of the start solved to
-   *  friction_residual_tolerance, to the printed digits, and the 3D scene
-   *  at h = k = 1/32 with the same stick/slip counts at every printed
-   *  step; at 1e-2 the 3D scene at h = k = 1/16 ends on another local
-   *  minimum: doc/algorithm.md, which also gives what the same stop
-   *  changed in the convexification step.) */
-  constexpr double start_residual_tolerance = 1e-3;
   /** While the stick/slip sets still change, Newton's model caps the
    *  weakening at this fraction of the convexity limit, where the model is
    *  convex; below the same fraction a solution is a local minimum without
    *  a test (the 10 % cover the error of the limit's Lanczos estimate). */
   constexpr double weakening_cap_fraction = 0.9;
-  /** The Armijo constant of the line search on E: a step of length t along
-   *  a direction with the directional derivative E' < 0 is accepted when E
-   *  decreases by at least sufficient_decrease t |E'|. */
-  constexpr double sufficient_decrease = 1e-4;
-  /** Where neither Newton model's step lowers E within three halvings, the
-   *  step with the true slopes is halved further while its length stays
-   *  above this fraction (down to 1/64) before a convexification step is
-   *  taken (solve_friction_newton()). */
-  constexpr double shortest_true_step = 0.01;
-  /** Where the capped model's full steps on repeating sets lower the
-   *  residual by less than 30 % twice in a row, a full step is
-   *  extrapolated to lengths 2, 4, ... up to this while E keeps falling
-   *  (solve_friction_newton()). */
-  constexpr double longest_extrapolation = 8;
-
   /**
    * The slip threshold mu(s) S of (3.6) of the slip rate s = |w_tau|, for
    * the law of the entry 'Friction law' (base/friction_laws.h; for the slip
@@ -357,69 +337,11 @@ namespace Contact
    * symmetric; it is indefinite where the step problem is not convex
    * (g_p' < 0 is the weakening). The solutions of the law are the
    * stationary points of the step's energy E (NodalLaw), and the
-   * globalisation makes the method a descent method on E that ends on a
-   * local minimum:
-   * - While the sets change, the model caps the weakening at
-   *   law.weakening_cap (below the convexity limit the model is convex and
-   *   its step a direction of descent; with the true slope, a node just
-   *   entering slip is pulled back towards stick); once the sets repeat
-   *   after a full step and max |F_p| is below a tenth of max_p g_p(0), the
-   *   true slope takes over for the quadratic convergence.
-   * - A step is accepted on sufficient decrease of E (Armijo, with the
-   *   directional derivative of E, which is nonsmooth at stick nodes;
-   *   plain decrease where that derivative is not negative); it is halved
-   *   up to three times; if that fails, the other model (capped or true
-   *   slope) is tried from the same iterate (a failed true step also halves
-   *   the residual below which the true slope is taken again); if both
-   *   fail (or the true step, where no cap makes it the only model), the
-   *   true step is halved further, down to 1/64
-   *   (shortest_true_step, no solve), and if that fails too, or the step's
-   *   solver refuses its matrix (ExcIndefiniteNewtonMatrix: both models
-   *   give it the same capped matrix), a convexification step is taken
-   *   instead (the Tresca problem
-   *   with the bounds of the current slip rates), which lowers E because j
-   *   is concave along |v| (a majorisation); it is solved to
-   *   start_residual_tolerance, and to friction_residual_tolerance only
-   *   where that rougher solution does not lower E.
-   * - After three full capped steps on repeating sets whose residual grew
-   *   (the capped model creeping towards a node's stick state), the slip
-   *   nodes weakening faster than the cap that slowed down are proposed to
-   *   stick: one Newton step with them held, taken if it lowers E.
-   * - After two full capped steps in a row on repeating sets whose residual
-   *   fell by less than 30 % (E nearly flat along the step, the model's
-   *   curvature far above E's), a full capped step is extrapolated to
-   *   lengths 2, 4, ... up to longest_extrapolation while E keeps falling
-   *   (no solve).
-   * - Where E is convex its one stationary point is the minimiser
-   *   whichever way it is reached: the first step starts from the previous
-   *   step's forces, slip velocities and sets (eta, v on entry), which
-   *   need not solve this step's equations; E is measured from the first
-   *   iterate that does (NodalLaw::energy()), so the method never forms
-   *   v_free, which on the constraints path would cost a solve (where the
-   *   solver refuses the first step of a convex problem, the
-   *   convexification step that replaces it is taken without a
-   *   comparison, and E is measured from its result). Where E may be
-   *   nonconvex (law.may_be_nonconvex()) the start selects the solution:
-   *   the first iterate is then the convexification's, the Tresca problem
-   *   with the bounds of the previous slip rates (a descent from the
-   *   previous velocities, counted as a convexification step; its active
-   *   set method's first sets are those of eta and v on entry, no solve;
-   *   it stops at start_residual_tolerance once its sets repeat), and
-   *   every Newton step from it is line searched. Where that start
-   *   already satisfies the full law (max |F_p| below the tolerance), it
-   *   is the solution, with the same second-order check.
-   * - At a solution (the sets repeat and max_p |F_p| (the Euclidean norm
-   *   of the node's vector) <=
-   *   friction_residual_tolerance max_p g_p(0)) where some slip node weakens
-   *   faster than weakening_cap_fraction times the convexity limit, the
-   *   curvature test decides whether it is a local minimum. Where it finds
-   *   negative curvature (a saddle), the method leaves the point along the
-   *   direction of most negative curvature on the slip set, to the lowest
-   *   E among a few lengths both ways (no solve: v and eta move together),
-   *   and goes on from there with the capped model; every later step keeps
-   *   E below the saddle's, so it is never met again. After three such
-   *   exits, or where the test cannot tell, or no length lowers E, the
-   *   result says so (minimum_not_certified) and is not converged.
+   * globalisation (line search, convexification steps, a test of the end
+   * point and the exit from saddles) makes the method a descent method on
+   * E that ends on a local minimum: FrictionNewton
+   * (gamma3/friction_newton.h) describes it step by step and holds its
+   * tuned constants.
    * (eta, v, state) are the solution where the result converged and are
    * unspecified otherwise.
    */

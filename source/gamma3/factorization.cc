@@ -315,6 +315,22 @@ namespace Contact
                     ExcMessage("'" + Entry::linear_solver +
                                " = CHOLMOD' runs on one "
                                "process; choose an Amesos solver for more."));
+        cholmod_sparse *A = upper_triangle(matrix);
+        // L L^T also where CHOLMOD chooses a simplicial factor, whose
+        // default is L D L^T: the forward and backward substitutions are
+        // then the two halves of a solve.
+        common.final_ll = 1;
+        factor          = cholmod_analyze(A, &common);
+        cholmod_factorize(A, factor, &common);
+        cholmod_free_sparse(&A, &common);
+        check_factor(matrix.NumMyRows());
+      }
+
+      // K's upper triangle in CHOLMOD's sorted compressed columns (its
+      // symmetric storage, stype 1): K being symmetric, the entries of row
+      // i in the columns up to i are column i of that triangle.
+      cholmod_sparse *upper_triangle(const Epetra_CrsMatrix &matrix)
+      {
         const int   n       = matrix.NumMyRows();
         std::size_t n_upper = 0;
         for (int i = 0; i < n; ++i)
@@ -358,14 +374,13 @@ namespace Contact
               }
           }
         column_start[n] = position;
+        return A;
+      }
 
-        // L L^T also where CHOLMOD chooses a simplicial factor, whose
-        // default is L D L^T: the forward and backward substitutions are
-        // then the two halves of a solve.
-        common.final_ll = 1;
-        factor          = cholmod_analyze(A, &common);
-        cholmod_factorize(A, factor, &common);
-        cholmod_free_sparse(&A, &common);
+      // That the factorisation succeeded and K is not singular to working
+      // precision; n is K's size.
+      void check_factor(const int n)
+      {
         AssertThrow(common.status == CHOLMOD_OK &&
                       factor->minor == static_cast<std::size_t>(n) &&
                       factor->is_ll,

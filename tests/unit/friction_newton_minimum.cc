@@ -10,7 +10,8 @@
    - with the curvature test replaced by one that certifies every point,
      some starts end on a saddle in each of the four cases (what the test
      must catch; at alpha = 5 none did before a failed true step was
-     searched down to 1/64 of its length, shortest_true_step);
+     searched down to 1/64 of its length,
+     FrictionNewtonConstants::shortest_true_step);
    - with the curvature test of DelassusOperator (from W, and from D alone)
      and with the capacitance test from Newton steps, which a path falls
      back on where its own test cannot tell, every start converges to a
