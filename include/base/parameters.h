@@ -233,12 +233,7 @@ namespace Contact
     unsigned int cells_around;
     /** Degree of the polynomial mapping of the cells: 2 and more follow a
      *  curved boundary (the shell's circles) between the nodes. */
-    unsigned int mapping_degree;
-    /** The box of lower_corner, upper_corner, divided by cell_size. */
-    bool is_box() const
-    {
-      return mesh_file.empty() && domain == Domain::box;
-    }
+    unsigned int        mapping_degree;
     std::vector<double> lower_corner;
     std::vector<double> upper_corner;
     double              cell_size;

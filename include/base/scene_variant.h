@@ -34,10 +34,10 @@ namespace Contact
   /** A scene with other h, k, degree and output directory. */
   struct SceneVariant
   {
-    /** h = 2^-h_halvings times the scene's 'Cell size' for a box; a mesh
-     *  file or a shell is refined h_halvings times more than the scene's
-     *  'Mesh refinements'. Negative: coarser. Powers of 2 keep the meshes
-     *  nested and h exact. */
+    /** h = 2^-h_halvings times the scene's, by the entries that the
+     *  geometry names (GeometryBase::entries_with_h_halved(): the box's
+     *  'Cell size', or 'Mesh refinements' more). Negative: coarser.
+     *  Powers of 2 keep the meshes nested and h exact. */
     int h_halvings;
     /** k = T / n_steps (the run a target chooses has a number of steps
      *  that is no power-of-2 multiple of the scene's). */

@@ -3,6 +3,7 @@
  * 'Cell size' (the paper's domain), of hypercubes or simplices; its
  * faces carry the boundary ids 0 (x = x0), 1 (x = x1), 2 (y = y0),
  * 3 (y = y1), 4, 5 (z). box.cc declares and parses those three entries.
+ * Its h is the 'Cell size': the entry that a scene variant halves.
  */
 #ifndef contact_box_h
 #define contact_box_h
@@ -18,6 +19,37 @@ namespace Contact
     using Geometry<dim>::Geometry;
 
     unsigned int create_coarse_mesh(Triangulation<dim> &mesh) const override;
+
+    bool has_curved_boundary() const override
+    {
+      return false;
+    }
+    bool gamma3_is_closed() const override
+    {
+      return false;
+    }
+    bool is_symmetric_about_z_axis() const override
+    {
+      return false;
+    }
+
+    std::map<std::string, std::string>
+                entries_with_h_halved(const int h_halvings) const override;
+    std::string mesh_size_text() const override;
+    void        check_coarse_runs(const std::string &mode) const override;
+    std::string
+         coarsening_obstacle(const unsigned int doublings) const override;
+    void check_manufactured_scene() const override;
+
+    /** The largest of the cell sizes edge / round(edge / h) of its edges,
+     *  whatever `mesh` and `mapping`. */
+    double cell_size(const Triangulation<dim> &mesh,
+                     const Mapping<dim>       &mapping) const override;
+
+  private:
+    /** The number of cells along the edge `d` with cells of `size`:
+     *  round(edge / size), at least 1. */
+    long n_cells(const unsigned int d, const double size) const;
   };
 } // namespace Contact
 

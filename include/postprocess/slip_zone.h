@@ -19,13 +19,15 @@ namespace Contact
     unsigned int n_slip  = 0;
     double       from    = 0;
     double       to      = 0;
-    // On a shell: the sticking nodes on the arc from `from` to `to`.
+    // On a closed Gamma_3: the sticking nodes on the arc from `from` to
+    // `to`.
     unsigned int n_stick_inside = 0;
   };
 
   /** The slipping nodes of Gamma_3 and where they are: the range of their
-   *  x on an open Gamma_3, or on a shell's closed one (`closed`) the arc
-   *  about the z-axis that holds them. */
+   *  x on an open Gamma_3, or on one closed around the z-axis (`closed`,
+   *  GeometryBase::gamma3_is_closed()) the arc about the axis that holds
+   *  them. */
   template <int dim>
   SlipZone slip_zone(const std::vector<ContactNode<dim>> &nodes,
                      const std::vector<NodeState>        &node_state,

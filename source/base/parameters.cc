@@ -8,6 +8,7 @@
 
 #include <base/dimensions.h>
 #include <base/parameters.h>
+#include <geometry/geometry.h>
 
 #include <algorithm>
 #include <cctype>
@@ -1496,60 +1497,9 @@ namespace Contact
                                        Entry::estimate_error +
                                        "' = false, and continues without "
                                        "it.")));
-    if (!geometry.is_box())
-      {
-        check_entry(geometry.mesh_refinements >= 2,
-                    Entry::mesh_refinements,
-                    geometry.mesh_refinements,
-                    "at least 2 with " + mode +
-                      " (the coarse runs use one and two refinements "
-                      "fewer)");
-        return;
-      }
-    // The box has round(edge / h) cells along each edge: the coarse runs
-    // have cells of exactly 2h and 4h only where that number is a multiple
-    // of 4 and stays the same count halved.
-    const auto edge = [&](const unsigned int d) {
-      return geometry.upper_corner[d] - geometry.lower_corner[d];
-    };
-    const auto cells = [&](const unsigned int d, const double size) {
-      return static_cast<long>(std::max(1., std::round(edge(d) / size)));
-    };
-    const auto fits = [&](const unsigned int d, const double size) {
-      const long n = cells(d, size);
-      return n % 4 == 0 && cells(d, 2 * size) == n / 2 &&
-             cells(d, 4 * size) == n / 4;
-    };
-    // The largest size at most the given one that fits every edge (a
-    // quarter of the shortest edge divided by m fits it; the others are
-    // tried), as the message's suggestion.
-    const auto suggestion = [&]() {
-      double shortest = edge(0);
-      for (unsigned int d = 1; d < dimension; ++d)
-        shortest = std::min(shortest, edge(d));
-      for (long m = 1; m <= 4096; ++m)
-        {
-          const double size = shortest / (4 * m);
-          bool         all  = size <= geometry.cell_size * (1 + 1e-12);
-          for (unsigned int d = 0; all && d < dimension; ++d)
-            all = fits(d, size);
-          if (all)
-            return "; e.g. " + number_text(size) + " fits every edge";
-        }
-      return std::string();
-    };
-    for (unsigned int d = 0; d < dimension; ++d)
-      if (!fits(d, geometry.cell_size))
-        check_entry(false,
-                    Entry::cell_size,
-                    geometry.cell_size,
-                    "a size that divides every edge of the box into a "
-                    "multiple of 4 cells with " +
-                      mode + " (the coarse runs have cells of 2h and 4h)" +
-                      suggestion() + "; here the edge " +
-                      std::string(1, "xyz"[d]) + " of length " +
-                      number_text(edge(d)) + " gets " +
-                      std::to_string(cells(d, geometry.cell_size)) + " cells");
+    // The geometry knows how its h is set, and so which meshes of 2h and
+    // 4h exist.
+    create_geometry(*this)->check_coarse_runs(mode);
   }
 
   // A probe's quantity needs the probe: the target must be one of this
@@ -1573,7 +1523,7 @@ namespace Contact
     // its slip zone, and its x has no scale of its own.
     if (accuracy.target_quantity.kind != Quantity::Kind::slip_zone_start)
       return;
-    AssertThrow(geometry.domain != GeometryParameters::Domain::shell,
+    AssertThrow(!create_geometry(*this)->gamma3_is_closed(),
                 ExcMessage("Entry '" + Entry::target_quantity + "' = '" +
                            target +
                            "' is not defined on a shell (its Gamma_3 is a "

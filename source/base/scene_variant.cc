@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <base/scene_variant.h>
+#include <geometry/geometry.h>
 
 #include <algorithm>
 #include <cmath>
@@ -137,14 +138,10 @@ namespace Contact
         quiet ? "0" : std::to_string(output.checkpoint_interval);
       entries[Entry::checkpoint_minutes] =
         quiet ? "0" : exact_text(output.checkpoint_minutes);
-      // 'Cell size' describes the box only.
-      const GeometryParameters &geometry = scene.geometry;
-      if (geometry.is_box())
-        entries[Entry::cell_size] =
-          exact_text(std::ldexp(geometry.cell_size, -variant.h_halvings));
-      else
-        entries[Entry::mesh_refinements] = std::to_string(
-          static_cast<int>(geometry.mesh_refinements) + variant.h_halvings);
+      // The geometry knows which of its entries sets h.
+      for (const auto &[path, value] :
+           create_geometry(scene)->entries_with_h_halved(variant.h_halvings))
+        entries[path] = value;
       return entries;
     }
   } // namespace

@@ -16,6 +16,7 @@
 #include <core/csv_file.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
+#include <geometry/geometry.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -363,26 +364,14 @@ namespace Contact
 
   // @sect4{ContactProblem::summary}
 
-  // What a driver gets of the run (collective). A box has round(edge / h)
-  // cells along each edge: the largest of their sizes is the h it has.
+  // What a driver gets of the run (collective); its h is the geometry's
+  // (Geometry::cell_size()).
   template <int dim>
   RunSummary ContactProblem<dim>::summary() const
   {
     RunSummary summary;
-    summary.cell_size = 0;
-    if (parameters.geometry.is_box())
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const double edge = parameters.geometry.upper_corner[d] -
-                              parameters.geometry.lower_corner[d];
-          summary.cell_size = std::max(
-            summary.cell_size,
-            edge /
-              std::max(1., std::round(edge / parameters.geometry.cell_size)));
-        }
-    else
-      summary.cell_size =
-        GridTools::maximal_cell_diameter(*space.triangulation, *space.mapping);
+    summary.cell_size = create_geometry<dim>(parameters, mpi_communicator)
+                          ->cell_size(*space.triangulation, *space.mapping);
     summary.time_step           = time_step;
     summary.n_steps             = n_time_steps;
     summary.n_dofs              = space.dof_handler.n_dofs();

@@ -142,7 +142,7 @@ namespace Contact
     // Q2 nodes on the chords of a circle make the slip onset converge at
     // first order in h only, Q2 on the curved cells at second order.
     const auto &geometry = parameters.geometry;
-    if (geometry.domain == GeometryParameters::Domain::shell &&
+    if (create_geometry(parameters)->has_curved_boundary() &&
         geometry.mapping_degree < space.fe.degree)
       pcout << "Warning: '" << Entry::mapping_degree
             << "' = " << geometry.mapping_degree << " is below '"

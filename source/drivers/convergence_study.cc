@@ -26,6 +26,7 @@
 #include <core/postprocessor.h>
 #include <drivers/convergence_study.h>
 #include <drivers/reference_interpolation.h>
+#include <geometry/geometry.h>
 
 #include <cmath>
 #include <fstream>
@@ -84,15 +85,10 @@ namespace Contact
 
     void announce(const Parameters &level_parameters, const unsigned int level)
     {
-      const GeometryParameters &geometry = level_parameters.geometry;
-      std::ostringstream        line;
+      std::ostringstream line;
       line << std::setprecision(17) << "Convergence study, level " << level
-           << ": ";
-      if (geometry.is_box())
-        line << "h = " << geometry.cell_size;
-      else
-        line << "mesh refinements = " << geometry.mesh_refinements;
-      line << ", k = " << level_parameters.time.time_step;
+           << ": " << create_geometry(level_parameters)->mesh_size_text()
+           << ", k = " << level_parameters.time.time_step;
       console() << line.str() << std::endl;
     }
 

@@ -33,6 +33,7 @@
 #include <drivers/error_estimate.h>
 #include <drivers/mesh_adaptation.h>
 #include <drivers/reference_interpolation.h>
+#include <geometry/geometry.h>
 
 #include <algorithm>
 #include <array>
@@ -371,24 +372,11 @@ namespace Contact
     // @sect3{The coarse runs}
 
     // Whether the mesh allows the run with 8h, which checks the order the
-    // finer runs show: a box whose edges have a multiple of 8 cells, or a
-    // mesh refined at least three times (the runs with 2h and 4h are
-    // checked by Parameters::check_error_estimate()).
+    // finer runs show (the runs with 2h and 4h are checked by
+    // Parameters::check_error_estimate()).
     bool has_check_run(const Parameters &parameters)
     {
-      const GeometryParameters &geometry = parameters.geometry;
-      if (!geometry.is_box())
-        return geometry.mesh_refinements >= 3;
-      for (unsigned int d = 0; d < parameters.dimension; ++d)
-        {
-          const double edge =
-            geometry.upper_corner[d] - geometry.lower_corner[d];
-          const long n = std::lround(edge / geometry.cell_size);
-          if (n % 8 != 0 ||
-              std::lround(edge / (8 * geometry.cell_size)) != n / 8)
-            return false;
-        }
-      return true;
+      return create_geometry(parameters)->coarsening_obstacle(3).empty();
     }
 
     // The scene with h and k times the factors, its state at T and, for
@@ -734,9 +722,7 @@ namespace Contact
       if (sequence.size() < 4)
         out << "The order is not checked by a run with 8h and 8k: the mesh "
             << "does not allow it ("
-            << (parameters.geometry.is_box() ?
-                  "every edge of the box needs a multiple of 8 cells" :
-                  "'" + Entry::mesh_refinements + "' needs to be at least 3")
+            << create_geometry(parameters)->coarsening_obstacle(3)
             << "); the V-norm's estimate rests on one measured order, and "
             << "the other quantities get none." << std::endl;
       if (!separate && orders.empty() && parameters.geometry.fe_degree >= 2)

@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace Contact
 {
@@ -46,7 +48,8 @@ namespace Contact
       geometry.upper_corner = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Upper corner")));
       geometry.cell_size = prm.get_double("Cell size");
-      if (!geometry.is_box())
+      if (!geometry.mesh_file.empty() ||
+          geometry.domain != GeometryParameters::Domain::box)
         return;
       const auto &lower = geometry.lower_corner, &upper = geometry.upper_corner;
       check_entry(lower.size() == dim,
@@ -154,6 +157,166 @@ namespace Contact
                 1e-10 * (upper[d] - lower[d]))
               face->set_boundary_id(2 * d + side);
     return n_refinements;
+  }
+
+
+  // @sect4{The cell size h of the box}
+
+  // Every edge has round(edge / h) cells (Box::create_coarse_mesh()); h is
+  // the entry that a variant scales, written with 17 digits so that it
+  // reads back as the same double.
+  template <int dim>
+  long Box<dim>::n_cells(const unsigned int d, const double size) const
+  {
+    const auto  &geometry = this->parameters.geometry;
+    const double edge     = geometry.upper_corner[d] - geometry.lower_corner[d];
+    return static_cast<long>(std::max(1., std::round(edge / size)));
+  }
+
+
+  template <int dim>
+  std::map<std::string, std::string>
+  Box<dim>::entries_with_h_halved(const int h_halvings) const
+  {
+    std::ostringstream text;
+    text << std::setprecision(17)
+         << std::ldexp(this->parameters.geometry.cell_size, -h_halvings);
+    return {{Entry::cell_size, text.str()}};
+  }
+
+
+  template <int dim>
+  std::string Box<dim>::mesh_size_text() const
+  {
+    std::ostringstream text;
+    text << std::setprecision(17)
+         << "h = " << this->parameters.geometry.cell_size;
+    return text.str();
+  }
+
+
+  // The largest of the edges' cell sizes is the h the box has.
+  template <int dim>
+  double Box<dim>::cell_size(const Triangulation<dim> &,
+                             const Mapping<dim> &) const
+  {
+    const auto &geometry = this->parameters.geometry;
+    double      h        = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      h = std::max(h,
+                   (geometry.upper_corner[d] - geometry.lower_corner[d]) /
+                     n_cells(d, geometry.cell_size));
+    return h;
+  }
+
+
+  // The mesh of 2^doublings h is nested around this one where every edge
+  // has a multiple of 2^doublings cells that stays the same count divided.
+  template <int dim>
+  std::string Box<dim>::coarsening_obstacle(const unsigned int doublings) const
+  {
+    const double h      = this->parameters.geometry.cell_size;
+    const long   factor = 1L << doublings;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const long n = n_cells(d, h);
+        if (n % factor != 0 || n_cells(d, factor * h) != n / factor)
+          return "every edge of the box needs a multiple of " +
+                 std::to_string(factor) + " cells";
+      }
+    return "";
+  }
+
+
+  // @sect4{Box::check_coarse_runs}
+
+  // The coarse runs have cells of exactly 2h and 4h only where each edge's
+  // number of cells is a multiple of 4 and stays the same count halved.
+  template <int dim>
+  void Box<dim>::check_coarse_runs(const std::string &mode) const
+  {
+    const auto &geometry = this->parameters.geometry;
+    const auto  edge     = [&](const unsigned int d) {
+      return geometry.upper_corner[d] - geometry.lower_corner[d];
+    };
+    const auto fits = [&](const unsigned int d, const double size) {
+      const long n = n_cells(d, size);
+      return n % 4 == 0 && n_cells(d, 2 * size) == n / 2 &&
+             n_cells(d, 4 * size) == n / 4;
+    };
+    // The largest size at most the given one that fits every edge (a
+    // quarter of the shortest edge divided by m fits it; the others are
+    // tried), as the message's suggestion.
+    const auto suggestion = [&]() {
+      double shortest = edge(0);
+      for (unsigned int d = 1; d < dim; ++d)
+        shortest = std::min(shortest, edge(d));
+      for (long m = 1; m <= 4096; ++m)
+        {
+          const double size = shortest / (4 * m);
+          bool         all  = size <= geometry.cell_size * (1 + 1e-12);
+          for (unsigned int d = 0; all && d < dim; ++d)
+            all = fits(d, size);
+          if (all)
+            return "; e.g. " + number_text(size) + " fits every edge";
+        }
+      return std::string();
+    };
+    for (unsigned int d = 0; d < dim; ++d)
+      if (!fits(d, geometry.cell_size))
+        check_entry(false,
+                    Entry::cell_size,
+                    geometry.cell_size,
+                    "a size that divides every edge of the box into a "
+                    "multiple of 4 cells with " +
+                      mode + " (the coarse runs have cells of 2h and 4h)" +
+                      suggestion() + "; here the edge " +
+                      std::string(1, "xyz"[d]) + " of length " +
+                      number_text(edge(d)) + " gets " +
+                      std::to_string(n_cells(d, geometry.cell_size)) +
+                      " cells");
+  }
+
+
+  // @sect4{Box::check_manufactured_scene}
+
+  // The manufactured solution vanishes on x = 0, has u.n = 0 on y = 0 and
+  // its stick/slip front at x = 1/2: the box must start at the origin,
+  // clamp its face x = 0 (id 0), put the contact on its face y = 0 (id 2)
+  // and have a mesh line at x = 1/2, or the "exact" solution would not
+  // solve the discrete problem's continuous counterpart, or not be
+  // resolved.
+  template <int dim>
+  void Box<dim>::check_manufactured_scene() const
+  {
+    const auto &geometry = this->parameters.geometry;
+    const auto &boundary = this->parameters.boundary;
+    AssertThrow(geometry.lower_corner[0] == 0. &&
+                  geometry.lower_corner[1] == 0.,
+                ExcMessage("'" + Entry::manufactured_solution +
+                           "' needs "
+                           "'" +
+                           Entry::lower_corner +
+                           "' to start at x = 0, y = 0."));
+    AssertThrow(boundary.clamped_ids == std::vector<types::boundary_id>{0} &&
+                  boundary.contact_ids == std::vector<types::boundary_id>{2},
+                ExcMessage("'" + Entry::manufactured_solution +
+                           "' needs "
+                           "'" +
+                           Entry::clamped_boundary_ids +
+                           " = 0' "
+                           "(x = 0) and 'Contact boundary ids = 2' (y = 0)."));
+    const double length = geometry.upper_corner[0] - geometry.lower_corner[0];
+    const double cells_to_front =
+      0.5 / (length / n_cells(0, geometry.cell_size));
+    AssertThrow(std::abs(cells_to_front - std::round(cells_to_front)) < 1e-8,
+                ExcMessage("'" + Entry::manufactured_solution +
+                           "': the "
+                           "stick/slip front x = 1/2 must be a mesh line; "
+                           "choose '" +
+                           Entry::cell_size +
+                           "' so that 1/(2h) cells "
+                           "fit in [0, 1/2]."));
   }
 
 

@@ -93,49 +93,21 @@ namespace Contact
     // @sect4{check_points_in_body}
 
     // A refinement point outside the body grades nothing near it, or cells
-    // far from where the user meant: each must lie in the body. The cells of
-    // a box or a mesh file have straight sides, so the mesh (each process
-    // searches its own cells) decides; a shell's cells only approximate its
-    // circles, so its radii decide (to 1e-6 of the outer radius; a shell
-    // is not rotated).
+    // far from where the user meant: each must lie in the body, as the
+    // geometry decides (Geometry::contains()).
     template <int dim>
-    void check_points_in_body(const GeometryParameters &geometry,
-                              const MPI_Comm            communicator,
+    void check_points_in_body(const Geometry<dim>      &geometry,
+                              const GeometryParameters &entries,
                               const Triangulation<dim> &mesh)
     {
-      for (const auto &coordinates : geometry.refinement_points)
+      for (const auto &coordinates : entries.refinement_points)
         {
           Point<dim> point;
           for (unsigned int d = 0; d < dim; ++d)
             point[d] = coordinates[d];
-          bool inside = false;
-          if (geometry.domain == GeometryParameters::Domain::shell &&
-              geometry.mesh_file.empty())
-            {
-              const Point<dim> &p     = point;
-              const double      slack = 1e-6 * geometry.outer_radius;
-              const double      r     = std::hypot(p[0], p[1]);
-              inside =
-                r >= geometry.inner_radius - slack &&
-                r <= geometry.outer_radius + slack &&
-                (dim == 2 || (p[dim - 1] >= -slack &&
-                              p[dim - 1] <= geometry.shell_length + slack));
-            }
-          else
-            {
-              try
-                {
-                  inside = !GridTools::find_all_active_cells_around_point(
-                              MappingQ1<dim>(), mesh, point, 1e-10)
-                              .empty();
-                }
-              catch (const ExceptionBase &)
-                {}
-              inside = Utilities::MPI::logical_or(inside, communicator);
-            }
           std::ostringstream text;
           text << point;
-          AssertThrow(inside,
+          AssertThrow(geometry.contains(point, mesh),
                       ExcMessage("Entry '" + Entry::refinement_points +
                                  "': the point " + text.str() +
                                  " is not in the body; allowed are points "
@@ -187,12 +159,98 @@ namespace Contact
   } // namespace
 
 
+  // @sect4{What a geometry answers without a mesh}
+
+  GeometryBase::GeometryBase(const Parameters &run_parameters)
+    : parameters(run_parameters)
+  {}
+
+
+  // The defaults are those of a geometry whose mesh is its coarse mesh
+  // refined 'Mesh refinements' times: one refinement more halves h, and
+  // the meshes of 2h and 4h exist where it is refined at least twice.
+  std::map<std::string, std::string>
+  GeometryBase::entries_with_h_halved(const int h_halvings) const
+  {
+    return {
+      {Entry::mesh_refinements,
+       std::to_string(static_cast<int>(parameters.geometry.mesh_refinements) +
+                      h_halvings)}};
+  }
+
+
+  std::string GeometryBase::mesh_size_text() const
+  {
+    return "mesh refinements = " +
+           std::to_string(parameters.geometry.mesh_refinements);
+  }
+
+
+  void GeometryBase::check_coarse_runs(const std::string &mode) const
+  {
+    check_entry(parameters.geometry.mesh_refinements >= 2,
+                Entry::mesh_refinements,
+                parameters.geometry.mesh_refinements,
+                "at least 2 with " + mode +
+                  " (the coarse runs use one and two refinements "
+                  "fewer)");
+  }
+
+
+  std::string
+  GeometryBase::coarsening_obstacle(const unsigned int doublings) const
+  {
+    if (parameters.geometry.mesh_refinements >= doublings)
+      return "";
+    return "'" + Entry::mesh_refinements + "' needs to be at least " +
+           std::to_string(doublings);
+  }
+
+
+  void GeometryBase::check_manufactured_scene() const
+  {
+    AssertThrow(false,
+                ExcMessage("'" + Entry::manufactured_solution +
+                           "' needs the box: '" + Entry::domain +
+                           " = box' and no '" + Entry::mesh_file + "'."));
+  }
+
+
   template <int dim>
   Geometry<dim>::Geometry(const Parameters &run_parameters,
                           const MPI_Comm    mpi_communicator)
-    : parameters(run_parameters)
+    : GeometryBase(run_parameters)
     , communicator(mpi_communicator)
   {}
+
+
+  // @sect4{Geometry::contains}
+
+  // The cells of a box or a mesh file have straight sides, so the mesh
+  // decides (each process searches its own cells).
+  template <int dim>
+  bool Geometry<dim>::contains(const Point<dim>         &point,
+                               const Triangulation<dim> &mesh) const
+  {
+    bool inside = false;
+    try
+      {
+        inside = !GridTools::find_all_active_cells_around_point(
+                    MappingQ1<dim>(), mesh, point, 1e-10)
+                    .empty();
+      }
+    catch (const ExceptionBase &)
+      {}
+    return Utilities::MPI::logical_or(inside, communicator);
+  }
+
+
+  template <int dim>
+  double Geometry<dim>::cell_size(const Triangulation<dim> &mesh,
+                                  const Mapping<dim>       &mapping) const
+  {
+    return GridTools::maximal_cell_diameter(mesh, mapping);
+  }
 
 
   // @sect4{Geometry::create_mesh}
@@ -217,7 +275,7 @@ namespace Contact
     mesh.refine_global(n_refinements);
     if (!geometry.refinement_points.empty() && geometry.refinement_radius != 0.)
       {
-        check_points_in_body(geometry, communicator, mesh);
+        check_points_in_body(*this, geometry, mesh);
         grade_towards_points(geometry, communicator, mesh);
       }
     check_boundary_ids(parameters.boundary, mesh);
@@ -277,6 +335,23 @@ namespace Contact
           return std::make_unique<Shell<dim>>(parameters, communicator);
       }
     AssertThrow(false, ExcInternalError("A Domain without a geometry."));
+    return nullptr;
+  }
+
+
+  // On one process: its answers build no mesh.
+  std::unique_ptr<const GeometryBase>
+  create_geometry(const Parameters &parameters)
+  {
+#ifdef CONTACT_WITH_2D
+    if (parameters.dimension == 2)
+      return create_geometry<2>(parameters, MPI_COMM_SELF);
+#endif
+#ifdef CONTACT_WITH_3D
+    if (parameters.dimension == 3)
+      return create_geometry<3>(parameters, MPI_COMM_SELF);
+#endif
+    AssertThrow(false, ExcInternalError("A dimension without a geometry."));
     return nullptr;
   }
 

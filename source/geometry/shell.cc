@@ -182,6 +182,25 @@ namespace Contact
   }
 
 
+  // @sect4{Shell::contains}
+
+  // The shell's cells only approximate its circles (a polygon, or
+  // polynomials through points of them), so its radii decide, to 1e-6 of
+  // the outer radius (a shell is not rotated).
+  template <int dim>
+  bool Shell<dim>::contains(const Point<dim> &point,
+                            const Triangulation<dim> &) const
+  {
+    const auto  &geometry = this->parameters.geometry;
+    const double slack    = 1e-6 * geometry.outer_radius;
+    const double r        = std::hypot(point[0], point[1]);
+    return r >= geometry.inner_radius - slack &&
+           r <= geometry.outer_radius + slack &&
+           (dim == 2 || (point[dim - 1] >= -slack &&
+                         point[dim - 1] <= geometry.shell_length + slack));
+  }
+
+
 #define INSTANTIATE(dim) template class Shell<dim>;
   CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

@@ -10,6 +10,7 @@
 #include <boost/archive/binary_oarchive.hpp>
 
 #include <core/postprocessor.h>
+#include <geometry/geometry.h>
 #include <postprocess/slip_zone.h>
 
 #include <cmath>
@@ -185,11 +186,10 @@ namespace Contact
       this->friction_solver().boundary().nodes;
     const Vector<double> &friction_force =
       this->friction_solver().state().friction_force;
-    const bool shell =
-      this->parameters().geometry.domain == GeometryParameters::Domain::shell;
+    const bool closed = create_geometry(this->parameters())->gamma3_is_closed();
     const SlipZone zone = slip_zone(contact_nodes,
                                     this->friction_solver().state().node_state,
-                                    shell);
+                                    closed);
     for (const double t : due)
       {
         this->pcout() << "Report t = " << std::setprecision(6) << t << " (step "
@@ -201,7 +201,7 @@ namespace Contact
                             "")
                       << "): " << zone.n_stick << " stick, " << zone.n_slip
                       << " slip";
-        if (zone.n_slip > 0 && !shell)
+        if (zone.n_slip > 0 && !closed)
           this->pcout() << ", slip zone x in [" << zone.from << ", " << zone.to
                         << "]";
         else if (zone.n_slip > 0 && zone.n_stick > 0)
@@ -231,7 +231,7 @@ namespace Contact
         // A scalar along the tangent where Gamma_3 is straight (all its
         // nodes share one tangent), the vector otherwise. (The slip zone
         // is given by its x range, which locates it on any open Gamma_3,
-        // or on a shell's closed one by its arc.)
+        // or on a closed one, a shell's, by its arc.)
         bool straight = (dim == 2 && !contact_nodes.empty());
         for (const ContactNode<dim> &node : contact_nodes)
           straight =

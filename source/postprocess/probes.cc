@@ -8,8 +8,10 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <core/postprocessor.h>
+#include <geometry/geometry.h>
 
 #include <limits>
+#include <memory>
 #include <sstream>
 
 namespace Contact
@@ -52,6 +54,10 @@ namespace Contact
                          this->mpi_communicator()),
                        n_processes = Utilities::MPI::n_mpi_processes(
                          this->mpi_communicator());
+    // Built here from the parameters, as everywhere that asks
+    // (create_geometry()): it only answers.
+    const std::unique_ptr<const Geometry<dim>> geometry =
+      create_geometry<dim>(this->parameters(), this->mpi_communicator());
     probes.clear();
     for (const auto &coordinates : this->parameters().output.probe_points)
       {
@@ -83,8 +89,8 @@ namespace Contact
         std::ostringstream text;
         text << point;
         if (evaluating_process == n_processes &&
-            this->parameters().geometry.domain ==
-              GeometryParameters::Domain::shell)
+            geometry->has_curved_boundary() &&
+            geometry->contains(point, *space.triangulation))
           evaluating_process = probe_near_curved_boundary(point, probe);
         AssertThrow(evaluating_process < n_processes,
                     ExcMessage("Entry '" + Entry::probe_points +
@@ -100,32 +106,23 @@ namespace Contact
 
   // @sect4{Probes::probe_near_curved_boundary}
 
-  // A point of the shell (between its radii, and in 3D its end faces, to
-  // 1e-6 of the outer radius, as a point typed with a few digits is) that
+  // A point of a body with a curved boundary (Geometry::contains()) that
   // no cell contains, because the cells' boundary is a polygon or a
-  // polynomial through points of the circle, not the circle itself: the
+  // polynomial through points of the curve, not the curve itself: the
   // nearest point of the cell around it (its reference coordinates, up to
   // half a cell outside, moved onto the reference cell). Of all processes
   // the one with the nearest cell evaluates it (the lowest rank on ties);
-  // the return value is that process, or the number of processes if the
-  // point is not of the shell.
+  // the return value is that process, or the number of processes if no
+  // cell is near.
   template <int dim>
   unsigned int Probes<dim>::probe_near_curved_boundary(
     const Point<dim> &point,
     std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
       &probe) const
   {
-    const DiscreteSpace<dim> &space    = this->space();
-    const auto               &geometry = this->parameters().geometry;
-    const double              radius   = std::hypot(point[0], point[1]),
-                 slack                 = 1e-6 * geometry.outer_radius;
-    const unsigned int n_processes =
+    const DiscreteSpace<dim> &space = this->space();
+    const unsigned int        n_processes =
       Utilities::MPI::n_mpi_processes(this->mpi_communicator());
-    if (radius < geometry.inner_radius - slack ||
-        radius > geometry.outer_radius + slack ||
-        (dim == 3 && (point[dim - 1] < -slack ||
-                      point[dim - 1] > geometry.shell_length + slack)))
-      return n_processes;
     double outside = std::numeric_limits<double>::max();
     try
       {

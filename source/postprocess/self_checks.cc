@@ -26,6 +26,7 @@
 #include <boost/archive/binary_oarchive.hpp>
 
 #include <core/postprocessor.h>
+#include <geometry/geometry.h>
 #include <postprocess/gamma3_map.h>
 
 #include <array>
@@ -89,11 +90,11 @@ namespace Contact
    *   - moment_balance: the balance of moments about the z-axis, (5.2)
    *     tested with the rigid rotation r = e_z x x, relative to the
    *     step's sum of the magnitudes of the products it adds up
-   *     (update_moments()). Checked where r lies in V_h, and on a shell
-   *     without a clamp whose mapping's degree is at most the element's,
-   *     where it must (MomentBalance): it catches wrong loads or
-   *     velocities in the balance law of the angular momentum, and on such
-   *     a shell nodes' normals that are not radial.
+   *     (update_moments()). Checked where r lies in V_h, and on a round
+   *     body without a clamp whose mapping's degree is at most the
+   *     element's, where it must (MomentBalance): it catches wrong loads
+   *     or velocities in the balance law of the angular momentum, and on
+   *     such a body nodes' normals that are not radial.
    */
   struct SelfCheckValues
   {
@@ -505,10 +506,10 @@ namespace Contact
   // angular momentum with the exact x is r^T M w. Whether r lies in V_h is
   // asked of the constraints themselves (they leave r as it is, to 1e-12 of
   // its size): a clamp, or a normal constraint not normal to r, excludes
-  // it. On a shell without a clamp (and without hanging nodes that bend r
-  // off the circle) r must lie in V_h (Gamma_3 is a circle or a cylinder
-  // about the axis): there the check is made in any case, and nodes'
-  // normals that are not radial fail it instead of switching it off.
+  // it. On a body symmetric about the axis without a clamp (and without
+  // hanging nodes that bend r off the circle) r must lie in V_h (a shell):
+  // there the check is made in any case, and nodes' normals that are not
+  // radial fail it instead of switching it off.
   template <int dim>
   void SelfChecks<dim>::setup_moment_balance()
   {
@@ -537,7 +538,7 @@ namespace Contact
     const auto                      &geometry   = parameters.geometry;
     const double rotation_defect                = defect(space.constraints);
     const bool   must_admit_rotation =
-      geometry.domain == GeometryParameters::Domain::shell &&
+      create_geometry(parameters)->is_symmetric_about_z_axis() &&
       parameters.boundary.clamped_ids.empty() && defect(hanging) <= 1e-12;
     moment_balance_is_checked =
       (rotation_defect <= 1e-12 || must_admit_rotation) &&
@@ -842,16 +843,15 @@ namespace Contact
       line("balance of moments about the z-axis",
            c.moment_balance,
            c.moment_balance);
-    else if (this->parameters().geometry.domain ==
-             GeometryParameters::Domain::shell)
+    else if (create_geometry(this->parameters())->is_symmetric_about_z_axis())
       print_why_moments_are_not_checked();
   }
 
 
   // @sect4{SelfChecks::print_why_moments_are_not_checked}
 
-  // On a shell, where a user expects the balance of moments, the reason it
-  // is not a self-check of this run (setup_moment_balance()).
+  // On a round body, where a user expects the balance of moments, the
+  // reason it is not a self-check of this run (setup_moment_balance()).
   template <int dim>
   void SelfChecks<dim>::print_why_moments_are_not_checked() const
   {

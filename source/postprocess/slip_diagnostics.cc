@@ -9,6 +9,7 @@
 #include <boost/archive/binary_oarchive.hpp>
 
 #include <core/postprocessor.h>
+#include <geometry/geometry.h>
 #include <postprocess/slip_zone.h>
 
 #include <cmath>
@@ -191,16 +192,15 @@ namespace Contact
     auto &quantities = summary.final_quantities;
     quantities.emplace_back(Quantity{Kind::friction_dissipation}.name(),
                             this->state().energy.friction_dissipation);
-    const bool shell =
-      this->parameters().geometry.domain == GeometryParameters::Domain::shell;
+    const bool closed = create_geometry(this->parameters())->gamma3_is_closed();
     const SlipZone zone = slip_zone(this->friction_solver().boundary().nodes,
                                     this->friction_solver().state().node_state,
-                                    shell);
+                                    closed);
     const unsigned int n_nodes = zone.n_stick + zone.n_slip;
     if (n_nodes > 0)
       quantities.emplace_back(Quantity{Kind::slipping_share}.name(),
                               double(zone.n_slip) / n_nodes);
-    if (!shell)
+    if (!closed)
       quantities.emplace_back(Quantity{Kind::slip_zone_start}.name(),
                               zone.n_slip > 0 ?
                                 zone.from :

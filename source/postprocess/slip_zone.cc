@@ -13,8 +13,8 @@ namespace Contact
   // @sect4{slip_zone}
 
   // The slipping nodes of Gamma_3 and where they are: the range of their x
-  // on a box or a mesh file; on a shell, whose Gamma_3 is closed, the
-  // smallest arc about the z-axis that holds them all, from `from` to `to`
+  // on an open Gamma_3; on one closed around the z-axis (a shell's), the
+  // smallest arc about the axis that holds them all, from `from` to `to`
   // counterclockwise in degrees: the complement of the widest gap between
   // slipping nodes.
   template <int dim>
