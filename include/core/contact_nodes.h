@@ -21,14 +21,11 @@ namespace Contact
    * ordered along Gamma_3. A node all of whose dofs are constrained (where
    * Gamma_3 meets the clamp, or a hanging node) has no friction unknown
    * and is left out. Every process gets every node (collective).
-   * `share_hanging_weights` = false (a test of the self-checks) drops the
-   * hanging nodes' weights instead.
    */
   template <int dim>
   std::vector<ContactNode<dim>>
   make_contact_nodes(const DiscreteSpace<dim>              &space,
-                     const std::vector<types::boundary_id> &contact_ids,
-                     const bool share_hanging_weights = true);
+                     const std::vector<types::boundary_id> &contact_ids);
 
   /** The directions in which the constraints of V_h fix a node with these
    *  dofs (a clamp, the normal of Gamma_3, of a symmetry plane, or the

@@ -140,11 +140,8 @@ namespace Contact
   class ContactProblem
   {
   public:
-    /** `sabotage`: errors injected on purpose, for the tests of the
-     *  self-checks only. */
-    explicit ContactProblem(const Parameters    &run_parameters,
-                            const Sabotage<dim> &sabotage = Sabotage<dim>());
-    ~ContactProblem();
+    explicit ContactProblem(const Parameters &run_parameters);
+    virtual ~ContactProblem();
 
     RunSummary run();
 
@@ -177,20 +174,29 @@ namespace Contact
     double     strain_norm(const VectorType &v) const;
     VectorType ghosted(const VectorType &v) const;
 
-  private:
+  protected:
+    // The phases of a run and the data members. A problem derived from
+    // this one, a variant of the scheme, reads the members and may
+    // override the virtual phases.
+
     // setup.cc
     void make_grid();
     void setup_system();
     void report_mesh() const;
+    /** The friction solver on the nodes of Gamma_3 of the current mesh. */
+    virtual std::unique_ptr<FrictionSolver<dim>> create_friction_solver();
 
     // mesh_transfer.cc
     void transfer_to_adapted_mesh();
 
     // assembly.cc
-    void             assemble_matrices();
-    void             form_system_matrix();
-    void             set_initial_values();
-    void             update_state_products();
+    /** M, A_h, B_h and K of the current mesh. */
+    virtual void assemble_matrices();
+    void         form_system_matrix();
+    void         set_initial_values();
+    /** The products of the state with the matrices (and the energies of
+     *  the state) after u_n and w_n were set. */
+    virtual void     update_state_products();
     void             warn_of_normal_component(const VectorType  &values,
                                               const std::string &entry) const;
     void             condensed_product(const MatrixType &matrix,
@@ -233,7 +239,6 @@ namespace Contact
     MPI_Comm            mpi_communicator;
     ConditionalOStream  pcout;
     mutable TimerOutput computing_timer;
-    const Sabotage<dim> sabotage;
 
     // With 'Verification/Manufactured solution', the exact solution that
     // replaces the load data of the .prm.
@@ -250,8 +255,8 @@ namespace Contact
     std::function<void()> choose_cells_to_adapt;
     // A resumed run whose checkpoint was written at the end of a run, at a
     // step after which the mesh adapts: the adaptation comes first.
-    bool                              adaptation_due = false;
-    const std::unique_ptr<Loads<dim>> loads;
+    bool                        adaptation_due = false;
+    std::unique_ptr<Loads<dim>> loads;
 
     // The matrices (assembly.cc) and the factor of K (time_stepping.cc),
     // made once per mesh (and again when a step is cut).

@@ -41,23 +41,24 @@ namespace Contact
   class Loads
   {
   public:
-    /** `load_factor` multiplies every assembled load: the tests of the
-     *  self-checks inject a wrong load with it (Sabotage). */
     /** The expressions are parsed here, so that a syntax error is
      *  reported before anything is computed. */
     Loads(const Parameters                &run_parameters,
           const ManufacturedSolution<dim> *exact,
           const DiscreteSpace<dim>        &discrete_space,
-          TimerOutput                     &timer,
-          const double                     factor);
+          TimerOutput                     &timer);
+
+    virtual ~Loads() = default;
 
     /** After the set-up of the space and of Gamma_3 (whose nodes carry the
      *  manufactured solution's f_3): a constant body force is assembled. */
     void setup(const ContactBoundary<dim> &boundary);
 
     /** F_n at `load_time`, condensed with the constraints like the
-     *  matrices. */
-    void assemble(const double load_time, VectorType &load_vector) const;
+     *  matrices (virtual: a problem with a load vector of its own derives
+     *  from Loads). */
+    virtual void assemble(const double load_time,
+                          VectorType  &load_vector) const;
 
     /** F(t) . w for fields w in V_h (ghosted), each with its scale. */
     std::vector<LoadPower>
@@ -89,7 +90,6 @@ namespace Contact
     const DiscreteSpace<dim>        &space;
     const ContactBoundary<dim>      *gamma3 = nullptr;
     TimerOutput                     &computing_timer;
-    const double                     load_factor;
 
     std::unique_ptr<FunctionParser<dim>> body_force;
     std::unique_ptr<Function<dim>>       u0;

@@ -16,7 +16,8 @@
  * v = v_free - D eta, one Newton step, and y = D x.
  *
  *   friction_solver.cc  the step, the Newton method and the convexification
- *   contact_paths.cc    the three paths
+ *   contact_paths.cc    the maps C and C^T, the constraints path
+ *   delassus_paths.cc   the two Delassus paths
  */
 #ifndef contact_friction_solver_h
 #define contact_friction_solver_h
@@ -37,7 +38,6 @@
 #include <base/parameters.h>
 
 #include <array>
-#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -186,49 +186,6 @@ namespace Contact
    *  throws it together: the decisions are reduced over the processes). */
   DeclException1(ExcStepNotConverged, std::string, << arg1);
 
-  /**
-   * Errors injected on purpose, to see that the self-checks of a run
-   * (ContactProblem::check_step) catch them: only the tests set these. The
-   * friction solver then solves with the bound S mu(s) times
-   * `bound_factor(x_p)` at node p (a wrong coefficient; 0 removes the
-   * friction there) while the checks use the true law, and with
-   * `reversed_friction_force` it applies and reports -eta instead of eta.
-   * The time stepping multiplies its load vector by `load_factor`. The
-   * errors in the solver's map of Gamma_3, which the checks do not share
-   * (Gamma3Map): a wrong compliance (`compliance_factor` times D on the
-   * Delassus paths, times the step's final velocity on the constraints
-   * path, whose friction iteration then stays consistent),
-   * the Delassus operator of the old k kept after a step cut, the nodes'
-   * weights times `weight_factor`, the first tangent of the node in the
-   * middle of the list turned towards its normal by `tangent_turn`
-   * radians, and after each step the first sticking node moved along its
-   * tangent by `stick_node_velocity` times max |w_n|, or (an error in the
-   * constraints of V_h, not in the law) along its normal by
-   * `normal_velocity` times max |w_n|, the constraints not applied. The
-   * assembly multiplies B by `stiffness_factor`. With
-   * `unshared_hanging_weights` the hanging nodes of Gamma_3 keep their
-   * weights (lost with them) instead of sharing them. With
-   * `stale_energies_after_mesh_change` a transfer to an adapted mesh keeps
-   * the kinetic and elastic energy of the old mesh.
-   */
-  template <int dim>
-  struct Sabotage
-  {
-    std::function<double(const Point<dim> &)> bound_factor;
-    bool                                      reversed_friction_force = false;
-    double                                    load_factor             = 1.;
-    double                                    compliance_factor       = 1.;
-    bool   stale_delassus_after_step_cut                              = false;
-    double weight_factor                                              = 1.;
-    double tangent_turn                                               = 0.;
-    double stick_node_velocity                                        = 0.;
-    double normal_velocity                                            = 0.;
-    double stiffness_factor                                           = 1.;
-    bool   unshared_hanging_weights                                   = false;
-    bool   stale_energies_after_mesh_change                           = false;
-  };
-
-
   /** Which step is solved, for the messages of a failure. */
   struct StepLabel
   {
@@ -265,14 +222,8 @@ namespace Contact
     newton_step(const std::vector<NodeLinearisation> &linearisation,
                 Vector<double>                       &eta,
                 Vector<double>                       &v) = 0;
-    /** w_n = K^{-1} (step_rhs - C^T eta). */
+    /** w_n = K^{-1} (step_rhs - C^T eta), for the step's final forces. */
     virtual void velocity(const Vector<double> &eta, VectorType &w) = 0;
-    /** The same for the step's final forces. (The constraints path makes
-     *  its Sabotage there: w_n times the compliance factor.) */
-    virtual void final_velocity(const Vector<double> &eta, VectorType &w)
-    {
-      velocity(eta, w);
-    }
     /** y = D x, outside of a step (the Lanczos method for the convexity
      *  limit). */
     virtual void apply_delassus(const Vector<double> &x, Vector<double> &y) = 0;
@@ -280,10 +231,6 @@ namespace Contact
     virtual std::string description() const = 0;
     /** max |v_free| where the step formed v_free, 0 where it did not. */
     virtual double free_slip_speed() const = 0;
-    /** Only for a test of the self-checks (Sabotage): the path that
-     *  replaces `old` after a step cut keeps its Delassus operator. */
-    virtual void keep_delassus_operator_of(ContactPath<dim> & /*old*/)
-    {}
     /** The curvature test of friction.h: whether the matrix of a Newton
      *  step for this linearisation (the Hessian of E on the slip set) is
      *  positive definite. */
@@ -319,6 +266,8 @@ namespace Contact
                    const ConditionalOStream        &console,
                    TimerOutput                     &timer);
 
+    virtual ~FrictionSolver() = default;
+
     /** K or its factorisation changed (the start, a step cut): the active
      *  set parameters, the path and the convexity limit. */
     void reinit(const MatrixType &system_matrix, Factorization &factorization);
@@ -328,10 +277,10 @@ namespace Contact
 
     /** One step of (5.2)-(5.4): w_n and the friction state for the step's
      *  right-hand side. Throws with a diagnostic if the friction problem is
-     *  not solved. */
-    StepStatistics solve_step(const VectorType &step_rhs,
-                              VectorType       &velocity,
-                              const StepLabel  &label);
+     *  not solved. (Virtual: a variant of the solver may build on it.) */
+    virtual StepStatistics solve_step(const VectorType &step_rhs,
+                                      VectorType       &velocity,
+                                      const StepLabel  &label);
 
     /**
      * How far from the law the last step's solution may be by the
@@ -345,10 +294,6 @@ namespace Contact
      */
     double law_residual_allowance() const;
 
-
-    /** For the tests of the self-checks only. */
-    void set_sabotage(const Sabotage<dim> &sabotage);
-
     const ContactBoundary<dim> &boundary() const;
     const FrictionState        &state() const;
     void                        set_state(const FrictionState &state);
@@ -361,6 +306,20 @@ namespace Contact
      *  v_free - D eta is a difference of terms of this size, and so is its
      *  round-off. */
     double free_slip_speed() const;
+
+  protected:
+    /** The path for K (choose_path): make_contact_path()'s; a solver
+     *  derived from this one may return a path of its own instead, e.g. one
+     *  that wraps this path. */
+    virtual std::unique_ptr<ContactPath<dim>>
+    make_path(const MatrixType &system_matrix,
+              Factorization    &factorization,
+              const bool        delassus);
+
+    /** m_p of every node: the weights with which the law is applied
+     *  (NodalLaw, the bounds of the Tresca problems); a variant of the
+     *  solver may apply the law with other weights. */
+    Vector<double> law_weights;
 
   private:
     void choose_path(const MatrixType &system_matrix,
@@ -382,6 +341,12 @@ namespace Contact
                                       std::vector<NodeState> &state);
     std::string  convexification_failure(const double     residual,
                                          const StepLabel &label) const;
+    double       energy_on_gamma3(const Vector<double> &free_slip_velocity,
+                                  const Vector<double> &eta,
+                                  const Vector<double> &v) const;
+    std::string  tresca_failure(const StepLabel   &label,
+                                const unsigned int iteration,
+                                const unsigned int cycles_cured) const;
     bool         all_processes(const bool condition) const;
     void         add_contact_state(StepStatistics &statistics) const;
 
@@ -404,17 +369,7 @@ namespace Contact
     static constexpr double       lanczos_tolerance           = 1e-8;
     static constexpr double       lanczos_tolerance_iterative = 1e-3;
     FrictionState                 current;
-    // m_p times the sabotaged factor of the bound (the tests' only): the
-    // weights with which the solver applies the law.
-    Vector<double> solver_weights;
-    bool           reversed_friction_force     = false;
-    double         last_law_residual_allowance = 0;
-    // The other errors of Sabotage that the solver makes.
-    double compliance_factor             = 1.;
-    bool   stale_delassus_after_step_cut = false;
-    double stick_node_velocity           = 0.;
-    double normal_velocity               = 0.;
-    void   move_first_sticking_node(VectorType &velocity) const;
+    double                        last_law_residual_allowance = 0;
   };
 
 
@@ -427,8 +382,14 @@ namespace Contact
                     const MatrixType           &system_matrix,
                     Factorization              &factorization,
                     const bool                  delassus,
-                    TimerOutput                &computing_timer,
-                    const double                compliance_factor = 1.);
+                    TimerOutput                &computing_timer);
+
+  /** The Delassus path (delassus_paths.cc): D from the triangular factor of
+   *  K if it has one, else from the columns of K^{-1} C^T. */
+  template <int dim>
+  std::unique_ptr<ContactPath<dim>>
+  make_delassus_path(const ContactBoundary<dim> &gamma3,
+                     Factorization              &factorization);
 } // namespace Contact
 
 #endif

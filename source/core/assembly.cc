@@ -127,8 +127,6 @@ namespace Contact
     for (MatrixType *matrix :
          {&matrices.mass, &matrices.viscosity, &matrices.elasticity})
       matrix->compress(VectorOperation::add);
-    if (sabotage.stiffness_factor != 1.)
-      matrices.elasticity *= sabotage.stiffness_factor;
     form_system_matrix();
   }
 

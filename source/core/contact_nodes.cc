@@ -216,6 +216,68 @@ namespace Contact
         }
       return {nodes, shares};
     }
+
+
+    // @sect4{add_hanging_shares}
+
+    // The hanging nodes' shares, to the nodes they follow (each of which
+    // is a node of a face of Gamma_3 on some process).
+    template <int dim>
+    void add_hanging_shares(
+      const std::map<types::global_dof_index, HangingShare<dim>> &own_shares,
+      const MPI_Comm                                              communicator,
+      std::map<types::global_dof_index, ContactNode<dim>>        &nodes)
+    {
+      std::vector<double> share_records;
+      for (const auto &[key, share] : own_shares)
+        {
+          share_records.push_back(key);
+          share_records.push_back(share.weight);
+          for (unsigned int d = 0; d < dim; ++d)
+            share_records.push_back(share.normal[d]);
+        }
+      for (const auto &part :
+           Utilities::MPI::all_gather(communicator, share_records))
+        for (auto r = part.begin(); r != part.end(); r += dim + 2)
+          {
+            const auto key = static_cast<types::global_dof_index>(r[0]);
+            // With Q2 in 3D a hanging node on the border of Gamma_3 can follow
+            // the node in the middle of a coarse edge that no face of
+            // Gamma_3 has (Gamma_3 meets another boundary part along a
+            // refined edge).
+            AssertThrow(
+              nodes.count(key) == 1,
+              ExcMessage("A refined cell of Gamma_3 meets a coarser cell of "
+                         "another boundary part on the border of Gamma_3, and "
+                         "its hanging node there follows a node that is not "
+                         "on Gamma_3: this is not supported with "
+                         "'" +
+                         Entry::finite_element_degree +
+                         "' > 1; allowed are degree 1, or a refinement ("
+                         "'" +
+                         Entry::refinement_points +
+                         "', 'Mesh adaptation/Cycles') that does not reach the "
+                         "border of Gamma_3."));
+            nodes[key].weight += r[1];
+            for (unsigned int d = 0; d < dim; ++d)
+              nodes[key].normal[d] += r[2 + d];
+          }
+    }
+
+
+    // The axis least aligned with all normals (the first on ties).
+    template <int dim>
+    unsigned int least_aligned_axis(
+      const std::map<types::global_dof_index, ContactNode<dim>> &nodes)
+    {
+      std::array<double, dim> largest{};
+      for (const auto &[key, node] : nodes)
+        for (unsigned int d = 0; d < dim; ++d)
+          largest[d] =
+            std::max(largest[d], std::abs(node.normal[d]) / node.normal.norm());
+      return static_cast<unsigned int>(
+        std::min_element(largest.begin(), largest.end()) - largest.begin());
+    }
   } // namespace
 
 
@@ -236,8 +298,7 @@ namespace Contact
   template <int dim>
   std::vector<ContactNode<dim>>
   make_contact_nodes(const DiscreteSpace<dim>              &space,
-                     const std::vector<types::boundary_id> &contact_ids,
-                     const bool share_hanging_weights)
+                     const std::vector<types::boundary_id> &contact_ids)
   {
     const MPI_Comm communicator = space.mpi_communicator;
     // One record per (process, node) as doubles (dof indices are exact):
@@ -287,52 +348,9 @@ namespace Contact
               directions[i][d] = r[3 * dim + 3 + i * dim + d];
         }
 
-    // The hanging nodes' shares, to the nodes they follow (each of which
-    // is a node of a face of Gamma_3 on some process).
-    std::vector<double> share_records;
-    for (const auto &[key, share] : own_shares)
-      if (share_hanging_weights)
-        {
-          share_records.push_back(key);
-          share_records.push_back(share.weight);
-          for (unsigned int d = 0; d < dim; ++d)
-            share_records.push_back(share.normal[d]);
-        }
-    for (const auto &part :
-         Utilities::MPI::all_gather(communicator, share_records))
-      for (auto r = part.begin(); r != part.end(); r += dim + 2)
-        {
-          const auto key = static_cast<types::global_dof_index>(r[0]);
-          // With Q2 in 3D a hanging node on the border of Gamma_3 can follow
-          // the node in the middle of a coarse edge that no face of
-          // Gamma_3 has (Gamma_3 meets another boundary part along a
-          // refined edge).
-          AssertThrow(nodes.count(key) == 1,
-                      ExcMessage(
-                        "A refined cell of Gamma_3 meets a coarser cell of "
-                        "another boundary part on the border of Gamma_3, and "
-                        "its hanging node there follows a node that is not "
-                        "on Gamma_3: this is not supported with "
-                        "'" +
-                        Entry::finite_element_degree +
-                        "' > 1; allowed are degree 1, or a refinement ("
-                        "'" +
-                        Entry::refinement_points +
-                        "', 'Mesh adaptation/Cycles') that does not reach the "
-                        "border of Gamma_3."));
-          nodes[key].weight += r[1];
-          for (unsigned int d = 0; d < dim; ++d)
-            nodes[key].normal[d] += r[2 + d];
-        }
+    add_hanging_shares(own_shares, communicator, nodes);
 
-    // The axis least aligned with all normals (the first on ties).
-    std::array<double, dim> largest{};
-    for (const auto &[key, node] : nodes)
-      for (unsigned int d = 0; d < dim; ++d)
-        largest[d] =
-          std::max(largest[d], std::abs(node.normal[d]) / node.normal.norm());
-    const unsigned int preferred = static_cast<unsigned int>(
-      std::min_element(largest.begin(), largest.end()) - largest.begin());
+    const unsigned int preferred = least_aligned_axis(nodes);
 
     std::vector<ContactNode<dim>> contact_nodes;
     for (auto &[key, node] : nodes)
@@ -362,13 +380,11 @@ namespace Contact
 
 
 
-#define INSTANTIATE(dim)                                      \
-  template std::vector<ContactNode<dim>> make_contact_nodes(  \
-    const DiscreteSpace<dim> &,                               \
-    const std::vector<types::boundary_id> &,                  \
-    const bool);                                              \
-  template std::vector<Tensor<1, dim>> fixed_directions<dim>( \
-    const std::array<types::global_dof_index, dim> &,         \
+#define INSTANTIATE(dim)                                                  \
+  template std::vector<ContactNode<dim>> make_contact_nodes(              \
+    const DiscreteSpace<dim> &, const std::vector<types::boundary_id> &); \
+  template std::vector<Tensor<1, dim>> fixed_directions<dim>(             \
+    const std::array<types::global_dof_index, dim> &,                     \
     const AffineConstraints<double> &);
 
   CONTACT_INSTANTIATE(INSTANTIATE)

@@ -64,8 +64,7 @@ namespace Contact
   // The load data are parsed here (Loads), so that an expression with an
   // error is refused before anything is computed or written.
   template <int dim>
-  ContactProblem<dim>::ContactProblem(const Parameters    &run_parameters,
-                                      const Sabotage<dim> &injected)
+  ContactProblem<dim>::ContactProblem(const Parameters &run_parameters)
     : parameters(run_parameters)
     , friction_law(parameters.friction)
     , n_time_steps(parameters.time.n_steps())
@@ -73,7 +72,6 @@ namespace Contact
     , mpi_communicator(MPI_COMM_WORLD)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
-    , sabotage(injected)
     , exact_solution(parameters.verification.manufactured() ?
                        std::make_unique<ManufacturedSolution<dim>>(parameters) :
                        nullptr)
@@ -81,8 +79,7 @@ namespace Contact
     , loads(std::make_unique<Loads<dim>>(parameters,
                                          exact_solution.get(),
                                          space,
-                                         computing_timer,
-                                         sabotage.load_factor))
+                                         computing_timer))
   {
     AssertThrow(parameters.dimension == dim, ExcInternalError());
     for (const auto &[rank, create] : postprocessor_registry<dim>())
@@ -456,8 +453,7 @@ namespace Contact
 
 
 #define INSTANTIATE(dim)                                                        \
-  template ContactProblem<dim>::ContactProblem(const Parameters &,              \
-                                               const Sabotage<dim> &);          \
+  template ContactProblem<dim>::ContactProblem(const Parameters &);             \
   template ContactProblem<dim>::~ContactProblem();                              \
   template void ContactProblem<dim>::add_postprocessor(                         \
     std::unique_ptr<Postprocessor<dim>>);                                       \

@@ -20,13 +20,11 @@ namespace Contact
   Loads<dim>::Loads(const Parameters                &run_parameters,
                     const ManufacturedSolution<dim> *exact,
                     const DiscreteSpace<dim>        &discrete_space,
-                    TimerOutput                     &timer,
-                    const double                     factor)
+                    TimerOutput                     &timer)
     : parameters(run_parameters)
     , exact_solution(exact)
     , space(discrete_space)
     , computing_timer(timer)
-    , load_factor(factor)
     , body_force_is_constant(
         !exact_solution &&
         !expression_uses_variable(parameters.loads.body_force, "t"))
@@ -234,8 +232,6 @@ namespace Contact
     assemble_load(load_time, load_vector, !body_force_is_constant);
     if (body_force_is_constant)
       load_vector += constant_body_load;
-    if (load_factor != 1.)
-      load_vector *= load_factor;
   }
 
 

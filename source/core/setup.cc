@@ -106,19 +106,29 @@ namespace Contact
                                &state.system_times_velocity})
       vector->reinit(owned, mpi_communicator);
 
-    friction_solver = std::make_unique<FrictionSolver<dim>>(
+    friction_solver = create_friction_solver();
+    loads->setup(friction_solver->boundary());
+  }
+
+
+  // @sect4{ContactProblem::create_friction_solver}
+
+  // The friction solver on the nodes of Gamma_3 of the current mesh, every
+  // node sticking and without force (a virtual function: a problem derived
+  // from this one may make a solver derived from FrictionSolver).
+  template <int dim>
+  std::unique_ptr<FrictionSolver<dim>>
+  ContactProblem<dim>::create_friction_solver()
+  {
+    return std::make_unique<FrictionSolver<dim>>(
       parameters,
       friction_law,
-      make_contact_nodes(space,
-                         parameters.boundary.contact_ids,
-                         !sabotage.unshared_hanging_weights),
+      make_contact_nodes(space, parameters.boundary.contact_ids),
       space.constraints,
-      owned,
+      space.locally_owned_dofs,
       mpi_communicator,
       pcout,
       computing_timer);
-    friction_solver->set_sabotage(sabotage);
-    loads->setup(friction_solver->boundary());
   }
 
 
@@ -154,9 +164,11 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                             \
-  template void ContactProblem<dim>::make_grid();    \
-  template void ContactProblem<dim>::setup_system(); \
+#define INSTANTIATE(dim)                                       \
+  template void ContactProblem<dim>::make_grid();              \
+  template void ContactProblem<dim>::setup_system();           \
+  template std::unique_ptr<FrictionSolver<dim>>                \
+                ContactProblem<dim>::create_friction_solver(); \
   template void ContactProblem<dim>::report_mesh() const;
 
   CONTACT_INSTANTIATE(INSTANTIATE)

@@ -16,6 +16,7 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 namespace Contact
 {
@@ -48,60 +49,9 @@ namespace Contact
                               friction_law.is_frictionless() ?
                                 NodeState::slip :
                                 NodeState::stick);
-    solver_weights.reinit(gamma3.nodes.size());
+    law_weights.reinit(gamma3.nodes.size());
     for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
-      solver_weights[p] = gamma3.nodes[p].weight;
-  }
-
-
-  template <int dim>
-  void FrictionSolver<dim>::set_sabotage(const Sabotage<dim> &sabotage)
-  {
-    for (ContactNode<dim> &node : gamma3.nodes)
-      node.weight *= sabotage.weight_factor;
-    if (sabotage.tangent_turn != 0. && !gamma3.nodes.empty())
-      {
-        ContactNode<dim> &node    = gamma3.nodes[gamma3.nodes.size() / 2];
-        Tensor<1, dim>   &tangent = node.tangents[0];
-        tangent                   = std::cos(sabotage.tangent_turn) * tangent +
-                  std::sin(sabotage.tangent_turn) * node.normal;
-      }
-    for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
-      solver_weights[p] = gamma3.nodes[p].weight *
-                          (sabotage.bound_factor ?
-                             sabotage.bound_factor(gamma3.nodes[p].location) :
-                             1.);
-    reversed_friction_force       = sabotage.reversed_friction_force;
-    compliance_factor             = sabotage.compliance_factor;
-    stale_delassus_after_step_cut = sabotage.stale_delassus_after_step_cut;
-    stick_node_velocity           = sabotage.stick_node_velocity;
-    normal_velocity               = sabotage.normal_velocity;
-  }
-
-
-  // The velocity of a sticking node that a bug in the solver might leave
-  // (Sabotage): the first sticking node moved along its first tangent, or
-  // along its normal without the constraints applied.
-  template <int dim>
-  void FrictionSolver<dim>::move_first_sticking_node(VectorType &velocity) const
-  {
-    const bool   normal = (normal_velocity != 0.);
-    const double speed =
-      (normal ? normal_velocity : stick_node_velocity) * velocity.linfty_norm();
-    for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
-      if (current.node_state[p] == NodeState::stick)
-        {
-          const ContactNode<dim> &node = gamma3.nodes[p];
-          if (node.locally_owned)
-            for (unsigned int d = 0; d < dim; ++d)
-              if (normal || !gamma3.constraints.is_constrained(node.dofs[d]))
-                velocity[node.dofs[d]] +=
-                  speed * (normal ? node.normal[d] : node.tangents[0][d]);
-          break;
-        }
-    velocity.compress(VectorOperation::add);
-    if (!normal)
-      gamma3.constraints.distribute(velocity);
+      law_weights[p] = gamma3.nodes[p].weight;
   }
 
 
@@ -182,16 +132,18 @@ namespace Contact
                           (choice == ContactSolver::delassus ||
                            (choice == ContactSolver::automatic &&
                             delassus_operator_pays(factorization)));
-    std::unique_ptr<ContactPath<dim>> new_path =
-      make_contact_path(gamma3,
-                        system_matrix,
-                        factorization,
-                        delassus,
-                        computing_timer,
-                        compliance_factor);
-    if (stale_delassus_after_step_cut && path)
-      new_path->keep_delassus_operator_of(*path);
-    path = std::move(new_path);
+    path = make_path(system_matrix, factorization, delassus);
+  }
+
+
+  template <int dim>
+  std::unique_ptr<ContactPath<dim>>
+  FrictionSolver<dim>::make_path(const MatrixType &system_matrix,
+                                 Factorization    &factorization,
+                                 const bool        delassus)
+  {
+    return make_contact_path(
+      gamma3, system_matrix, factorization, delassus, computing_timer);
   }
 
 
@@ -324,11 +276,7 @@ namespace Contact
     path->begin_step(step_rhs, velocity);
     if (!friction_law.is_frictionless() && !gamma3.nodes.empty())
       solve_friction_problem(label, velocity.linfty_norm(), statistics);
-    if (reversed_friction_force)
-      current.friction_force *= -1.;
-    path->final_velocity(current.friction_force, velocity);
-    if (stick_node_velocity != 0. || normal_velocity != 0.)
-      move_first_sticking_node(velocity);
+    path->velocity(current.friction_force, velocity);
     if (friction_law.is_frictionless())
       current.slip_velocity = gamma3.tangential_velocities(velocity);
     add_contact_state(statistics);
@@ -404,7 +352,7 @@ namespace Contact
     std::vector<NodeState> state;
     const auto             newton_step = path_operators().second;
     NodalLaw               law{friction_law,
-                 solver_weights,
+                 law_weights,
                  weakening_cap_fraction * convexity_limit};
     law.convexity_limit               = convexity_limit;
     law.energy_accuracy               = path->energy_accuracy();
@@ -452,6 +400,35 @@ namespace Contact
   }
 
 
+  namespace
+  {
+    // The slip rates |v_p| of an iterate (`new_rate`), and the largest
+    // change from `rate` relative to the largest slip or free slip rate,
+    // which it returns too.
+    template <int dim>
+    std::pair<double, double>
+    slip_rate_change(const std::vector<ContactNode<dim>> &nodes,
+                     const Vector<double>                &rate,
+                     const Vector<double>                &v,
+                     const Vector<double>                &free_slip_velocity,
+                     Vector<double>                      &new_rate)
+    {
+      double scale = std::numeric_limits<double>::min(), residual = 0;
+      for (unsigned int p = 0; p < nodes.size(); ++p)
+        {
+          const ContactNode<dim> &node = nodes[p];
+          new_rate[p]                  = node.tangential_vector(v, p).norm();
+          residual = std::max(residual, std::abs(new_rate[p] - rate[p]));
+          scale =
+            std::max({scale,
+                      new_rate[p],
+                      node.tangential_vector(free_slip_velocity, p).norm()});
+        }
+      return {residual / scale, scale};
+    }
+  } // namespace
+
+
   // @sect4{FrictionSolver::solve_by_convexification}
 
   // The convexification of the paper's section 6 (refs [3, 4] there):
@@ -487,8 +464,8 @@ namespace Contact
         rate[p] = gamma3.nodes[p].tangential_vector(velocities, p).norm();
     };
     slip_rates(current.slip_velocity);
-    std::vector<NodeState> state;
-    std::vector<bool>      slip_set, previous_slip_set;
+    // The stick/slip states of the iterate and of the last accepted one.
+    std::vector<NodeState> state, previous_state;
     AndersonAcceleration   anderson(solver.anderson_depth);
     double                 accepted_energy = std::numeric_limits<double>::max();
     double                 residual        = 0;
@@ -498,19 +475,6 @@ namespace Contact
     // Newton took do not use up its 'Max convexification iterations'.
     unsigned int iterations = 0;
 
-    const auto energy_on_gamma3 = [&]() {
-      // E(v) with v = v_free - D eta: the quadratic term is
-      // eta^T D eta / 2 = eta . (v_free - v) / 2.
-      Vector<double> velocity_change(free_slip_velocity);
-      velocity_change -= v;
-      double value = 0.5 * (eta * velocity_change);
-      for (unsigned int p = 0; p < n; ++p)
-        value += gamma3.nodes[p].weight *
-                 friction_law.potential(
-                   gamma3.nodes[p].tangential_vector(v, p).norm());
-      return value;
-    };
-
     while (!converged && iterations < solver.max_convexification_iterations)
       {
         ++iterations;
@@ -518,35 +482,16 @@ namespace Contact
         for (unsigned int p = 0; p < n; ++p)
           bound[p] = friction_law.is_frictionless() ?
                        0. :
-                       solver_weights[p] * friction_law.bound(rate[p]);
+                       law_weights[p] * friction_law.bound(rate[p]);
 
         const TrescaResult tresca = solve_tresca_problem(bound, eta, v, state);
         statistics.active_set_iterations += tresca.iterations;
         statistics.cycles_cured += tresca.cycles_cured;
-        AssertThrow(
-          all_processes(tresca.converged),
-          ExcStepNotConverged(
-            "The active set method for the Tresca problem did not converge "
-            "in step " +
-            std::to_string(label.step_number) +
-            " (t = " + number_text(label.time) +
-            ", convexification iteration " + std::to_string(iterations) +
-            ") within " + std::to_string(solver.max_active_set_iterations) +
-            " iterations ('" + Entry::max_active_set_iterations +
-            "'); its "
-            "parameter c was halved " +
-            std::to_string(tresca.cycles_cured) +
-            " times against cycling. The sets cycle when D = C K^{-1} C^T "
-            "is ill-conditioned, e.g. for a nearly incompressible material "
-            "('" +
-            Entry::poisson_ratio +
-            "' = " + std::to_string(parameters.material.poisson_ratio) +
-            "). More iterations help (each halving damps the cycling), as "
-            "may a different '" +
-            Entry::active_set_parameter + "' (here " +
-            std::to_string(solver.active_set_parameter) + ")."));
+        AssertThrow(all_processes(tresca.converged),
+                    ExcStepNotConverged(
+                      tresca_failure(label, iterations, tresca.cycles_cured)));
 
-        const double energy_now = energy_on_gamma3();
+        const double energy_now = energy_on_gamma3(free_slip_velocity, eta, v);
         if (!all_processes(
               !(anderson.last_step_was_accelerated() &&
                 energy_now > accepted_energy +
@@ -564,28 +509,14 @@ namespace Contact
         current.slip_velocity  = v;
         current.node_state     = state;
 
-        double &scale = rate_scale;
-        scale         = std::numeric_limits<double>::min();
-        residual      = 0;
-        slip_set.resize(n);
         Vector<double> new_rate(n);
-        for (unsigned int p = 0; p < n; ++p)
-          {
-            new_rate[p] = gamma3.nodes[p].tangential_vector(v, p).norm();
-            residual    = std::max(residual, std::abs(new_rate[p] - rate[p]));
-            scale       = std::max({scale,
-                                    new_rate[p],
-                                    gamma3.nodes[p]
-                                      .tangential_vector(free_slip_velocity, p)
-                                      .norm()});
-            slip_set[p] = (state[p] != NodeState::stick);
-          }
-        residual /= scale;
+        std::tie(residual, rate_scale) =
+          slip_rate_change(gamma3.nodes, rate, v, free_slip_velocity, new_rate);
         converged =
           all_processes(friction_law.is_rate_independent() ||
                         (residual <= solver.convexification_tolerance &&
-                         slip_set == previous_slip_set));
-        previous_slip_set = slip_set;
+                         state == previous_state));
+        previous_state = state;
         anderson.next_iterate(rate, new_rate);
         for (double &r : rate)
           r = std::max(r, 0.);
@@ -597,6 +528,58 @@ namespace Contact
       last_law_residual_allowance =
         friction_law.one_sided_lipschitz_constant() /
         friction_law.coefficient(0.) * residual * rate_scale;
+  }
+
+
+  // @sect4{FrictionSolver::energy_on_gamma3}
+
+  // E(v) with v = v_free - D eta: the quadratic term is
+  // eta^T D eta / 2 = eta . (v_free - v) / 2.
+  template <int dim>
+  double FrictionSolver<dim>::energy_on_gamma3(
+    const Vector<double> &free_slip_velocity,
+    const Vector<double> &eta,
+    const Vector<double> &v) const
+  {
+    Vector<double> velocity_change(free_slip_velocity);
+    velocity_change -= v;
+    double value = 0.5 * (eta * velocity_change);
+    for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
+      value +=
+        gamma3.nodes[p].weight *
+        friction_law.potential(gamma3.nodes[p].tangential_vector(v, p).norm());
+    return value;
+  }
+
+
+  // @sect4{FrictionSolver::tresca_failure}
+
+  // What a user needs when the active set method of a Tresca problem
+  // does not converge: where, and what makes the sets cycle.
+  template <int dim>
+  std::string
+  FrictionSolver<dim>::tresca_failure(const StepLabel   &label,
+                                      const unsigned int iteration,
+                                      const unsigned int cycles_cured) const
+  {
+    const auto &solver = parameters.solver;
+    return "The active set method for the Tresca problem did not converge "
+           "in step " +
+           std::to_string(label.step_number) +
+           " (t = " + number_text(label.time) + ", convexification iteration " +
+           std::to_string(iteration) + ") within " +
+           std::to_string(solver.max_active_set_iterations) + " iterations ('" +
+           Entry::max_active_set_iterations +
+           "'); its parameter c was halved " + std::to_string(cycles_cured) +
+           " times against cycling. The sets cycle when D = C K^{-1} C^T "
+           "is ill-conditioned, e.g. for a nearly incompressible material "
+           "('" +
+           Entry::poisson_ratio +
+           "' = " + std::to_string(parameters.material.poisson_ratio) +
+           "). More iterations help (each halving damps the cycling), as "
+           "may a different '" +
+           Entry::active_set_parameter + "' (here " +
+           std::to_string(solver.active_set_parameter) + ").";
   }
 
 

@@ -2,7 +2,7 @@
    force is xi(x) S mu(0) with 0 < xi < 1, a force strictly inside the
    bound, so that the stick condition decides the solution there. At
    h = k = 1/32 the program runs it once as it is and once with the
-   friction removed on x < 1/2 (the test-only Sabotage hook sets the bound
+   friction removed on x < 1/2 (a fault of faults.h sets the bound
    to 0 there; the self-check of the friction law then fails, as it must).
    Without the stick condition the largest V-error must grow more than
    tenfold, to the order of the solution itself, ||eps(u(T))|| (more than a
@@ -16,6 +16,8 @@
 #include <core/postprocessor.h>
 #include <core/manufactured_solution.h>
 #include <app/run.h>
+
+#include "faults.h"
 
 #include <cmath>
 #include <iomanip>
@@ -35,10 +37,9 @@ Parameters scene(const std::string &directory)
 }
 
 // The largest V-error over the steps, from the summary line of the run.
-double largest_V_error(const std::string &directory,
-                       const Sabotage<2> &sabotage)
+double largest_V_error(const std::string &directory, const Faults<2> &faults)
 {
-  ContactProblem<2>  problem(scene(directory), sabotage);
+  FaultyProblem<2>   problem(scene(directory), faults);
   std::ostringstream console_output;
   auto *const        console = std::cout.rdbuf(console_output.rdbuf());
   std::string        outcome = "ended normally";
@@ -90,7 +91,7 @@ int main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double with_stick = largest_V_error("with_stick", {});
-  Sabotage<2>  no_stick;
+  Faults<2>    no_stick;
   no_stick.bound_factor = [](const dealii::Point<2> &p) {
     return p[0] < 0.5 ? 0. : 1.;
   };

@@ -18,7 +18,8 @@
      every mesh, the energy identity of the step after each change
      included.
    - The same with the energies of the old mesh kept after each change (a
-     Sabotage): the energy identity of the step after a change must fail.
+     fault of faults.h): the energy identity of the step after a change
+     must fail.
    The same on two processes. */
 
 #include <deal.II/base/exceptions.h>
@@ -27,6 +28,7 @@
 #include <app/run.h>
 #include <core/contact_problem.h>
 
+#include "faults.h"
 #include "sliding_slab.h"
 
 #include <algorithm>
@@ -99,9 +101,9 @@ void run(const std::string              &name,
   all_settings.insert(all_settings.end(), settings.begin(), settings.end());
   const Parameters parameters =
     read_parameters(std::string(CONTACT_PRM_DIR) + "/" + scene, all_settings);
-  Sabotage<dim> sabotage;
-  sabotage.stale_energies_after_mesh_change = stale_energies;
-  ContactProblem<dim> problem(parameters, sabotage);
+  Faults<dim> faults;
+  faults.stale_energies_after_mesh_change = stale_energies;
+  FaultyProblem<dim> problem(parameters, faults);
   problem.adapt_mesh_during_run(
     interval, alternating_cells<dim>(problem, first, second, radius));
   std::ostringstream console_output;

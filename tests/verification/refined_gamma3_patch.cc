@@ -14,9 +14,9 @@
    nodes on Gamma_3) and in 3D with Q2. Printed: the nodes of Gamma_3, the
    largest deviation of the slip rates from 0.02 n and of the friction
    tractions from 10 (relative), the self-checks. Last, the 3D graded run
-   with the hanging nodes' weights dropped (Sabotage): the self-check of
-   the friction law, whose weights are V_h's, must fail. The same on two
-   processes. */
+   with the hanging nodes' weights dropped (a fault of faults.h): the
+   self-check of the friction law, whose weights are V_h's, must fail. The same
+   on two processes. */
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -24,6 +24,7 @@
 #include <app/run.h>
 #include <core/contact_problem.h>
 
+#include "faults.h"
 #include "sliding_slab.h"
 
 #include <algorithm>
@@ -53,12 +54,12 @@ void run(const std::string              &name,
     read_parameters(std::string(CONTACT_PRM_DIR) +
                       (dim == 2 ? "/barboteu2015.prm" : "/barboteu2015_3d.prm"),
                     all_settings);
-  Sabotage<dim> sabotage;
-  sabotage.unshared_hanging_weights = unshared_hanging_weights;
-  ContactProblem<dim> problem(parameters, sabotage);
-  std::ostringstream  console_output;
-  auto *const         console = std::cout.rdbuf(console_output.rdbuf());
-  std::string         error;
+  Faults<dim> faults;
+  faults.unshared_hanging_weights = unshared_hanging_weights;
+  FaultyProblem<dim> problem(parameters, faults);
+  std::ostringstream console_output;
+  auto *const        console = std::cout.rdbuf(console_output.rdbuf());
+  std::string        error;
   try
     {
       problem.run();

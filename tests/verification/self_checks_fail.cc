@@ -3,7 +3,7 @@
    to catch:
      - the velocity doubled behind the scheme's back after step 3, as a bug
        in the time stepping would do (through the step observer),
-   and, injected through the test-only Sabotage hooks,
+   and, injected through the the faults of faults.h,
      - the friction force applied (and reported) with the wrong sign,
      - the friction coefficient 10% too large in the solver, also with a
        loose 'Solver/Convexification tolerance' (1e-2), whose allowance in
@@ -34,6 +34,8 @@
 #include <core/postprocessor.h>
 #include <app/run.h>
 
+#include "faults.h"
+
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -42,7 +44,7 @@
 using namespace Contact;
 
 void run(const std::string &name,
-         const Sabotage<2> &sabotage,
+         const Faults<2>   &faults,
          const bool         double_velocity_after_step_3 = false,
          const std::string &scene                        = "barboteu2015.prm",
          const std::string &refinement = "Geometry/Cell size=0.0625",
@@ -58,7 +60,7 @@ void run(const std::string &name,
   settings.insert(settings.end(), more_settings.begin(), more_settings.end());
   const Parameters parameters =
     read_parameters(CONTACT_PRM_DIR "/" + scene, settings);
-  ContactProblem<2> problem(parameters, sabotage);
+  FaultyProblem<2> problem(parameters, faults);
   if (double_velocity_after_step_3)
     problem.add_postprocessor(
       std::make_unique<StepObserver<2>>([](const ContactProblem<2> &p) {
@@ -93,11 +95,11 @@ int main(int argc, char *argv[])
   run("intact", {});
   run("velocity_doubled", {}, true);
 
-  Sabotage<2> reversed;
+  Faults<2> reversed;
   reversed.reversed_friction_force = true;
   run("reversed_friction_force", reversed);
 
-  Sabotage<2> larger_coefficient;
+  Faults<2> larger_coefficient;
   larger_coefficient.bound_factor = [](const dealii::Point<2> &) {
     return 1.1;
   };
@@ -110,15 +112,15 @@ int main(int argc, char *argv[])
       {"Solver/Friction method=convexification",
        "Solver/Convexification tolerance=0.01"});
 
-  Sabotage<2> stiffer;
+  Faults<2> stiffer;
   stiffer.stiffness_factor = 1.01;
   run("stiffness_matrix_times_1.01", stiffer);
 
-  Sabotage<2> off_constraints;
+  Faults<2> off_constraints;
   off_constraints.normal_velocity = 1e-3;
   run("velocity_off_the_constraints", off_constraints);
 
-  Sabotage<2> larger_load;
+  Faults<2> larger_load;
   larger_load.load_factor = 1.1;
   run("load_times_1.1", larger_load);
 

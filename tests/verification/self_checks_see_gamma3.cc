@@ -1,6 +1,6 @@
 /* The self-checks see errors in the contact itself: each run injects one
    error in the friction solver's map of Gamma_3 or in its compliance
-   through the test-only Sabotage hooks, and must end with 'Self-check
+   through the faults of faults.h, and must end with 'Self-check
    failed', naming the checks that caught it (the summary's lines marked
    FAILED):
      - D times 1.5 on the Delassus path (a wrong compliance of Gamma_3): the
@@ -33,6 +33,8 @@
 #include <app/run.h>
 #include <core/contact_problem.h>
 
+#include "faults.h"
+
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -45,7 +47,7 @@ template <int dim>
 void run(const std::string              &name,
          const std::string              &scene,
          const std::vector<std::string> &settings,
-         const Sabotage<dim>            &sabotage)
+         const Faults<dim>              &faults)
 {
   std::vector<std::string> all_settings = {"Output/VTU interval=0",
                                            "Output/Progress interval=0",
@@ -55,10 +57,10 @@ void run(const std::string              &name,
   all_settings.insert(all_settings.end(), settings.begin(), settings.end());
   const Parameters parameters =
     read_parameters(CONTACT_PRM_DIR "/" + scene, all_settings);
-  ContactProblem<dim> problem(parameters, sabotage);
-  std::ostringstream  console_output;
-  auto *const         console = std::cout.rdbuf(console_output.rdbuf());
-  std::string         outcome = "ended normally";
+  FaultyProblem<dim> problem(parameters, faults);
+  std::ostringstream console_output;
+  auto *const        console = std::cout.rdbuf(console_output.rdbuf());
+  std::string        outcome = "ended normally";
   try
     {
       problem.run();
@@ -93,7 +95,7 @@ void run_all_errors(const std::string              &label,
 
   for (const std::string path : {"Delassus", "constraints"})
     {
-      Sabotage<dim> compliance;
+      Faults<dim> compliance;
       compliance.compliance_factor = 1.5;
       std::vector<std::string> on_path(settings);
       on_path.push_back("Solver/Contact solver=" + path);
@@ -103,15 +105,15 @@ void run_all_errors(const std::string              &label,
                compliance);
     }
 
-  Sabotage<dim> weights;
+  Faults<dim> weights;
   weights.weight_factor = 1.1;
   run<dim>(label + "_weights_times_1.1", scene, settings, weights);
 
-  Sabotage<dim> tangent;
+  Faults<dim> tangent;
   tangent.tangent_turn = 5. * M_PI / 180.;
   run<dim>(label + "_tangent_turned_5_degrees", scene, settings, tangent);
 
-  Sabotage<dim> moving;
+  Faults<dim> moving;
   moving.stick_node_velocity = 1e-3;
   run<dim>(label + "_sticking_node_moving", scene, settings, moving);
 }
@@ -136,7 +138,7 @@ int main(int argc, char *argv[])
                      "Time/Time step=0.0625",
                      "Friction/b=1"});
 
-  Sabotage<2> stale;
+  Faults<2> stale;
   stale.stale_delassus_after_step_cut     = true;
   const std::vector<std::string> step_cut = {"Geometry/Cell size=0.0625",
                                              "Time/Time step=0.0625",
