@@ -47,7 +47,7 @@ namespace Contact
      * Whether the factorisation is K = P^T L L^T P with its triangular
      * factor L at hand (CHOLMOD). A solve is then a forward substitution
      * y = L^{-1} P b followed by a backward one, x = P^T L^{-T} y, and the
-     * Delassus path works between the two halves (contact_paths.cc).
+     * Delassus path works between the two halves (delassus_paths.cc).
      */
     virtual bool has_triangular_factor() const
     {

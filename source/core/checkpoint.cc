@@ -127,26 +127,6 @@ namespace Contact
       return text;
     }
 
-    // What identifies the discrete problem a checkpoint belongs to (k to
-    // all digits), as stored in it and shown when it does not match. (The
-    // probes, whose columns the time series continues, are compared as
-    // entries.)
-    template <int dim>
-    std::string shape(const DoFHandler<dim> &dof_handler,
-                      const unsigned int     n_contact_nodes,
-                      const double           time_step,
-                      const bool             manufactured,
-                      const MPI_Comm         communicator)
-    {
-      std::ostringstream text;
-      text << dim << "D, " << dof_handler.n_dofs() << " unknowns, "
-           << n_contact_nodes << " nodes on Gamma_3, "
-           << Utilities::MPI::n_mpi_processes(communicator)
-           << " process(es), k = " << std::setprecision(17) << time_step
-           << (manufactured ? ", manufactured solution" : "");
-      return text.str();
-    }
-
     // The absolute values of the mesh's vertex coordinates, summed with
     // weights over the locally owned cells, to 12 digits: a moved vertex of
     // a mesh file changes it, the same mesh on the same processes gives the
@@ -166,6 +146,26 @@ namespace Contact
       text << ", mesh vertex sum " << std::setprecision(12)
            << Utilities::MPI::sum(sum, communicator);
       return text.str();
+    }
+
+    // What identifies the discrete problem a checkpoint belongs to (k to
+    // all digits, and the mesh's fingerprint), as stored in it and shown
+    // when it does not match. (The probes, whose columns the time series
+    // continues, are compared as entries.)
+    template <int dim>
+    std::string shape(const DoFHandler<dim> &dof_handler,
+                      const unsigned int     n_contact_nodes,
+                      const double           time_step,
+                      const bool             manufactured,
+                      const MPI_Comm         communicator)
+    {
+      std::ostringstream text;
+      text << dim << "D, " << dof_handler.n_dofs() << " unknowns, "
+           << n_contact_nodes << " nodes on Gamma_3, "
+           << Utilities::MPI::n_mpi_processes(communicator)
+           << " process(es), k = " << std::setprecision(17) << time_step
+           << (manufactured ? ", manufactured solution" : "");
+      return text.str() + mesh_fingerprint(dof_handler, communicator);
     }
 
     // The shape without its k, and its k.
@@ -412,8 +412,7 @@ namespace Contact
               friction_solver->boundary().nodes.size(),
               time_step,
               exact_solution != nullptr,
-              mpi_communicator) +
-        mesh_fingerprint(space.dof_handler, mpi_communicator);
+              mpi_communicator);
       std::map<std::string, std::string> entries =
         problem_entries(parameters.used_parameters);
       FrictionState friction_state = friction_solver->state();
@@ -469,8 +468,7 @@ namespace Contact
             friction_solver->boundary().nodes.size(),
             time_step,
             exact_solution != nullptr,
-            mpi_communicator) +
-      mesh_fingerprint(space.dof_handler, mpi_communicator);
+            mpi_communicator);
     AssertThrow(same_problem(stored_shape, problem_shape),
                 ExcMessage(another_problem(name,
                                            stored_shape,
