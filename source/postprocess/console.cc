@@ -309,8 +309,8 @@ namespace Contact
     // The terms of the energy identity balance to the solvers' tolerance,
     // which the self-checks require to 1e-8 of the largest term: a
     // cancelling sum below that is not resolved (the friction dissipation
-    // of tests/scenes/pure_stick, a body that sticks throughout, is 1.0e-9
-    // of the largest term with one BLAS and below it with another).
+    // of a body that sticks throughout is such a sum: its digits depend on
+    // the BLAS and the processor).
     const double terms[] = {energy.kinetic,
                             energy.elastic,
                             energy.external_work,

@@ -89,7 +89,7 @@ namespace Contact
     // fixed directions and the directions (a node on several faces or
     // processes has several records).
     template <int dim>
-    constexpr unsigned int record_size = dim + dim + 1 + 1 + dim *dim;
+    constexpr unsigned int record_size = (dim + 2) * dim + 2;
 
     template <int dim>
     std::vector<double>
