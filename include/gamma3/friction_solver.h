@@ -197,10 +197,10 @@ namespace Contact
 
   /**
    * The linear algebra of one path between the body and Gamma_3
-   * (contact_paths.cc, delassus_paths.cc). A step calls begin_step() first, then the methods
-   * on Gamma_3 call newton_step() (the convexification also
-   * free_slip_velocity() and velocity_of_force()), and velocity() gives
-   * w_n for the final forces.
+   * (contact_paths.cc, delassus_paths.cc). A step calls begin_step()
+   * first, then the methods on Gamma_3 call newton_step() (the
+   * convexification also free_slip_velocity() and velocity_of_force()), and
+   * velocity() gives w_n for the final forces.
    */
   template <int dim>
   class ContactPath
