@@ -88,30 +88,31 @@ namespace Contact
     unsigned int preconditioned_solves() const;
 
   private:
-    void solve_block(const bool                             velocity_form,
-                     const std::vector<FullMatrix<double>> &Q,
-                     const std::vector<unsigned int>       &unknowns,
-                     const Vector<double>                  &shift,
-                     const bool                             weakening,
-                     const Vector<double>                  &rhs,
-                     Vector<double>                        &x) const;
+    /** The block of a Newton step: of W (velocity form) or D, rotated by
+     *  the nodes' bases Q, on these unknowns, plus the diagonal shift;
+     *  `weakening` where a row has a weakening slope. */
+    struct StepBlock
+    {
+      bool                                   velocity_form;
+      const std::vector<FullMatrix<double>> &Q;
+      const std::vector<unsigned int>       &unknowns;
+      const Vector<double>                  &shift;
+      bool                                   weakening;
+    };
+
+    void solve_block(const StepBlock      &block,
+                     const Vector<double> &rhs,
+                     Vector<double>       &x) const;
     /** GMRES on a Newton step's block preconditioned with the factor of
      *  the last factorised one; false where it did not converge. */
-    bool solve_block_by_gmres(const bool velocity_form,
-                              const std::vector<FullMatrix<double>> &Q,
-                              const std::vector<unsigned int>       &unknowns,
-                              const Vector<double>                  &shift,
-                              const Vector<double>                  &rhs,
-                              Vector<double>                        &x) const;
+    bool solve_block_by_gmres(const StepBlock      &block,
+                              const Vector<double> &rhs,
+                              Vector<double>       &x) const;
     /** A Newton step's block formed, factorised (the factor kept as the
      *  last one) and solved. */
-    void factorise_and_solve_block(const bool velocity_form,
-                                   const std::vector<FullMatrix<double>> &Q,
-                                   const std::vector<unsigned int> &unknowns,
-                                   const Vector<double>            &shift,
-                                   const bool                       weakening,
-                                   const Vector<double>            &rhs,
-                                   Vector<double>                  &x) const;
+    void factorise_and_solve_block(const StepBlock      &block,
+                                   const Vector<double> &rhs,
+                                   Vector<double>       &x) const;
 
     /** W = D^{-1} is formed only while cond(D) <= 1 / this: eta = W (v_free
      *  - v) leaves a velocity residual cond(D) times that of a solve. */

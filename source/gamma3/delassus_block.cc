@@ -251,36 +251,28 @@ namespace Contact
   // the relative residual gmres_reduction: an inexact Newton step, which
   // the Newton method's own residual test corrects) is the block formed
   // and factorised, and its factor kept for the next step.
-  void DelassusOperator::solve_block(const bool velocity_form,
-                                     const std::vector<FullMatrix<double>> &Q,
-                                     const std::vector<unsigned int> &unknowns,
-                                     const Vector<double>            &shift,
-                                     const bool                       weakening,
-                                     const Vector<double>            &rhs,
-                                     Vector<double>                  &x) const
+  void DelassusOperator::solve_block(const StepBlock      &block,
+                                     const Vector<double> &rhs,
+                                     Vector<double>       &x) const
   {
     if (rhs.size() == 0)
       return;
     const FactorisedBlock &last = last_factorised_block;
-    if (unknowns.size() >= min_unknowns_for_gmres && last.factor &&
-        last.velocity_form == velocity_form &&
-        n_differences(last.unknowns, unknowns) <= max_changed_unknowns &&
-        solve_block_by_gmres(velocity_form, Q, unknowns, shift, rhs, x))
+    if (block.unknowns.size() >= min_unknowns_for_gmres && last.factor &&
+        last.velocity_form == block.velocity_form &&
+        n_differences(last.unknowns, block.unknowns) <= max_changed_unknowns &&
+        solve_block_by_gmres(block, rhs, x))
       return;
-    factorise_and_solve_block(
-      velocity_form, Q, unknowns, shift, weakening, rhs, x);
+    factorise_and_solve_block(block, rhs, x);
   }
 
   // GMRES on the block, preconditioned with the last factor; whether it
   // solved the block (x is then its solution).
-  bool DelassusOperator::solve_block_by_gmres(
-    const bool                             velocity_form,
-    const std::vector<FullMatrix<double>> &Q,
-    const std::vector<unsigned int>       &unknowns,
-    const Vector<double>                  &shift,
-    const Vector<double>                  &rhs,
-    Vector<double>                        &x) const
+  bool DelassusOperator::solve_block_by_gmres(const StepBlock      &block,
+                                              const Vector<double> &rhs,
+                                              Vector<double>       &x) const
   {
+    const auto &[velocity_form, Q, unknowns, shift, weakening] = block;
     const LAPACKFullMatrix<double> &M    = (velocity_form ? W : D);
     const FactorisedBlock          &last = last_factorised_block;
     // The block's diagonal, for the unknowns the factor does not have
@@ -335,15 +327,11 @@ namespace Contact
 
   // The block formed and factorised (its factor kept as the last one), and
   // solved.
-  void DelassusOperator::factorise_and_solve_block(
-    const bool                             velocity_form,
-    const std::vector<FullMatrix<double>> &Q,
-    const std::vector<unsigned int>       &unknowns,
-    const Vector<double>                  &shift,
-    const bool                             weakening,
-    const Vector<double>                  &rhs,
-    Vector<double>                        &x) const
+  void DelassusOperator::factorise_and_solve_block(const StepBlock &step_block,
+                                                   const Vector<double> &rhs,
+                                                   Vector<double> &x) const
   {
+    const auto &[velocity_form, Q, unknowns, shift, weakening] = step_block;
     const LAPACKFullMatrix<double> &M    = (velocity_form ? W : D);
     FactorisedBlock                &last = last_factorised_block;
     last.velocity_form                   = velocity_form;

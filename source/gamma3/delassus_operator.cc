@@ -306,11 +306,7 @@ namespace Contact
           }
         BlockSystem system =
           velocity_form_system(conditions, Q, velocity_unknowns, W_v_free, v);
-        solve_block(true,
-                    Q,
-                    velocity_unknowns,
-                    system.shift,
-                    weakening,
+        solve_block({true, Q, velocity_unknowns, system.shift, weakening},
                     system.rhs,
                     system.x);
         forces_of_velocities(
@@ -321,11 +317,7 @@ namespace Contact
         Vector<double> rotated_eta;
         BlockSystem    system = force_form_system(
           conditions, Q, force_unknowns, D, v_free, eta, rotated_eta);
-        solve_block(false,
-                    Q,
-                    force_unknowns,
-                    system.shift,
-                    weakening,
+        solve_block({false, Q, force_unknowns, system.shift, weakening},
                     system.rhs,
                     system.x);
         for (unsigned int a = 0; a < force_unknowns.size(); ++a)
