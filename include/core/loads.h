@@ -80,6 +80,13 @@ namespace Contact
                      const bool         with_surface_loads,
                      const CellVisitor &visit_cell,
                      const NodeVisitor &visit_node) const;
+    bool
+    add_cell_loads(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                   const double    load_time,
+                   const bool      with_body_force,
+                   const bool      with_surface_loads,
+                   Vector<double> &cell_rhs) const;
+    bool is_free_side(const types::boundary_id id) const;
     void assemble_load(const double load_time,
                        VectorType  &load_vector,
                        const bool   with_body_force) const;

@@ -129,11 +129,43 @@ namespace Contact
                                                 update_normal_vectors |
                                                 update_JxW_values);
       }
+
+    // The surface loads alone (every step, when the body force is constant)
+    // touch the boundary cells only.
+    Vector<double> cell_rhs(space.fe.n_dofs_per_cell());
+    for (const auto &cell : (with_body_force ? owned_cells : boundary_cells))
+      {
+        cell_rhs = 0;
+        if (add_cell_loads(
+              cell, load_time, with_body_force, with_surface_loads, cell_rhs))
+          visit_cell(cell, cell_rhs);
+      }
+
+    if (exact_solution && with_surface_loads)
+      for (const ContactNode<dim> &node : gamma3->nodes)
+        visit_node(node,
+                   node.weight * exact_solution->contact_load(node.location,
+                                                              node.normal,
+                                                              load_time));
+  }
+
+
+  // @sect4{Loads::add_cell_loads}
+
+  // The loads on one cell, added to its cell vector: the body force when
+  // asked for, and the tractions on its faces at the boundary. Returns
+  // whether the cell carries a load.
+  template <int dim>
+  bool Loads<dim>::add_cell_loads(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const double                                          load_time,
+    const bool                                            with_body_force,
+    const bool                                            with_surface_loads,
+    Vector<double>                                       &cell_rhs) const
+  {
     FEValues<dim>                   &fe_values      = *cell_values;
     FEFaceValues<dim>               &fe_face_values = *face_values;
     const FEValuesExtractors::Vector displacements(0);
-    const unsigned int               n_dofs = space.fe.n_dofs_per_cell();
-    Vector<double>                   cell_rhs(n_dofs);
     Vector<double>                   value(dim);
 
     const auto add_force = [&](const FEValuesBase<dim> &values,
@@ -141,7 +173,7 @@ namespace Contact
       for (const unsigned int q : values.quadrature_point_indices())
         {
           const Tensor<1, dim> f = force_at(q);
-          for (unsigned int i = 0; i < n_dofs; ++i)
+          for (unsigned int i = 0; i < cell_rhs.size(); ++i)
             cell_rhs(i) +=
               values[displacements].value(i, q) * f * values.JxW(q);
         }
@@ -156,68 +188,58 @@ namespace Contact
         return f;
       };
     };
-    const auto exact_body_force = [&](const unsigned int q) {
-      return exact_solution->body_force(fe_values.quadrature_point(q),
-                                        load_time);
-    };
-    const auto exact_traction = [&](const unsigned int q) {
-      return exact_solution->stress(fe_face_values.quadrature_point(q),
-                                    load_time) *
-             fe_face_values.normal_vector(q);
-    };
-    const auto is_free_side = [&](const types::boundary_id id) {
-      const auto &boundary = parameters.boundary;
-      return std::count(boundary.clamped_ids.begin(),
-                        boundary.clamped_ids.end(),
-                        id) +
-               std::count(boundary.contact_ids.begin(),
-                          boundary.contact_ids.end(),
-                          id) ==
-             0;
-    };
 
-    // The surface loads alone (every step, when the body force is constant)
-    // touch the boundary cells only.
-    for (const auto &cell : (with_body_force ? owned_cells : boundary_cells))
+    bool loaded = with_body_force;
+    if (with_body_force)
       {
-        cell_rhs    = 0;
-        bool loaded = with_body_force;
-        if (with_body_force)
-          {
-            fe_values.reinit(cell);
-            if (exact_solution)
-              add_force(fe_values, exact_body_force);
-            else
-              add_force(fe_values, parsed(fe_values, *body_force));
-          }
-        for (const unsigned int f : cell->face_indices())
-          if (with_surface_loads && cell->face(f)->at_boundary())
-            {
-              const types::boundary_id id = cell->face(f)->boundary_id();
-              if (exact_solution && is_free_side(id))
-                {
-                  fe_face_values.reinit(cell, f);
-                  add_force(fe_face_values, exact_traction);
-                  loaded = true;
-                }
-              else if (!exact_solution && tractions.count(id) != 0)
-                {
-                  fe_face_values.reinit(cell, f);
-                  add_force(fe_face_values,
-                            parsed(fe_face_values, *tractions.at(id)));
-                  loaded = true;
-                }
-            }
-        if (loaded)
-          visit_cell(cell, cell_rhs);
+        fe_values.reinit(cell);
+        if (exact_solution)
+          add_force(fe_values, [&](const unsigned int q) {
+            return exact_solution->body_force(fe_values.quadrature_point(q),
+                                              load_time);
+          });
+        else
+          add_force(fe_values, parsed(fe_values, *body_force));
       }
+    for (const unsigned int f : cell->face_indices())
+      if (with_surface_loads && cell->face(f)->at_boundary())
+        {
+          const types::boundary_id id = cell->face(f)->boundary_id();
+          if (exact_solution && is_free_side(id))
+            {
+              fe_face_values.reinit(cell, f);
+              add_force(fe_face_values, [&](const unsigned int q) {
+                return exact_solution->stress(
+                         fe_face_values.quadrature_point(q), load_time) *
+                       fe_face_values.normal_vector(q);
+              });
+              loaded = true;
+            }
+          else if (!exact_solution && tractions.count(id) != 0)
+            {
+              fe_face_values.reinit(cell, f);
+              add_force(fe_face_values,
+                        parsed(fe_face_values, *tractions.at(id)));
+              loaded = true;
+            }
+        }
+    return loaded;
+  }
 
-    if (exact_solution && with_surface_loads)
-      for (const ContactNode<dim> &node : gamma3->nodes)
-        visit_node(node,
-                   node.weight * exact_solution->contact_load(node.location,
-                                                              node.normal,
-                                                              load_time));
+
+  // A side that is neither clamped nor in contact: the manufactured
+  // solution's traction acts on it.
+  template <int dim>
+  bool Loads<dim>::is_free_side(const types::boundary_id id) const
+  {
+    const auto &boundary = parameters.boundary;
+    return std::count(boundary.clamped_ids.begin(),
+                      boundary.clamped_ids.end(),
+                      id) +
+             std::count(boundary.contact_ids.begin(),
+                        boundary.contact_ids.end(),
+                        id) ==
+           0;
   }
 
 
