@@ -43,8 +43,7 @@ namespace Contact
   {
     // y = M x for the symmetric D or W: BLAS's symv reads one triangle,
     // half of what gemv (LAPACKFullMatrix::vmult) reads, and the product is
-    // bound by reading M (0.079 against 0.150 ms for n = 1088 with
-    // OpenBLAS on the machine of bench/friction_solver.md).
+    // bound by reading M.
     void symmetric_vmult(const LAPACKFullMatrix<double> &M,
                          Vector<double>                 &y,
                          const Vector<double>           &x)
@@ -72,10 +71,8 @@ namespace Contact
     // potrf with uplo = L) is applied by two triangular solves of BLAS
     // level 2. LAPACK's potrs goes through trsm, which OpenBLAS runs by
     // packing the factor into blocks (its gemm copy kernels in a profile),
-    // even for the single right-hand side here. GMRES applies the factor
-    // at every iteration: on the 3D scene at h = k = 1/32 with OpenBLAS a
-    // step took 78 ms with potrs, 65 ms with trsv (medians of four runs
-    // each, taken in turn).
+    // even for the single right-hand side here, and GMRES applies the
+    // factor at every iteration.
     void solve_with_factor(const LAPACKFullMatrix<double> &factor,
                            const bool                      cholesky,
                            Vector<double>                 &x)
