@@ -665,9 +665,11 @@ namespace Contact
     return table;
   }
 
-  void SolverParameters::declare_parameters(ParameterHandler &prm)
+  namespace
   {
-    prm.enter_subsection("Solver");
+    // The entries of the friction problem's solver, in the subsection
+    // Solver.
+    void declare_friction_method_entries(ParameterHandler &prm)
     {
       prm.declare_entry(
         "Convexification tolerance",
@@ -678,8 +680,9 @@ namespace Contact
         "slip set does not change.");
       prm.declare_entry(
         "Friction method",
-        friction_methods().name(FrictionMethod::newton),
-        friction_methods().pattern(),
+        SolverParameters::friction_methods().name(
+          SolverParameters::FrictionMethod::newton),
+        SolverParameters::friction_methods().pattern(),
         "How the nonmonotone friction problem of a step is solved. Newton: "
         "a semismooth Newton method on the full law, with the derivative of "
         "the friction coefficient in its Jacobian (on the constraints path "
@@ -734,10 +737,17 @@ namespace Contact
         "convexification combines; 0 gives the paper's plain iteration. An "
         "accelerated iterate that does not lower the step's energy is "
         "rejected.");
+    }
+
+    // The entries of the linear solver and of the contact path, in the
+    // subsection Solver.
+    void declare_linear_solver_entries(ParameterHandler &prm)
+    {
       prm.declare_entry(
         "Linear solver",
-        linear_solvers().name(LinearSolver::automatic),
-        linear_solvers().pattern(),
+        SolverParameters::linear_solvers().name(
+          SolverParameters::LinearSolver::automatic),
+        SolverParameters::linear_solvers().pattern(),
         "How systems with K = (rho/k) M + A + k B are solved. CHOLMOD "
         "(SuiteSparse's supernodal Cholesky, one process) or a Trilinos "
         "Amesos solver (Amesos_Mumps: MUMPS, distributed over the processes) "
@@ -758,8 +768,9 @@ namespace Contact
         "time_series.csv counts them (column step_cuts).");
       prm.declare_entry(
         "Contact solver",
-        contact_solvers().name(ContactSolver::automatic),
-        contact_solvers().pattern(),
+        SolverParameters::contact_solvers().name(
+          SolverParameters::ContactSolver::automatic),
+        SolverParameters::contact_solvers().pattern(),
         "How the friction problem of a step is solved. Delassus: on the "
         "tangential unknowns of Gamma_3 alone, with the dense Delassus "
         "operator D = C K^{-1} C^T built once per run: from "
@@ -777,6 +788,15 @@ namespace Contact
           "fits in " +
           number_text(SolverParameters::max_delassus_bytes / 1e9) +
           " GB per process; constraints otherwise.");
+    }
+  } // namespace
+
+  void SolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    {
+      declare_friction_method_entries(prm);
+      declare_linear_solver_entries(prm);
     }
     prm.leave_subsection();
   }
@@ -1058,9 +1078,10 @@ namespace Contact
     return table;
   }
 
-  void AccuracyParameters::declare_parameters(ParameterHandler &prm)
+  namespace
   {
-    prm.enter_subsection("Accuracy");
+    // The entries of the error estimate, in the subsection Accuracy.
+    void declare_error_estimate_entries(ParameterHandler &prm)
     {
       prm.declare_entry(
         "Estimate error",
@@ -1092,6 +1113,12 @@ namespace Contact
         "each extrapolated with its own order; a row's estimate is their "
         "sum where that is larger. Needed where the orders in h and k "
         "differ (degree 2).");
+    }
+
+    // The entries of the target error and of the choice of h and k that
+    // meets it, in the subsection Accuracy.
+    void declare_target_error_entries(ParameterHandler &prm)
+    {
       prm.declare_entry(
         "Target error",
         "0",
@@ -1110,8 +1137,9 @@ namespace Contact
         "The choice and the predicted and estimated errors are printed and "
         "written to <Output directory>/target.txt.");
       prm.declare_entry("Target error type",
-                        target_error_types().name(TargetErrorType::relative),
-                        target_error_types().pattern(),
+                        AccuracyParameters::target_error_types().name(
+                          AccuracyParameters::TargetErrorType::relative),
+                        AccuracyParameters::target_error_types().pattern(),
                         "relative: 'Target error' times the size of the "
                         "quantity on the first pilot (for the V-norm "
                         "||eps(u_h)||, at T or its largest over time); "
@@ -1127,8 +1155,9 @@ namespace Contact
           "share of Gamma_3' or 'slip zone starts at x'; or the 'time of the "
           "first slip'.");
       prm.declare_entry("Cost model",
-                        cost_models().name(CostModel::measured),
-                        cost_models().pattern(),
+                        AccuracyParameters::cost_models().name(
+                          AccuracyParameters::CostModel::measured),
+                        AccuracyParameters::cost_models().pattern(),
                         "How the target predicts what a run costs: from "
                         "the pilots' measured wall times (a + b unknowns "
                         "steps, per degree), or unknowns times steps "
@@ -1142,6 +1171,15 @@ namespace Contact
                         "pilots' measured wall times: needs 'Cost model' = "
                         "measured). Beyond it the program stops before "
                         "that run and says what it would have chosen.");
+    }
+  } // namespace
+
+  void AccuracyParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Accuracy");
+    {
+      declare_error_estimate_entries(prm);
+      declare_target_error_entries(prm);
     }
     prm.leave_subsection();
   }
@@ -1223,7 +1261,7 @@ namespace Contact
                     "with its level-N); one run at a time "
                     "may use it (the lock file .lock names the run).");
       // Read by parse_report_times(): deal.II's Patterns::List splits its
-      // text in a time quadratic in its length (400 000 times: 65 s).
+      // text in a time quadratic in its length.
       declare_entry("Report times",
                     "0.3, 1.1",
                     Patterns::Anything(),
