@@ -1366,6 +1366,75 @@ namespace Contact
     OutputParameters::declare_parameters(prm);
   }
 
+
+  namespace
+  {
+    // Where the mesh adapts (`adapting` names the entry that makes it do
+    // so): what the other entries, the drivers' among them, must allow.
+    void check_adaptation_combinations(const Parameters  &parameters,
+                                       const std::string &adapting)
+    {
+      // An error estimate runs a mesh adapted by pilots coarsened, cell by
+      // cell (MeshPlan::coarser()), which gives nested meshes for plans that
+      // refine only.
+      AssertThrow(!parameters.accuracy.estimate_error ||
+                    parameters.mesh_adaptation.cycles == 0 ||
+                    parameters.mesh_adaptation.coarsen_fraction == 0,
+                  ExcMessage(
+                    adapting + "with '" + Entry::estimate_error +
+                    "' its coarse runs are the adapted mesh coarsened, "
+                    "which is only defined for meshes that the pilots "
+                    "refined; allowed with it is '" +
+                    Entry::coarsen_fraction + "' = 0."));
+      // During the run, a mesh that keeps its size at the target must give
+      // cells back to refine others.
+      AssertThrow(parameters.mesh_adaptation.interval == 0 ||
+                    parameters.mesh_adaptation.target_unknowns == 0 ||
+                    parameters.mesh_adaptation.coarsen_fraction > 0,
+                  ExcMessage(
+                    adapting + "with '" + Entry::target_unknowns + "' = " +
+                    std::to_string(parameters.mesh_adaptation.target_unknowns) +
+                    " the mesh keeps about that size once it has "
+                    "reached it, and can then follow the solution only "
+                    "by coarsening where it refines; allowed with it is "
+                    "'" +
+                    Entry::coarsen_fraction + "' > 0."));
+      AssertThrow(parameters.convergence_study.levels == 0,
+                  ExcMessage(adapting + "it cannot be combined with '" +
+                             Entry::levels + "' yet; allowed are '" +
+                             Entry::adaptation_cycles + "' = 0 and '" +
+                             Entry::adaptation_interval + "' = 0 there."));
+      // A target's 'Target unknowns' is the size of the scene's degree's
+      // adapted mesh, scaled for the other of the degrees 1 and 2 that it
+      // compares.
+      check_entry(parameters.accuracy.target_error == 0 ||
+                    parameters.mesh_adaptation.target_unknowns == 0 ||
+                    parameters.geometry.fe_degree <= 2,
+                  Entry::finite_element_degree,
+                  parameters.geometry.fe_degree,
+                  "1 or 2 with '" + Entry::target_error + "' > 0 and '" +
+                    Entry::target_unknowns +
+                    "' > 0 (the target compares degrees 1 and 2, and scales "
+                    "'" +
+                    Entry::target_unknowns +
+                    "' from the scene's degree to the other)");
+      // A target compares uniform meshes with meshes adapted during the run
+      // (target_error.cc); the pilots' adaptation would need its own cycles
+      // at each candidate h.
+      AssertThrow(parameters.accuracy.target_error == 0 ||
+                    parameters.mesh_adaptation.cycles == 0,
+                  ExcMessage(adapting + "it cannot be combined with '" +
+                             Entry::target_error +
+                             "' yet, which chooses between uniform meshes and "
+                             "meshes adapted during the run; allowed are '" +
+                             Entry::adaptation_cycles + "' = 0 (with '" +
+                             Entry::adaptation_interval +
+                             "' > 0 for the adapted ones) or '" +
+                             Entry::target_error + "' = 0."));
+    }
+  } // namespace
+
+
   // A mesh adaptation refines the cells of p4est's forest by their ids,
   // and runs the scene as it is several times: not as a level of a study
   // (yet), nor as a target's pilot (those adapt during the run). An error
@@ -1416,60 +1485,7 @@ namespace Contact
                            "it refines quadrilaterals and "
                            "hexahedra only; allowed with it is '" +
                            Entry::cell_shape + "' = hypercube."));
-    // An error estimate runs a mesh adapted by pilots coarsened, cell by
-    // cell (MeshPlan::coarser()), which gives nested meshes for plans that
-    // refine only.
-    AssertThrow(!accuracy.estimate_error || mesh_adaptation.cycles == 0 ||
-                  mesh_adaptation.coarsen_fraction == 0,
-                ExcMessage(adapting + "with '" + Entry::estimate_error +
-                           "' its coarse runs are the adapted mesh coarsened, "
-                           "which is only defined for meshes that the pilots "
-                           "refined; allowed with it is '" +
-                           Entry::coarsen_fraction + "' = 0."));
-    // During the run, a mesh that keeps its size at the target must give
-    // cells back to refine others.
-    AssertThrow(mesh_adaptation.interval == 0 ||
-                  mesh_adaptation.target_unknowns == 0 ||
-                  mesh_adaptation.coarsen_fraction > 0,
-                ExcMessage(
-                  adapting + "with '" + Entry::target_unknowns +
-                  "' = " + std::to_string(mesh_adaptation.target_unknowns) +
-                  " the mesh keeps about that size once it has "
-                  "reached it, and can then follow the solution only "
-                  "by coarsening where it refines; allowed with it is "
-                  "'" +
-                  Entry::coarsen_fraction + "' > 0."));
-    AssertThrow(convergence_study.levels == 0,
-                ExcMessage(adapting + "it cannot be combined with '" +
-                           Entry::levels + "' yet; allowed are '" +
-                           Entry::adaptation_cycles + "' = 0 and '" +
-                           Entry::adaptation_interval + "' = 0 there."));
-    // A target's 'Target unknowns' is the size of the scene's degree's
-    // adapted mesh, scaled for the other of the degrees 1 and 2 that it
-    // compares.
-    check_entry(accuracy.target_error == 0 ||
-                  mesh_adaptation.target_unknowns == 0 ||
-                  geometry.fe_degree <= 2,
-                Entry::finite_element_degree,
-                geometry.fe_degree,
-                "1 or 2 with '" + Entry::target_error + "' > 0 and '" +
-                  Entry::target_unknowns +
-                  "' > 0 (the target compares degrees 1 and 2, and scales "
-                  "'" +
-                  Entry::target_unknowns +
-                  "' from the scene's degree to the other)");
-    // A target compares uniform meshes with meshes adapted during the run
-    // (target_error.cc); the pilots' adaptation would need its own cycles
-    // at each candidate h.
-    AssertThrow(accuracy.target_error == 0 || mesh_adaptation.cycles == 0,
-                ExcMessage(adapting + "it cannot be combined with '" +
-                           Entry::target_error +
-                           "' yet, which chooses between uniform meshes and "
-                           "meshes adapted during the run; allowed are '" +
-                           Entry::adaptation_cycles + "' = 0 (with '" +
-                           Entry::adaptation_interval +
-                           "' > 0 for the adapted ones) or '" +
-                           Entry::target_error + "' = 0."));
+    check_adaptation_combinations(*this, adapting);
   }
 
 

@@ -111,8 +111,10 @@ namespace Contact
     void print_summary() const override;
 
   private:
-    void print_progress(const StepStatistics &statistics) const;
-    void report_contact_state();
+    void        print_progress(const StepStatistics &statistics) const;
+    void        report_contact_state();
+    std::string friction_force_text() const;
+    std::string momentum_text() const;
     template <class Archive>
     void serialize(Archive &archive);
 
@@ -184,8 +186,6 @@ namespace Contact
       return;
     const std::vector<ContactNode<dim>> &contact_nodes =
       this->friction_solver().boundary().nodes;
-    const Vector<double> &friction_force =
-      this->friction_solver().state().friction_force;
     const bool closed = create_geometry(this->parameters())->gamma3_is_closed();
     const SlipZone zone = slip_zone(contact_nodes,
                                     this->friction_solver().state().node_state,
@@ -212,52 +212,64 @@ namespace Contact
               this->pcout() << ", which holds " << zone.n_stick_inside
                             << " sticking nodes too";
           }
-        // The sum of the nodal forces: along the tangent in 2D, as a
-        // vector in 3D. Its terms are at most the nodal bounds m_p g(0):
-        // where the forces themselves are round-off (a body pressed but
-        // not pulled), their sum is resolved against the bounds.
-        Tensor<1, dim> friction;
-        double         nodal_forces = 0, nodal_bounds = 0;
-        for (unsigned int p = 0; p < contact_nodes.size(); ++p)
-          {
-            const auto force =
-              contact_nodes[p].tangential_vector(friction_force, p);
-            friction += force;
-            nodal_forces += force.norm();
-            nodal_bounds += contact_nodes[p].weight;
-          }
-        nodal_bounds *= this->friction_law().bound(0.);
-        const double force_terms = std::max(nodal_forces, nodal_bounds);
-        // A scalar along the tangent where Gamma_3 is straight (all its
-        // nodes share one tangent), the vector otherwise. (The slip zone
-        // is given by its x range, which locates it on any open Gamma_3,
-        // or on a closed one, a shell's, by its arc.)
-        bool straight = (dim == 2 && !contact_nodes.empty());
-        for (const ContactNode<dim> &node : contact_nodes)
-          straight =
-            straight &&
-            (node.tangents[0] - contact_nodes[0].tangents[0]).norm() < 1e-12;
-        this->pcout() << "; friction force "
-                      << (straight ?
-                            resolved(friction * contact_nodes[0].tangents[0],
-                                     force_terms) :
-                            resolved(friction, force_terms));
-        // |sum_i a_i w_i| <= |a| |w| bounds the terms of each component.
-        double momentum_terms = 0;
-        for (const VectorType &density : this->matrices().momentum_density)
-          momentum_terms =
-            std::max(momentum_terms,
-                     density.l2_norm() * state.velocity.l2_norm());
-        // A component that cancels is the solve's forward error, which a
-        // body held by friction amplifies (tests/scenes/pure_stick: 3e-10
-        // of its terms with OpenBLAS's Sandy Bridge kernel): resolved
-        // against 1e-8 of them, the self-checks' tolerance.
-        this->pcout() << ", momentum "
-                      << resolved(this->matrices().momentum(state.velocity),
-                                  momentum_terms,
-                                  1e-8)
-                      << std::endl;
+        this->pcout() << "; friction force " << friction_force_text()
+                      << ", momentum " << momentum_text() << std::endl;
       }
+  }
+
+
+  // The sum of the nodal forces: along the tangent in 2D, as a vector in
+  // 3D. Its terms are at most the nodal bounds m_p g(0): where the forces
+  // themselves are round-off (a body pressed but not pulled), their sum is
+  // resolved against the bounds.
+  template <int dim>
+  std::string Console<dim>::friction_force_text() const
+  {
+    const std::vector<ContactNode<dim>> &contact_nodes =
+      this->friction_solver().boundary().nodes;
+    const Vector<double> &friction_force =
+      this->friction_solver().state().friction_force;
+    Tensor<1, dim> friction;
+    double         nodal_forces = 0, nodal_bounds = 0;
+    for (unsigned int p = 0; p < contact_nodes.size(); ++p)
+      {
+        const auto force =
+          contact_nodes[p].tangential_vector(friction_force, p);
+        friction += force;
+        nodal_forces += force.norm();
+        nodal_bounds += contact_nodes[p].weight;
+      }
+    nodal_bounds *= this->friction_law().bound(0.);
+    const double force_terms = std::max(nodal_forces, nodal_bounds);
+    // A scalar along the tangent where Gamma_3 is straight (all its
+    // nodes share one tangent), the vector otherwise. (The slip zone
+    // is given by its x range, which locates it on any open Gamma_3,
+    // or on a closed one, a shell's, by its arc.)
+    bool straight = (dim == 2 && !contact_nodes.empty());
+    for (const ContactNode<dim> &node : contact_nodes)
+      straight =
+        straight &&
+        (node.tangents[0] - contact_nodes[0].tangents[0]).norm() < 1e-12;
+    return straight ?
+             resolved(friction * contact_nodes[0].tangents[0], force_terms) :
+             resolved(friction, force_terms);
+  }
+
+
+  // The momentum of the body. |sum_i a_i w_i| <= |a| |w| bounds the terms
+  // of each component. A component that cancels is the solve's forward
+  // error, which a body held by friction amplifies (tests/scenes/pure_stick:
+  // 3e-10 of its terms with OpenBLAS's Sandy Bridge kernel): resolved
+  // against 1e-8 of them, the self-checks' tolerance.
+  template <int dim>
+  std::string Console<dim>::momentum_text() const
+  {
+    const VectorType &velocity       = this->state().velocity;
+    double            momentum_terms = 0;
+    for (const VectorType &density : this->matrices().momentum_density)
+      momentum_terms =
+        std::max(momentum_terms, density.l2_norm() * velocity.l2_norm());
+    return resolved(this->matrices().momentum(velocity), momentum_terms, 1e-8);
   }
 
 
