@@ -42,6 +42,12 @@ namespace Contact
                    const double       value,
                    const std::string &allowed);
 
+  /** Points 'x, y[, z]' separated by ';', each of exactly dim numbers;
+   *  otherwise an error that names the entry and the point. */
+  std::vector<std::vector<double>> parse_points(const std::string &text,
+                                                const unsigned int dim,
+                                                const std::string &entry);
+
   /**
    * The entries that code outside parameters.cc names, as
    * "Subsection/Entry": in error messages, in the overrides of a
