@@ -37,6 +37,8 @@ namespace Contact
     const ResultFiles adaptation_files("adaptation\\.csv|adapted_mesh\\.txt");
 
 
+    // @sect3{The indicators during the run}
+
     // 'Mesh adaptation/Interval' > 0: at each adaptation the indicators of
     // the step alone choose the cells (the mesh follows the solution, so
     // what happened before on the old mesh does not count), the problem
@@ -160,6 +162,8 @@ namespace Contact
     };
   } // namespace
 
+
+  // @sect3{adapt_during_run}
 
   template <int dim>
   void adapt_during_run(ContactProblem<dim> &problem,

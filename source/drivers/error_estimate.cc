@@ -52,6 +52,8 @@ namespace Contact
       coarse_runs("coarse-(1|2|3|space|time|space-1|space-2|time-1|time-2)");
 
 
+    // @sect3{The estimate of a row}
+
     // The estimate of a row from its differences. Where a target's pilots
     // measured two orders that tell the parts apart, the two-order
     // estimate (two_order_error_estimate) may raise the row's own, never
@@ -65,7 +67,7 @@ namespace Contact
       // run with 8h the time of the first slip shows the order 2.28, and its
       // estimate was 0.06 times its difference to an 8 times finer run
       // (4.38e-2, bench/error_estimate.md). A field's norm keeps its
-      // estimate, which errs on the large side (above).
+      // estimate, which errs on the large side (richardson.cc).
       if (!field && differences.size() < 3 && estimate.status.empty())
         {
           estimate.status = "order not checked";

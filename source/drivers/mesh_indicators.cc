@@ -41,6 +41,8 @@ namespace Contact
   } // namespace
 
 
+  // @sect3{The indicators of a step}
+
   template <int dim>
   MeshIndicators<dim>::MeshIndicators(
     const MeshAdaptationParameters &parameters,
@@ -160,6 +162,8 @@ namespace Contact
             }
   }
 
+
+  // @sect3{The choice of cells}
 
   template <int dim>
   Vector<float>

@@ -18,6 +18,8 @@
 
 namespace Contact
 {
+  // @sect3{The log of a sub-run}
+
   namespace
   {
     // The console output of a sub-run, kept while it runs and written to
@@ -48,6 +50,8 @@ namespace Contact
     };
   } // namespace
 
+
+  // @sect3{What a study reads of a run}
 
   double quantity_of(const RunSummary &summary, const std::string &name)
   {
