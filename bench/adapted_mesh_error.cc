@@ -17,9 +17,10 @@
 
 #include <app/run.h>
 #include <core/contact_problem.h>
-#include <drivers/error_estimate.h>
+#include <drivers/adapt_during_run.h>
 #include <drivers/mesh_adaptation.h>
 #include <drivers/reference_interpolation.h>
+#include <drivers/sub_run.h>
 
 #include <iomanip>
 #include <iostream>
@@ -52,8 +53,7 @@ void compare(const std::string                           &scene,
       dealii::Timer       run_timer;
       ContactProblem<dim> problem(parameters);
       problem.adapt_mesh(plan);
-      if (parameters.mesh_adaptation.interval > 0)
-        adapt_during_run(problem, parameters.mesh_adaptation);
+      adapt_during_run(problem, parameters);
       const RunAtTimes run = run_onto<dim>(
         problem, &onto, 0, parameters.output.directory + "/console.log");
       const double wall = run_timer.wall_time();

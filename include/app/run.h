@@ -1,8 +1,9 @@
 /**
  * The command line of the program: `contact [--set Section/Entry=value]...
- * scene.prm`. The scene is read and checked (prm_reader.h), and the driver
- * it asks for runs in its dimension: a convergence study, a run to a
- * target error, a run with its error estimate, or a single run.
+ * scene.prm`. The scene is read and checked (prm_reader.h), and the study
+ * it asks for (compose_study.h) runs in its dimension: a convergence
+ * study, a run to a target error, pilots that adapt the mesh, a run with
+ * its error estimate, or a single run.
  */
 #ifndef contact_run_h
 #define contact_run_h

@@ -7,14 +7,21 @@
 #define contact_convergence_study_h
 
 #include <base/parameters.h>
+#include <drivers/study.h>
 
 namespace Contact
 {
-  /** Runs the levels of the study of `scene` (each in its own
-   *  subdirectory level-l), and prints and writes the table of errors and
-   *  rates (convergence.txt). */
+  /** Runs the levels of the study of the scene (each in its own
+   *  subdirectory level-l, on the scene's own mesh refined), and prints and
+   *  writes the table of errors and rates (convergence.txt). Its result is
+   *  empty: no one run stands for the study. */
   template <int dim>
-  void run_convergence_study(const Parameters &scene);
+  class ConvergenceStudy : public Study<dim>
+  {
+  public:
+    RunResult run(const Parameters      &scene,
+                  const StudyInput<dim> &input) override;
+  };
 } // namespace Contact
 
 #endif

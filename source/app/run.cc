@@ -1,19 +1,15 @@
-/* The command line: reading it, and choosing the driver and the dimension
- * (include/app/run.h). */
+/* The command line: reading it, and running the study the scene asks for
+ * in its dimension (include/app/run.h). */
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
-#include <base/dimensions.h>
+#include <app/compose_study.h>
 #include <app/prm_reader.h>
 #include <app/run.h>
+#include <base/dimensions.h>
 #include <base/version.h>
-#include <core/contact_problem.h>
-#include <drivers/convergence_study.h>
-#include <drivers/error_estimate.h>
-#include <drivers/mesh_adaptation.h>
-#include <drivers/target_error.h>
 
 #include <iostream>
 #include <string>
@@ -98,24 +94,11 @@ namespace Contact
       return command_line;
     }
 
-    // The driver that the scene asks for: a convergence study, a run to a
-    // target error (which adapts meshes itself where the scene asks for
-    // it), an adapted mesh, a run with its error estimate, or a single
-    // run.
+    // The study that the scene asks for (compose_study.h).
     template <int dim>
-    void run_driver(const Parameters &parameters)
+    void run_study(const Parameters &parameters)
     {
-      if (parameters.convergence_study.levels > 0)
-        run_convergence_study<dim>(parameters);
-      else if (parameters.accuracy.target_error > 0)
-        run_to_target<dim>(parameters);
-      else if (parameters.mesh_adaptation.cycles > 0 ||
-               parameters.mesh_adaptation.interval > 0)
-        run_with_mesh_adaptation<dim>(parameters);
-      else if (parameters.accuracy.estimate_error)
-        run_with_error_estimate<dim>(parameters);
-      else
-        ContactProblem<dim>(parameters).run();
+      compose_study<dim>(parameters)->run(parameters, {});
     }
   } // namespace
 
@@ -147,7 +130,7 @@ namespace Contact
       read_scene(prm, command_line.parameter_file, command_line.overrides);
 #define INSTANTIATE(dim)           \
   if (parameters.dimension == dim) \
-    run_driver<dim>(parameters);
+    run_study<dim>(parameters);
     CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
   }

@@ -1,11 +1,11 @@
 /* The Richardson extrapolation of 'Accuracy/Estimate error'
-   (richardson_estimate, error_estimate.cc): exact for a quantity whose
+   (richardson_estimate, richardson.cc): exact for a quantity whose
    error is one power of h, whatever the power; conservative for error
    fields that change shape; and each way in which the runs can fail to be
    in the asymptotic range gives no estimate and says why. Every check of
    the estimate is made to fire here. */
 
-#include <drivers/error_estimate.h>
+#include <drivers/richardson.h>
 
 #include <array>
 #include <cmath>

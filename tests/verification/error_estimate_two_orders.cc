@@ -11,8 +11,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <app/compose_study.h>
 #include <app/run.h>
-#include <drivers/error_estimate.h>
 
 #include <iomanip>
 #include <iostream>
@@ -54,7 +54,8 @@ int main(int argc, char **argv)
                (separate ? "-separated" : "")});
           std::ostringstream console_output;
           auto *const        console = std::cout.rdbuf(console_output.rdbuf());
-          const EstimatedRun result  = run_with_error_estimate<2>(parameters);
+          const RunResult    result =
+            compose_study<2>(parameters)->run(parameters, {});
           std::cout.rdbuf(console);
           const EstimateRow &v      = result.rows[0];
           const double       ratio  = v.estimate.error / v.exact_error;

@@ -13,9 +13,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
+#include <app/compose_study.h>
 #include <app/run.h>
-#include <drivers/error_estimate.h>
-#include <drivers/target_error.h>
 
 #include "scene_files.h"
 
@@ -49,18 +48,20 @@ int main(int argc, char **argv)
 
   std::vector<std::string> settings = target_settings("run-target");
   settings.push_back("Accuracy/Cost model=unknowns times steps");
-  run_to_target<2>(read_parameters(scene, settings));
+  const Parameters target = read_parameters(scene, settings);
+  compose_study<2>(target)->run(target, {});
   const Parameters again =
     read_parameters("run-target/parameters.prm",
                     {"Output/Output directory=run-again"});
-  run_with_error_estimate<2>(again);
+  compose_study<2>(again)->run(again, {});
 
   settings = target_settings("run-limited");
   settings.push_back("Accuracy/Maximum predicted time=1e-9");
   std::string message;
   try
     {
-      run_to_target<2>(read_parameters(scene, settings));
+      const Parameters limited = read_parameters(scene, settings);
+      compose_study<2>(limited)->run(limited, {});
     }
   catch (const dealii::ExceptionBase &error)
     {

@@ -1,0 +1,40 @@
+/* The study a scene asks for, composed (include/app/compose_study.h). */
+
+#include <app/compose_study.h>
+#include <base/dimensions.h>
+#include <drivers/adapt_during_run.h>
+#include <drivers/convergence_study.h>
+#include <drivers/error_estimate.h>
+#include <drivers/mesh_adaptation.h>
+#include <drivers/target_error.h>
+
+namespace Contact
+{
+  // The order of the tests is the precedence of the modes; the checks of
+  // the parameters refuse the combinations that none of them runs (e.g. a
+  // target with pilots, or a convergence study with an estimate).
+  template <int dim>
+  std::unique_ptr<Study<dim>> compose_study(const Parameters &scene)
+  {
+    if (scene.convergence_study.levels > 0)
+      return std::make_unique<ConvergenceStudy<dim>>();
+    const Equipment<dim> equipment = adapt_during_run<dim>;
+    if (scene.accuracy.target_error > 0)
+      return std::make_unique<TargetError<dim>>(
+        std::make_unique<ErrorEstimate<dim>>(equipment), equipment);
+    std::unique_ptr<Study<dim>> run;
+    if (scene.accuracy.estimate_error)
+      run = std::make_unique<ErrorEstimate<dim>>(equipment);
+    else
+      run = std::make_unique<SingleRun<dim>>(equipment);
+    if (scene.mesh_adaptation.cycles > 0)
+      return std::make_unique<PilotAdaptation<dim>>(std::move(run));
+    return run;
+  }
+
+
+#define INSTANTIATE(dim) \
+  template std::unique_ptr<Study<dim>> compose_study<dim>(const Parameters &);
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+} // namespace Contact
