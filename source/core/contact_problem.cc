@@ -10,7 +10,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <base/dimensions.h>
-#include <base/scene_variant.h>
+#include <base/printed_entries.h>
 #include <base/version.h>
 #include <core/contact_problem.h>
 #include <core/csv_file.h>

@@ -26,13 +26,13 @@
 
 #include <base/dimensions.h>
 #include <base/quantity.h>
-#include <base/scene_variant.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
 #include <drivers/error_estimate.h>
 #include <drivers/mesh_adaptation.h>
 #include <drivers/reference_interpolation.h>
+#include <drivers/scene_variant.h>
 #include <geometry/geometry.h>
 
 #include <algorithm>

@@ -40,13 +40,13 @@
 #include <deal.II/numerics/error_estimator.h>
 
 #include <base/dimensions.h>
-#include <base/scene_variant.h>
 #include <core/contact_problem.h>
 #include <core/mesh_plan.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
 #include <drivers/error_estimate.h>
 #include <drivers/mesh_adaptation.h>
+#include <drivers/scene_variant.h>
 
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>

@@ -27,12 +27,12 @@
 #include <deal.II/base/timer.h>
 
 #include <base/dimensions.h>
-#include <base/scene_variant.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
 #include <drivers/error_estimate.h>
 #include <drivers/mesh_adaptation.h>
 #include <drivers/reference_interpolation.h>
+#include <drivers/scene_variant.h>
 #include <drivers/target_error.h>
 
 #include <cmath>
