@@ -19,6 +19,7 @@
 #include <deal.II/base/table_handler.h>
 
 #include <base/dimensions.h>
+#include <base/geometry_base.h>
 #include <base/version.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
@@ -26,7 +27,6 @@
 #include <drivers/convergence_study.h>
 #include <drivers/reference_interpolation.h>
 #include <drivers/scene_variant.h>
-#include <geometry/geometry.h>
 
 #include <cmath>
 #include <fstream>

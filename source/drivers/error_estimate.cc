@@ -25,6 +25,7 @@
 #include <deal.II/base/timer.h>
 
 #include <base/dimensions.h>
+#include <base/geometry_base.h>
 #include <base/quantity.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
@@ -33,7 +34,6 @@
 #include <drivers/mesh_adaptation.h>
 #include <drivers/reference_interpolation.h>
 #include <drivers/scene_variant.h>
-#include <geometry/geometry.h>
 
 #include <algorithm>
 #include <array>

@@ -4,9 +4,9 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <base/geometry_base.h>
 #include <base/printed_entries.h>
 #include <drivers/scene_variant.h>
-#include <geometry/geometry.h>
 
 #include <algorithm>
 #include <cmath>

@@ -186,8 +186,8 @@ namespace Contact
       this->friction_solver().boundary().nodes;
     const Vector<double> &friction_force =
       this->friction_solver().state().friction_force;
-    const bool closed = create_geometry(this->parameters())->gamma3_is_closed();
-    const SlipZone zone = slip_zone(contact_nodes,
+    const bool     closed = this->problem().get_geometry().gamma3_is_closed();
+    const SlipZone zone   = slip_zone(contact_nodes,
                                     this->friction_solver().state().node_state,
                                     closed);
     for (const double t : due)

@@ -538,7 +538,7 @@ namespace Contact
     const auto                      &geometry   = parameters.geometry;
     const double rotation_defect                = defect(space.constraints);
     const bool   must_admit_rotation =
-      create_geometry(parameters)->is_symmetric_about_z_axis() &&
+      this->problem().get_geometry().is_symmetric_about_z_axis() &&
       parameters.boundary.clamped_ids.empty() && defect(hanging) <= 1e-12;
     moment_balance_is_checked =
       (rotation_defect <= 1e-12 || must_admit_rotation) &&
@@ -843,7 +843,7 @@ namespace Contact
       line("balance of moments about the z-axis",
            c.moment_balance,
            c.moment_balance);
-    else if (create_geometry(this->parameters())->is_symmetric_about_z_axis())
+    else if (this->problem().get_geometry().is_symmetric_about_z_axis())
       print_why_moments_are_not_checked();
   }
 
