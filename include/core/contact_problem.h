@@ -41,6 +41,7 @@
 #include <gamma3/factorization.h>
 #include <gamma3/friction.h>
 #include <gamma3/friction_solver.h>
+#include <geometry/geometry.h>
 
 #include <array>
 #include <functional>
@@ -163,6 +164,13 @@ namespace Contact
     /** The scene's mesh changed by the cycles so far. */
     const MeshPlan &get_mesh_plan() const;
 
+    /** The domain of the run: it built the mesh, and answers what the
+     *  postprocessors ask of the domain (GeometryBase). */
+    const Geometry<dim> &get_geometry() const
+    {
+      return *geometry;
+    }
+
     unsigned int           get_step_number() const;
     const DoFHandler<dim> &get_dof_handler() const;
     const Mapping<dim>    &get_mapping() const;
@@ -243,6 +251,9 @@ namespace Contact
     // With 'Verification/Manufactured solution', the exact solution that
     // replaces the load data of the .prm.
     const std::unique_ptr<const ManufacturedSolution<dim>> exact_solution;
+
+    // The domain of the .prm, made once: it builds the mesh (setup.cc).
+    const std::unique_ptr<const Geometry<dim>> geometry;
 
     // Mesh, finite element space, constraints (setup.cc) and the loads on
     // them (loads.cc). The mesh is the Geometry's, changed by the cycles of

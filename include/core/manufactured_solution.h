@@ -85,11 +85,6 @@ namespace Contact
     const double      two_G;
     const FrictionLaw friction_law;
   };
-
-
-  /** Refuses a scene on which the manufactured solution does not solve the
-   *  problem (manufactured_solution.cc). */
-  void check_manufactured_scene(const Parameters &parameters);
 } // namespace Contact
 
 #endif

@@ -1,14 +1,16 @@
 /**
  * The domain of a run behind one interface: Geometry<dim> builds the mesh
  * of the run on a Triangulation that the caller owns, and answers what the
- * rest of the program asks of the domain (GeometryBase): whether Gamma_3 is
- * closed, whether the body may turn into itself, what h is and how it is
- * halved, whether a point lies in the body. Each geometry (the box, the
- * shell, a gmsh mesh file) is one class in its own file, which also
- * declares, parses and checks the entries of the subsection Geometry that
- * describe it alone (GeometryParameters::register_entries()).
- * create_geometry() picks one by 'Geometry/Domain' and 'Geometry/Mesh
- * file'. No code outside source/geometry/ asks which geometry it is.
+ * rest of the program asks of the domain (GeometryBase,
+ * base/geometry_base.h): whether Gamma_3 is closed, whether the body may
+ * turn into itself, what h is and how it is halved, whether a point lies
+ * in the body. Each geometry (the box, the shell, a gmsh mesh file) is one
+ * class in its own file, which also declares, parses and checks the
+ * entries of the subsection Geometry that describe it alone
+ * (GeometryParameters::register_entries()). create_geometry() picks one by
+ * 'Geometry/Domain' and 'Geometry/Mesh file'; geometry.cc registers it as
+ * the factory of base/'s create_geometry(parameters) too. No code outside
+ * source/geometry/ asks which geometry it is.
  *
  * A new geometry (doc/tutorial.md, "Adding a geometry"): its class (a
  * header and a .cc file here, with its entries; CMakeLists.txt compiles
@@ -26,77 +28,15 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <base/geometry_base.h>
 #include <base/parameters.h>
 
-#include <map>
 #include <memory>
 #include <string>
 
 namespace Contact
 {
   using namespace dealii;
-
-  /**
-   * What a geometry answers from its entries alone, the same in 2D and 3D
-   * and before any mesh exists: the kind of its domain (the questions that
-   * the postprocessors, the self-checks and the report of the mesh ask)
-   * and how its mesh size h is set and halved (the questions of the
-   * drivers and of the checks of the parameters). The answers about h have
-   * defaults for a geometry whose mesh is its coarse mesh refined 'Mesh
-   * refinements' times (the shell, a mesh file); the box overrides them.
-   */
-  class GeometryBase
-  {
-  public:
-    explicit GeometryBase(const Parameters &run_parameters);
-    virtual ~GeometryBase() = default;
-
-    /** Whether the cells only approximate a curved boundary: then the
-     *  mapping's degree decides how well (the report of the mesh warns
-     *  below the element's degree), and a point of the body may lie
-     *  outside every cell (Geometry::contains()). */
-    virtual bool has_curved_boundary() const = 0;
-
-    /** Whether Gamma_3 is closed around the z-axis: its slip zone is then
-     *  an arc about the axis, and it has no start x (slip_zone()). */
-    virtual bool gamma3_is_closed() const = 0;
-
-    /** Whether the body is symmetric about the z-axis, so that the rigid
-     *  rotation about it keeps the body and its boundary: without a clamp
-     *  the body may turn, and the balance of moments about the axis is a
-     *  self-check (SelfChecks). */
-    virtual bool is_symmetric_about_z_axis() const = 0;
-
-    /** The entries ('Section/Entry' -> value) that give this geometry's
-     *  mesh with h times 2^-h_halvings (negative: coarser), nested in or
-     *  around the scene's: a scene variant's mesh. */
-    virtual std::map<std::string, std::string>
-    entries_with_h_halved(const int h_halvings) const;
-
-    /** The mesh size as a convergence study's level names it, e.g.
-     *  "mesh refinements = 2". */
-    virtual std::string mesh_size_text() const;
-
-    /** Refuses, naming the entry, a mesh without the nested meshes of 2h
-     *  and 4h that the coarse runs of an error estimate need; `mode` names
-     *  the entry that asks for the estimate. */
-    virtual void check_coarse_runs(const std::string &mode) const;
-
-    /** What keeps the mesh of 2^doublings h from being nested around this
-     *  one, as a reason in a sentence, e.g. "'Geometry/Mesh refinements'
-     *  needs to be at least 3"; empty where nothing does. */
-    virtual std::string coarsening_obstacle(const unsigned int doublings) const;
-
-    /** Refuses a scene on which the manufactured solution
-     *  (core/manufactured_solution.h) does not solve the continuous
-     *  problem or is not resolved. By default every scene: the solution is
-     *  defined on the box. */
-    virtual void check_manufactured_scene() const;
-
-  protected:
-    const Parameters &parameters;
-  };
-
 
   template <int dim>
   class Geometry : public GeometryBase
@@ -149,21 +89,11 @@ namespace Contact
 
 
   /** The geometry of 'Geometry/Mesh file' if it is set, else that of
-   *  'Geometry/Domain'. */
+   *  'Geometry/Domain': made once by the problem of a run, which keeps it
+   *  (ContactProblem::get_geometry()). */
   template <int dim>
   std::unique_ptr<const Geometry<dim>>
   create_geometry(const Parameters &parameters, const MPI_Comm communicator);
-
-  /**
-   * The same geometry, for the answers that need no mesh (GeometryBase),
-   * in the dimension of the parameters. A geometry holds no more than a
-   * reference to the parameters, so the code that asks builds one where it
-   * asks, from the parameters it has: the checks of the parameters and the
-   * drivers have no problem (and no mesh) to take one from, and the
-   * postprocessors get the same answers as the problem's.
-   */
-  std::unique_ptr<const GeometryBase>
-  create_geometry(const Parameters &parameters);
 } // namespace Contact
 
 #endif

@@ -4,7 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <app/prm_reader.h>
-#include <base/scene_variant.h>
+#include <base/printed_entries.h>
 
 #include <algorithm>
 #include <cctype>

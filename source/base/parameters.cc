@@ -12,8 +12,8 @@
 #include <deal.II/lac/vector.h>
 
 #include <base/dimensions.h>
+#include <base/geometry_base.h>
 #include <base/parameters.h>
-#include <geometry/geometry.h>
 
 #include <algorithm>
 #include <cctype>

@@ -28,7 +28,7 @@
 #include <boost/serialization/vector.hpp>
 
 #include <base/dimensions.h>
-#include <base/scene_variant.h>
+#include <base/printed_entries.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>

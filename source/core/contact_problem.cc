@@ -10,7 +10,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <base/dimensions.h>
-#include <base/scene_variant.h>
+#include <base/printed_entries.h>
 #include <base/version.h>
 #include <core/contact_problem.h>
 #include <core/csv_file.h>
@@ -75,6 +75,7 @@ namespace Contact
     , exact_solution(parameters.verification.manufactured() ?
                        std::make_unique<ManufacturedSolution<dim>>(parameters) :
                        nullptr)
+    , geometry(create_geometry<dim>(parameters, mpi_communicator))
     , space(parameters.geometry, mpi_communicator)
     , loads(std::make_unique<Loads<dim>>(parameters,
                                          exact_solution.get(),
@@ -148,7 +149,7 @@ namespace Contact
       }
     make_grid();
     if (exact_solution)
-      check_manufactured_scene(parameters);
+      geometry->check_manufactured_scene();
     setup_system();
     // The postprocessors' set-up may refuse an entry of theirs (a probe
     // outside the body): before anything is reported of the mesh.
@@ -367,8 +368,8 @@ namespace Contact
   RunSummary ContactProblem<dim>::summary() const
   {
     RunSummary summary;
-    summary.cell_size = create_geometry<dim>(parameters, mpi_communicator)
-                          ->cell_size(*space.triangulation, *space.mapping);
+    summary.cell_size =
+      geometry->cell_size(*space.triangulation, *space.mapping);
     summary.time_step           = time_step;
     summary.n_steps             = n_time_steps;
     summary.n_dofs              = space.dof_handler.n_dofs();

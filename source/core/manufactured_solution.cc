@@ -4,7 +4,6 @@
 
 #include <base/dimensions.h>
 #include <core/manufactured_solution.h>
-#include <geometry/geometry.h>
 
 #include <algorithm>
 #include <cmath>
@@ -152,22 +151,6 @@ namespace Contact
     const double t = this->get_time();
     return (is_velocity ? solution.velocity(p, t) :
                           solution.displacement(p, t))[component];
-  }
-
-
-
-  // @sect4{check_manufactured_scene}
-
-  // The exact solution vanishes on x = 0, has u.n = 0 on y = 0 and its
-  // stick/slip front at x = 1/2: whether the scene clamps the first, puts
-  // the contact on the second and has a mesh line on the third, or the
-  // "exact" solution would not solve the discrete problem's continuous
-  // counterpart, or not be resolved, is a question of the geometry's
-  // faces and cells (Box::check_manufactured_scene(); every other
-  // geometry refuses the solution).
-  void check_manufactured_scene(const Parameters &parameters)
-  {
-    create_geometry(parameters)->check_manufactured_scene();
   }
 
 

@@ -43,10 +43,8 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::make_grid()
   {
-    TimerOutput::Scope                         t(computing_timer, "Grid");
-    const std::unique_ptr<const Geometry<dim>> geometry =
-      create_geometry<dim>(parameters, mpi_communicator);
-    auto *fully_distributed =
+    TimerOutput::Scope t(computing_timer, "Grid");
+    auto              *fully_distributed =
       dynamic_cast<parallel::fullydistributed::Triangulation<dim> *>(
         space.triangulation.get());
     if (fully_distributed == nullptr)
@@ -151,12 +149,11 @@ namespace Contact
     // Measured on the bushing (doc/verification.md, "A curved Gamma_3"):
     // Q2 nodes on the chords of a circle make the slip onset converge at
     // first order in h only, Q2 on the curved cells at second order.
-    const auto &geometry = parameters.geometry;
-    if (create_geometry(parameters)->has_curved_boundary() &&
-        geometry.mapping_degree < space.fe.degree)
-      pcout << "Warning: '" << Entry::mapping_degree
-            << "' = " << geometry.mapping_degree << " is below '"
-            << Entry::finite_element_degree << "' = " << space.fe.degree
+    const unsigned int mapping_degree = parameters.geometry.mapping_degree;
+    if (geometry->has_curved_boundary() && mapping_degree < space.fe.degree)
+      pcout << "Warning: '" << Entry::mapping_degree << "' = " << mapping_degree
+            << " is below '" << Entry::finite_element_degree
+            << "' = " << space.fe.degree
             << ": the element's nodes on the circles lie on their chords, "
                "which costs the tractions on Gamma_3 an order of accuracy "
                "(doc/verification.md); set both equal."

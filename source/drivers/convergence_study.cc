@@ -19,14 +19,14 @@
 #include <deal.II/base/table_handler.h>
 
 #include <base/dimensions.h>
-#include <base/scene_variant.h>
+#include <base/geometry_base.h>
 #include <base/version.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
 #include <drivers/convergence_study.h>
 #include <drivers/reference_interpolation.h>
-#include <geometry/geometry.h>
+#include <drivers/scene_variant.h>
 
 #include <cmath>
 #include <fstream>

@@ -23,13 +23,13 @@
 #include <deal.II/base/mpi.h>
 
 #include <base/dimensions.h>
+#include <base/geometry_base.h>
 #include <base/quantity.h>
-#include <base/scene_variant.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
 #include <drivers/error_estimate.h>
 #include <drivers/reference_interpolation.h>
-#include <geometry/geometry.h>
+#include <drivers/scene_variant.h>
 
 #include <algorithm>
 #include <cmath>

@@ -19,7 +19,6 @@
 #include <deal.II/base/table_handler.h>
 
 #include <base/dimensions.h>
-#include <base/scene_variant.h>
 #include <core/contact_problem.h>
 #include <core/mesh_plan.h>
 #include <core/output_directory.h>

@@ -25,7 +25,7 @@
 #include <deal.II/base/timer.h>
 
 #include <base/dimensions.h>
-#include <base/scene_variant.h>
+#include <drivers/scene_variant.h>
 #include <core/output_directory.h>
 #include <drivers/target_error.h>
 #include <drivers/target_error_pilots.h>

@@ -15,7 +15,7 @@
 #include <deal.II/base/timer.h>
 
 #include <base/dimensions.h>
-#include <base/scene_variant.h>
+#include <drivers/scene_variant.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
 #include <drivers/reference_interpolation.h>

@@ -159,63 +159,6 @@ namespace Contact
   } // namespace
 
 
-  // @sect4{What a geometry answers without a mesh}
-
-  GeometryBase::GeometryBase(const Parameters &run_parameters)
-    : parameters(run_parameters)
-  {}
-
-
-  // The defaults are those of a geometry whose mesh is its coarse mesh
-  // refined 'Mesh refinements' times: one refinement more halves h, and
-  // the meshes of 2h and 4h exist where it is refined at least twice.
-  std::map<std::string, std::string>
-  GeometryBase::entries_with_h_halved(const int h_halvings) const
-  {
-    return {
-      {Entry::mesh_refinements,
-       std::to_string(static_cast<int>(parameters.geometry.mesh_refinements) +
-                      h_halvings)}};
-  }
-
-
-  std::string GeometryBase::mesh_size_text() const
-  {
-    return "mesh refinements = " +
-           std::to_string(parameters.geometry.mesh_refinements);
-  }
-
-
-  void GeometryBase::check_coarse_runs(const std::string &mode) const
-  {
-    check_entry(parameters.geometry.mesh_refinements >= 2,
-                Entry::mesh_refinements,
-                parameters.geometry.mesh_refinements,
-                "at least 2 with " + mode +
-                  " (the coarse runs use one and two refinements "
-                  "fewer)");
-  }
-
-
-  std::string
-  GeometryBase::coarsening_obstacle(const unsigned int doublings) const
-  {
-    if (parameters.geometry.mesh_refinements >= doublings)
-      return "";
-    return "'" + Entry::mesh_refinements + "' needs to be at least " +
-           std::to_string(doublings);
-  }
-
-
-  void GeometryBase::check_manufactured_scene() const
-  {
-    AssertThrow(false,
-                ExcMessage("'" + Entry::manufactured_solution +
-                           "' needs the box: '" + Entry::domain +
-                           " = box' and no '" + Entry::mesh_file + "'."));
-  }
-
-
   template <int dim>
   Geometry<dim>::Geometry(const Parameters &run_parameters,
                           const MPI_Comm    mpi_communicator)
@@ -339,21 +282,28 @@ namespace Contact
   }
 
 
-  // On one process: its answers build no mesh.
-  std::unique_ptr<const GeometryBase>
-  create_geometry(const Parameters &parameters)
+  // The factory of base/'s create_geometry(parameters), for the answers
+  // that need no mesh: the geometry of the parameters' dimension on one
+  // process (it builds no mesh).
+  namespace
   {
+    std::unique_ptr<const GeometryBase>
+    create_mesh_free_geometry(const Parameters &parameters)
+    {
 #ifdef CONTACT_WITH_2D
-    if (parameters.dimension == 2)
-      return create_geometry<2>(parameters, MPI_COMM_SELF);
+      if (parameters.dimension == 2)
+        return create_geometry<2>(parameters, MPI_COMM_SELF);
 #endif
 #ifdef CONTACT_WITH_3D
-    if (parameters.dimension == 3)
-      return create_geometry<3>(parameters, MPI_COMM_SELF);
+      if (parameters.dimension == 3)
+        return create_geometry<3>(parameters, MPI_COMM_SELF);
 #endif
-    AssertThrow(false, ExcInternalError("A dimension without a geometry."));
-    return nullptr;
-  }
+      AssertThrow(false, ExcInternalError("A dimension without a geometry."));
+      return nullptr;
+    }
+
+    const GeometryRegistration registration(create_mesh_free_geometry);
+  } // namespace
 
 
 #define INSTANTIATE(dim)                                              \

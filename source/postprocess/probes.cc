@@ -54,10 +54,7 @@ namespace Contact
                          this->mpi_communicator()),
                        n_processes = Utilities::MPI::n_mpi_processes(
                          this->mpi_communicator());
-    // Built here from the parameters, as everywhere that asks
-    // (create_geometry()): it only answers.
-    const std::unique_ptr<const Geometry<dim>> geometry =
-      create_geometry<dim>(this->parameters(), this->mpi_communicator());
+    const Geometry<dim> &geometry = this->problem().get_geometry();
     probes.clear();
     for (const auto &coordinates : this->parameters().output.probe_points)
       {
@@ -89,8 +86,8 @@ namespace Contact
         std::ostringstream text;
         text << point;
         if (evaluating_process == n_processes &&
-            geometry->has_curved_boundary() &&
-            geometry->contains(point, *space.triangulation))
+            geometry.has_curved_boundary() &&
+            geometry.contains(point, *space.triangulation))
           evaluating_process = probe_near_curved_boundary(point, probe);
         AssertThrow(evaluating_process < n_processes,
                     ExcMessage("Entry '" + Entry::probe_points +

@@ -81,7 +81,7 @@ namespace Contact
       line("balance of moments about the z-axis",
            c.moment_balance,
            c.moment_balance);
-    else if (create_geometry(this->parameters())->is_symmetric_about_z_axis())
+    else if (this->problem().get_geometry().is_symmetric_about_z_axis())
       print_why_moments_are_not_checked();
   }
 

@@ -290,7 +290,7 @@ namespace Contact
     const auto                      &geometry   = parameters.geometry;
     const double rotation_defect                = defect(space.constraints);
     const bool   must_admit_rotation =
-      create_geometry(parameters)->is_symmetric_about_z_axis() &&
+      this->problem().get_geometry().is_symmetric_about_z_axis() &&
       parameters.boundary.clamped_ids.empty() && defect(hanging) <= 1e-12;
     moment_balance_is_checked =
       (rotation_defect <= 1e-12 || must_admit_rotation) &&

@@ -192,8 +192,8 @@ namespace Contact
     auto &quantities = summary.final_quantities;
     quantities.emplace_back(Quantity{Kind::friction_dissipation}.name(),
                             this->state().energy.friction_dissipation);
-    const bool closed = create_geometry(this->parameters())->gamma3_is_closed();
-    const SlipZone zone = slip_zone(this->friction_solver().boundary().nodes,
+    const bool     closed = this->problem().get_geometry().gamma3_is_closed();
+    const SlipZone zone   = slip_zone(this->friction_solver().boundary().nodes,
                                     this->friction_solver().state().node_state,
                                     closed);
     const unsigned int n_nodes = zone.n_stick + zone.n_slip;

@@ -2,35 +2,17 @@
  * A variant of a scene: the same scene with another h, k, element degree
  * and output directory, as the drivers run it (the levels of a convergence
  * study, the coarse runs of an error estimate, the pilots of a target and
- * the run it chooses). Also the one reader of parameters as a run prints
- * them (Parameters::used_parameters, a run's parameters.prm).
+ * the run it chooses).
  */
 #ifndef contact_scene_variant_h
 #define contact_scene_variant_h
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <base/parameters.h>
 
-#include <map>
 #include <string>
 
 namespace Contact
 {
-  /** 'Section/Entry' -> value of every entry of a parameter text as
-   *  ParameterHandler prints it ("subsection X", "set a = b", "end"; other
-   *  lines, such as comments, are skipped). Entries outside subsections
-   *  are keyed by their name alone. */
-  std::map<std::string, std::string>
-  read_printed_entries(const std::string &text);
-
-  /** Sets the entry 'Section/Entry' of prm to value. Throws
-   *  ParameterHandler's exception for an entry that is not declared or a
-   *  value that does not fit its pattern. */
-  void set_entry(ParameterHandler  &prm,
-                 const std::string &path,
-                 const std::string &value);
-
   /** A scene with other h, k, degree and output directory. */
   struct SceneVariant
   {
