@@ -24,6 +24,7 @@
 #include <core/output_directory.h>
 #include <drivers/mesh_adaptation.h>
 #include <drivers/mesh_indicators.h>
+#include <drivers/scene_variant.h>
 #include <drivers/sub_run.h>
 
 #include <algorithm>

@@ -408,7 +408,7 @@ namespace Contact
     {
       Timer timer;
       // Quadratic elements on tetrahedra have no nodal friction weights
-      // (parameters.cc): there only degree 1.
+      // (scene_parameters.cc): there only degree 1.
       std::vector<unsigned int> degrees = {2, 1};
       if (dim == 3 &&
           (parameters.geometry.cell_shape ==

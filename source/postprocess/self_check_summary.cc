@@ -196,6 +196,18 @@ namespace Contact
 
 
 
+  // The members above, instantiated here as those of self_checks.cc are
+  // there (the class is explicitly instantiated in that file only).
+#define INSTANTIATE(dim)                                                    \
+  template void SelfChecks<dim>::save(boost::archive::binary_oarchive &);   \
+  template void SelfChecks<dim>::load(boost::archive::binary_iarchive &);   \
+  template void SelfChecks<dim>::print_summary() const;                     \
+  template void SelfChecks<dim>::print_why_moments_are_not_checked() const; \
+  template void SelfChecks<dim>::require_success() const;                   \
+  template void SelfChecks<dim>::add_columns(TimeSeriesRow &) const;
+  CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+
   namespace
   {
     const PostprocessorRegistration<SelfChecks> registration(30);
