@@ -174,29 +174,58 @@ namespace Contact
     double     strain_norm(const VectorType &v) const;
     VectorType ghosted(const VectorType &v) const;
 
-  protected:
-    // The phases of a run and the data members. A problem derived from
-    // this one, a variant of the scheme, reads the members and may
-    // override the virtual phases.
+  private:
+    // @sect4{The seams of a variant of the scheme}
+    //
+    // A problem derived from this one (a test's faults,
+    // tests/verification/faults.h) overrides these private virtual
+    // functions; the run calls them at fixed points and gives them what
+    // they may change, so that a variant reaches no member of the problem.
+
+    /** The loads of the run, made once at its start (before anything is
+     *  computed or written, so that an expression with an error is refused
+     *  first). */
+    virtual std::unique_ptr<Loads<dim>>
+    create_loads(const Parameters         &run_parameters,
+                 const DiscreteSpace<dim> &discrete_space,
+                 TimerOutput              &timer) const;
+
+    /** The friction solver on `nodes`, the nodes of Gamma_3 of the current
+     *  mesh (make_contact_nodes()). */
+    virtual std::unique_ptr<FrictionSolver<dim>>
+    create_friction_solver(std::vector<ContactNode<dim>>    nodes,
+                           const FrictionSolverEnvironment &environment) const;
+
+    /** Called with M, A_h and B_h of a mesh before K is formed of them. */
+    virtual void after_assembly(SystemMatrices<dim> & /*matrices*/) const
+    {}
+
+    /** Called after u_n and w_n were carried to an adapted mesh, with the
+     *  energies of the state on the new mesh and those before the
+     *  transfer; the difference is booked as the transfer's term of the
+     *  balance. */
+    virtual void after_mesh_transfer(EnergyBalance & /*energy*/,
+                                     const EnergyBalance & /*before*/) const
+    {}
+
+    // The phases of a run.
 
     // setup.cc
     void make_grid();
     void setup_system();
     void report_mesh() const;
-    /** The friction solver on the nodes of Gamma_3 of the current mesh. */
-    virtual std::unique_ptr<FrictionSolver<dim>> create_friction_solver();
 
     // mesh_transfer.cc
     void transfer_to_adapted_mesh();
 
     // assembly.cc
     /** M, A_h, B_h and K of the current mesh. */
-    virtual void assemble_matrices();
-    void         form_system_matrix();
-    void         set_initial_values();
+    void assemble_matrices();
+    void form_system_matrix();
+    void set_initial_values();
     /** The products of the state with the matrices (and the energies of
      *  the state) after u_n and w_n were set. */
-    virtual void     update_state_products();
+    void             update_state_products();
     void             warn_of_normal_component(const VectorType  &values,
                                               const std::string &entry) const;
     void             condensed_product(const MatrixType &matrix,
@@ -230,7 +259,6 @@ namespace Contact
     // Parameters and the objects fixed by them (the constructor,
     // contact_problem.cc).
     const Parameters   parameters;
-    const FrictionLaw  friction_law;
     const unsigned int n_time_steps;
     // The time step k: constant, except while a step is cut
     // ('Solver/Step cuts').
@@ -240,13 +268,10 @@ namespace Contact
     ConditionalOStream  pcout;
     mutable TimerOutput computing_timer;
 
-    // With 'Verification/Manufactured solution', the exact solution that
-    // replaces the load data of the .prm.
-    const std::unique_ptr<const ManufacturedSolution<dim>> exact_solution;
-
     // Mesh, finite element space, constraints (setup.cc) and the loads on
-    // them (loads.cc). The mesh is the Geometry's, changed by the cycles of
-    // a mesh adaptation (drivers/mesh_adaptation.h).
+    // them (loads.cc; with 'Verification/Manufactured solution' they are
+    // the manufactured solution's). The mesh is the Geometry's, changed by the
+    // cycles of a mesh adaptation (drivers/mesh_adaptation.h).
     MeshPlan           mesh_plan;
     DiscreteSpace<dim> space;
     // During the run: every how many steps, and what flags the cells

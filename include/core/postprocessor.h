@@ -143,7 +143,7 @@ namespace Contact
     }
     const FrictionLaw &friction_law() const
     {
-      return observed->friction_law;
+      return observed->friction_solver->law();
     }
     const FrictionSolver<dim> &friction_solver() const
     {
@@ -163,7 +163,7 @@ namespace Contact
     }
     const ManufacturedSolution<dim> *exact_solution() const
     {
-      return observed->exact_solution.get();
+      return observed->loads->exact_solution();
     }
     const ConditionalOStream &pcout() const
     {

@@ -127,6 +127,7 @@ namespace Contact
     for (MatrixType *matrix :
          {&matrices.mass, &matrices.viscosity, &matrices.elasticity})
       matrix->compress(VectorOperation::add);
+    after_assembly(matrices);
     form_system_matrix();
   }
 
@@ -160,7 +161,7 @@ namespace Contact
                              space.dof_handler,
                              loads->initial_velocity(),
                              state.velocity);
-    if (!exact_solution)
+    if (!parameters.verification.manufactured())
       {
         warn_of_normal_component(state.displacement, "Initial displacement");
         warn_of_normal_component(state.velocity, "Initial velocity");
@@ -309,7 +310,7 @@ namespace Contact
     step.viscous_dissipation = k * (products.viscosity * state.velocity);
     step.external_work       = k * (state.load * state.velocity);
     const ContactBoundary<dim> &gamma3 = friction_solver->boundary();
-    if (!friction_law.is_frictionless())
+    if (!friction_solver->law().is_frictionless())
       step.friction_dissipation =
         k * (friction_solver->state().friction_force *
              gamma3.tangential_velocities(state.velocity));

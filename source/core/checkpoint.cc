@@ -411,7 +411,7 @@ namespace Contact
         shape(space.dof_handler,
               friction_solver->boundary().nodes.size(),
               time_step,
-              exact_solution != nullptr,
+              parameters.verification.manufactured(),
               mpi_communicator);
       std::map<std::string, std::string> entries =
         problem_entries(parameters.used_parameters);
@@ -467,7 +467,7 @@ namespace Contact
       shape(space.dof_handler,
             friction_solver->boundary().nodes.size(),
             time_step,
-            exact_solution != nullptr,
+            parameters.verification.manufactured(),
             mpi_communicator);
     AssertThrow(same_problem(stored_shape, problem_shape),
                 ExcMessage(another_problem(name,

@@ -61,25 +61,15 @@ namespace Contact
 
   // @sect4{ContactProblem::ContactProblem}
 
-  // The load data are parsed here (Loads), so that an expression with an
-  // error is refused before anything is computed or written.
   template <int dim>
   ContactProblem<dim>::ContactProblem(const Parameters &run_parameters)
     : parameters(run_parameters)
-    , friction_law(parameters.friction)
     , n_time_steps(parameters.time.n_steps())
     , time_step(parameters.time.end_time / n_time_steps)
     , mpi_communicator(MPI_COMM_WORLD)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
-    , exact_solution(parameters.verification.manufactured() ?
-                       std::make_unique<ManufacturedSolution<dim>>(parameters) :
-                       nullptr)
     , space(parameters.geometry, mpi_communicator)
-    , loads(std::make_unique<Loads<dim>>(parameters,
-                                         exact_solution.get(),
-                                         space,
-                                         computing_timer))
   {
     AssertThrow(parameters.dimension == dim, ExcInternalError());
     for (const auto &[rank, create] : postprocessor_registry<dim>())
@@ -138,6 +128,9 @@ namespace Contact
   RunSummary ContactProblem<dim>::run()
   {
     run_timer.restart();
+    // The load data are parsed first, so that an expression with an error
+    // is refused before anything is computed or written.
+    loads = create_loads(parameters, space, computing_timer);
     output_directory_lock =
       lock_output_directory(parameters.output.directory, mpi_communicator);
     const bool resumed = parameters.output.resume;
@@ -147,7 +140,7 @@ namespace Contact
         read_checkpoint_mesh_plan();
       }
     make_grid();
-    if (exact_solution)
+    if (parameters.verification.manufactured())
       check_manufactured_scene(parameters);
     setup_system();
     // The postprocessors' set-up may refuse an entry of theirs (a probe
@@ -333,7 +326,7 @@ namespace Contact
                                TimerOutput::total_wall_time)["Time steps"] /
                              std::max(steps, 1u);
     const double substitution = substitution_time / std::max(steps, 1u);
-    if (!friction_law.is_frictionless())
+    if (!friction_solver->law().is_frictionless())
       pcout << "Contact solver: " << friction_solver->description()
             << std::endl;
     if (factorization && factorization->factor_size() > 0)

@@ -62,7 +62,8 @@ namespace Contact
     // the friction solver to the factor: both go first.
     friction_solver.reset();
     factorization.reset();
-    const double energy_before = state.energy.kinetic + state.energy.elastic;
+    const EnergyBalance before        = state.energy;
+    const double        energy_before = before.kinetic + before.elastic;
     const types::global_dof_index unknowns_before = space.dof_handler.n_dofs();
     {
       const VectorType old_displacement = space.ghosted(state.displacement);
@@ -83,6 +84,7 @@ namespace Contact
 
     assemble_matrices();
     update_state_products();
+    after_mesh_transfer(state.energy, before);
     const double energy_after = state.energy.kinetic + state.energy.elastic;
     state.energy.mesh_transfer += energy_after - energy_before;
 

@@ -106,8 +106,30 @@ namespace Contact
                                &state.system_times_velocity})
       vector->reinit(owned, mpi_communicator);
 
-    friction_solver = create_friction_solver();
+    friction_solver = create_friction_solver(
+      make_contact_nodes(space, parameters.boundary.contact_ids),
+      {parameters,
+       space.constraints,
+       space.locally_owned_dofs,
+       mpi_communicator,
+       pcout,
+       computing_timer});
     loads->setup(friction_solver->boundary());
+  }
+
+
+  // @sect4{ContactProblem::create_loads}
+
+  // The loads of the .prm, or of the manufactured solution (a virtual
+  // function: a problem derived from this one may make loads derived from
+  // Loads).
+  template <int dim>
+  std::unique_ptr<Loads<dim>>
+  ContactProblem<dim>::create_loads(const Parameters         &run_parameters,
+                                    const DiscreteSpace<dim> &discrete_space,
+                                    TimerOutput              &timer) const
+  {
+    return std::make_unique<Loads<dim>>(run_parameters, discrete_space, timer);
   }
 
 
@@ -115,20 +137,15 @@ namespace Contact
 
   // The friction solver on the nodes of Gamma_3 of the current mesh, every
   // node sticking and without force (a virtual function: a problem derived
-  // from this one may make a solver derived from FrictionSolver).
+  // from this one may change the nodes or make a solver derived from
+  // FrictionSolver).
   template <int dim>
   std::unique_ptr<FrictionSolver<dim>>
-  ContactProblem<dim>::create_friction_solver()
+  ContactProblem<dim>::create_friction_solver(
+    std::vector<ContactNode<dim>>    nodes,
+    const FrictionSolverEnvironment &environment) const
   {
-    return std::make_unique<FrictionSolver<dim>>(
-      parameters,
-      friction_law,
-      make_contact_nodes(space, parameters.boundary.contact_ids),
-      space.constraints,
-      space.locally_owned_dofs,
-      mpi_communicator,
-      pcout,
-      computing_timer);
+    return std::make_unique<FrictionSolver<dim>>(environment, std::move(nodes));
   }
 
 
@@ -164,11 +181,14 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                       \
-  template void ContactProblem<dim>::make_grid();              \
-  template void ContactProblem<dim>::setup_system();           \
-  template std::unique_ptr<FrictionSolver<dim>>                \
-                ContactProblem<dim>::create_friction_solver(); \
+#define INSTANTIATE(dim)                                                     \
+  template void                        ContactProblem<dim>::make_grid();     \
+  template void                        ContactProblem<dim>::setup_system();  \
+  template std::unique_ptr<Loads<dim>> ContactProblem<dim>::create_loads(    \
+    const Parameters &, const DiscreteSpace<dim> &, TimerOutput &) const;    \
+  template std::unique_ptr<FrictionSolver<dim>>                              \
+  ContactProblem<dim>::create_friction_solver(                               \
+    std::vector<ContactNode<dim>>, const FrictionSolverEnvironment &) const; \
   template void ContactProblem<dim>::report_mesh() const;
 
   CONTACT_INSTANTIATE(INSTANTIATE)
