@@ -135,11 +135,11 @@ namespace Contact
     }
     double time_step() const
     {
-      return observed->time_step;
+      return observed->state.time_step;
     }
     unsigned int n_time_steps() const
     {
-      return observed->n_time_steps;
+      return observed->parameters.time.n_steps();
     }
     const FrictionLaw &friction_law() const
     {
@@ -175,7 +175,7 @@ namespace Contact
     }
     MPI_Comm mpi_communicator() const
     {
-      return observed->mpi_communicator;
+      return observed->space.mpi_communicator;
     }
     /** All postprocessors of the run, this one among them. */
     const std::vector<std::unique_ptr<Postprocessor<dim>>> &

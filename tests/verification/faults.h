@@ -524,10 +524,10 @@ namespace Contact
                                                  std::move(nodes));
     }
 
-    void after_assembly(SystemMatrices<dim> &matrices) const override
+    void after_assembly(SystemMatrices<dim> &assembled) const override
     {
       if (faults.stiffness_factor != 1.)
-        matrices.elasticity *= faults.stiffness_factor;
+        assembled.elasticity *= faults.stiffness_factor;
     }
 
     // The energies before the transfer, kept on the new mesh.
