@@ -304,9 +304,7 @@ namespace Contact
     // setup.cc).
     std::unique_ptr<FrictionSolver<dim>> friction_solver;
 
-    // Wall times: of the whole run, and of the steps' first solves with K
-    // (or substitutions with its factor) summed over the steps computed by
-    // this process's run (not those before a resumed checkpoint).
+    // The run's wall times ('Output/Print timings').
     RunTimes run_times;
 
     // The lock on the output directory (its file descriptor, closed with

@@ -9,10 +9,11 @@
  * class.
  *
  * A run calls, in the order of the postprocessors' ranks:
- *   initialize()      at the end of the set-up of the space, Gamma_3 and
- *                     the loads, before the matrices are assembled and the
- *                     initial values set (a postprocessor may refuse its
- *                     entries here, before the mesh is reported),
+ *   initialize()      at the end of the set-up of the space, Gamma_3, the
+ *                     loads and the matrices M, A_h and B_h, before the
+ *                     initial values are set and K is factorised (a
+ *                     postprocessor may refuse its entries here, before
+ *                     the mesh is reported),
  *   load()            on --resume, with the checkpoint's state,
  *   start(resumed)    before the first step: files are opened (a resumed
  *                     run cuts them back to its step), a fresh run's
