@@ -6,15 +6,19 @@
  * backward Euler in the velocity, (5.2)-(5.5).
  *
  * The class is the core that solves: the mesh and the space V_h
- * (DiscreteSpace), the loads (Loads), the matrices and the factor of K, the
- * step state, the friction solver on Gamma_3 and the time loop with its
- * step cuts and checkpoints. It is split over files by phase (the ASPECT
- * habit):
- *   contact_problem.cc  constructor, run(), the time loop, the summary
+ * (DiscreteSpace), the loads (Loads), the matrices and the factor of K
+ * (SystemMatrices), the step state, the friction solver on Gamma_3 and the
+ * time loop with its step cuts. It is split over files by phase (the
+ * ASPECT habit):
+ *   contact_problem.cc  constructor, run(), the initial state, the time
+ *                       loop, the summary
  *   setup.cc            make_grid, setup_system
- *   assembly.cc         matrices, initial values, the energy balance
- *   time_stepping.cc    factorisation of K, the step and its cuts
- *   checkpoint.cc       checkpoint and restart
+ *   assembly.cc         the matrices, the factor of K, the state's
+ *                       products with them (SystemMatrices)
+ *   time_stepping.cc    the step, its energy balance and its cuts
+ *   mesh_transfer.cc    the move to a mesh adapted during the run
+ * Checkpoint and restart are a class of their own (Checkpoint,
+ * checkpoint.h) that the problem owns.
  * Everything that observes a run (output, self-checks, diagnostics) is a
  * Postprocessor (postprocessor.h, source/postprocess/): the time loop is
  * "advance; then each postprocessor". The friction problem on Gamma_3 (its
@@ -33,6 +37,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <base/parameters.h>
+#include <core/checkpoint.h>
 #include <core/discrete_space.h>
 #include <core/loads.h>
 #include <core/manufactured_solution.h>
@@ -58,12 +63,21 @@ namespace Contact
   class Postprocessor;
 
 
+  /** M w_n, A w_n and B w_n of a step's velocity (condensed). */
+  struct VelocityProducts
+  {
+    VectorType mass;
+    VectorType viscosity;
+    VectorType elasticity;
+  };
+
+
   /**
    * The matrices of (5.2): mass (with rho), viscosity A_h, elasticity B_h,
-   * and K = (1/k) M + A_h + k B_h, all condensed with the constraints
-   * (assembly.cc). momentum_density[d]_i = int rho phi_i . e_d and
-   * angular_momentum_density_i = int rho (x x phi_i)_z give the momentum
-   * and the angular momentum of a velocity as dot products.
+   * and K = (1/k) M + A_h + k B_h with its factor, all condensed with the
+   * constraints (assembly.cc). momentum_density[d]_i = int rho phi_i . e_d
+   * and angular_momentum_density_i = int rho (x x phi_i)_z give the
+   * momentum and the angular momentum of a velocity as dot products.
    */
   template <int dim>
   struct SystemMatrices
@@ -74,6 +88,35 @@ namespace Contact
     MatrixType                  system;
     std::array<VectorType, dim> momentum_density;
     VectorType                  angular_momentum_density;
+    /** The factor of K, made once per mesh and again when a step is
+     *  cut. */
+    std::unique_ptr<Factorization> factorization;
+
+    /** Empty matrices and vectors of the sparsity of `space`, without a
+     *  factor. */
+    void reinit(const DiscreteSpace<dim> &space);
+
+    /** M, A_h, B_h and the momentum densities on `space`. */
+    void assemble(const DiscreteSpace<dim> &space,
+                  const MaterialParameters &material);
+
+    /** K for the time step k, and its factor. */
+    void factorize(const double              k,
+                   const SolverParameters   &solver,
+                   const DiscreteSpace<dim> &space,
+                   TimerOutput              &timer);
+
+    /** M w, A w and B w of a velocity w of V_h. */
+    VelocityProducts
+    velocity_products(const VectorType                &w,
+                      const AffineConstraints<double> &constraints) const;
+
+    /** M w_n and B u_n, which the next step's right-hand side reads, and
+     *  the kinetic and elastic energy from them, after u_n and w_n were
+     *  set. */
+    void
+    update_state_products(StepState                       &state,
+                          const AffineConstraints<double> &constraints) const;
 
     /** int rho w dx: not condensed, since the translations it is tested
      *  with need not lie in V_h. */
@@ -87,12 +130,14 @@ namespace Contact
   };
 
 
-  /** M w_n, A w_n and B w_n of a step's velocity (condensed). */
-  struct VelocityProducts
+  /** The wall times of a run: of the whole run, and of the steps' first
+   *  solves with K (or substitutions with its factor) summed over the
+   *  steps computed by this process's run (not those before a resumed
+   *  checkpoint). */
+  struct RunTimes
   {
-    VectorType mass;
-    VectorType viscosity;
-    VectorType elasticity;
+    Timer  run;
+    double substitution = 0;
   };
 
 
@@ -182,99 +227,87 @@ namespace Contact
     double     strain_norm(const VectorType &v) const;
     VectorType ghosted(const VectorType &v) const;
 
-  protected:
-    // The phases of a run and the data members. A problem derived from
-    // this one, a variant of the scheme, reads the members and may
-    // override the virtual phases.
+  private:
+    // @sect4{The seams of a variant of the scheme}
+    //
+    // A problem derived from this one (a test's faults,
+    // tests/verification/faults.h) overrides these private virtual
+    // functions; the run calls them at fixed points and gives them what
+    // they may change, so that a variant reaches no member of the problem.
+
+    /** The loads of the run, made once at its start (before anything is
+     *  computed or written, so that an expression with an error is refused
+     *  first). */
+    virtual std::unique_ptr<Loads<dim>>
+    create_loads(const Parameters         &run_parameters,
+                 const DiscreteSpace<dim> &discrete_space,
+                 TimerOutput              &timer) const;
+
+    /** The friction solver on `nodes`, the nodes of Gamma_3 of the current
+     *  mesh (make_contact_nodes()). */
+    virtual std::unique_ptr<FrictionSolver<dim>>
+    create_friction_solver(std::vector<ContactNode<dim>>    nodes,
+                           const FrictionSolverEnvironment &environment) const;
+
+    /** Called with M, A_h and B_h of a mesh before K is formed of them. */
+    virtual void after_assembly(SystemMatrices<dim> & /*matrices*/) const
+    {}
+
+    /** Called after u_n and w_n were carried to an adapted mesh, with the
+     *  energies of the state on the new mesh and those before the
+     *  transfer; the difference is booked as the transfer's term of the
+     *  balance. */
+    virtual void after_mesh_transfer(EnergyBalance & /*energy*/,
+                                     const EnergyBalance & /*before*/) const
+    {}
+
+    // @sect4{The phases of a run}
 
     // setup.cc
     void make_grid();
+    /** V_h, its matrices, the vectors of the state, Gamma_3's nodes and
+     *  the friction solver, the loads on them, and M, A_h and B_h. */
     void setup_system();
-    void report_mesh() const;
-    /** The friction solver on the nodes of Gamma_3 of the current mesh. */
-    virtual std::unique_ptr<FrictionSolver<dim>> create_friction_solver();
+
+    // contact_problem.cc
+    void time_loop();
+
+    // time_stepping.cc
+    /** The step from t_n - k to t_n, cut while it fails and cuts are
+     *  left. */
+    StepStatistics advance(const unsigned int cuts_left);
 
     // mesh_transfer.cc
     void transfer_to_adapted_mesh();
 
-    // assembly.cc
-    /** M, A_h, B_h and K of the current mesh. */
-    virtual void assemble_matrices();
-    void         form_system_matrix();
-    void         set_initial_values();
-    /** The products of the state with the matrices (and the energies of
-     *  the state) after u_n and w_n were set. */
-    virtual void     update_state_products();
-    void             warn_of_normal_component(const VectorType  &values,
-                                              const std::string &entry) const;
-    void             condensed_product(const MatrixType &matrix,
-                                       const VectorType &x,
-                                       VectorType       &product) const;
-    VelocityProducts velocity_products() const;
-    void             update_energy_balance(const VelocityProducts &products);
-
-    // time_stepping.cc
-    void           factorize_system_matrix();
-    void           change_time_step(const double k);
-    StepStatistics advance(const unsigned int cuts_left);
-    StepStatistics do_time_step();
-
-    // contact_problem.cc
-    void       prepare_output_directory();
-    void       time_loop();
-    void       print_timings(const unsigned int steps) const;
-    RunSummary summary() const;
-
-    // checkpoint.cc
-    void require_checkpoint() const;
-    void read_checkpoint_mesh_plan();
-    bool checkpoint_due() const;
-    void save_checkpoint();
-    void load_checkpoint();
-
-    // The data members, each group with the file that sets it up or
-    // changes it.
+    // @sect4{The data members}
     //
-    // Parameters and the objects fixed by them (the constructor,
-    // contact_problem.cc).
-    const Parameters   parameters;
-    const FrictionLaw  friction_law;
-    const unsigned int n_time_steps;
-    // The time step k: constant, except while a step is cut
-    // ('Solver/Step cuts').
-    double time_step;
+    // Each with the file that sets it up or changes it.
 
-    MPI_Comm            mpi_communicator;
+    // The parameters (the constructor, contact_problem.cc).
+    const Parameters parameters;
+
     ConditionalOStream  pcout;
     mutable TimerOutput computing_timer;
-
-    // With 'Verification/Manufactured solution', the exact solution that
-    // replaces the load data of the .prm.
-    const std::unique_ptr<const ManufacturedSolution<dim>> exact_solution;
 
     // The domain of the .prm, made once: it builds the mesh (setup.cc).
     const std::unique_ptr<const Geometry<dim>> geometry;
 
-    // Mesh, finite element space, constraints (setup.cc) and the loads on
-    // them (loads.cc). The mesh is the Geometry's, changed by the cycles of
-    // a mesh adaptation (drivers/mesh_adaptation.h).
-    MeshPlan           mesh_plan;
-    DiscreteSpace<dim> space;
-    // During the run: every how many steps, and what flags the cells
-    // (0 and empty: the mesh stays; mesh_transfer.cc).
-    unsigned int          adaptation_interval = 0;
-    std::function<void()> choose_cells_to_adapt;
-    // A resumed run whose checkpoint was written at the end of a run, at a
-    // step after which the mesh adapts: the adaptation comes first.
-    bool                        adaptation_due = false;
+    // Mesh, finite element space and constraints (setup.cc), the cycles of
+    // a mesh adaptation that change the Geometry's mesh
+    // (drivers/mesh_adaptation.h) and those to come during the run
+    // (mesh_transfer.cc), and the loads on the space (loads.cc; with
+    // 'Verification/Manufactured solution' they are the manufactured
+    // solution's).
+    DiscreteSpace<dim>          space;
+    MeshAdaptation              adaptation;
     std::unique_ptr<Loads<dim>> loads;
 
-    // The matrices (assembly.cc) and the factor of K (time_stepping.cc),
-    // made once per mesh (and again when a step is cut).
-    SystemMatrices<dim>            matrices;
-    std::unique_ptr<Factorization> factorization;
+    // The matrices and the factor of K (assembly.cc), made once per mesh
+    // (and the factor again when a step is cut).
+    SystemMatrices<dim> matrices;
 
-    // The state at t_n (time_stepping.cc).
+    // The state at t_n with the time step k (time_stepping.cc).
     StepState state;
 
     // The friction problem on Gamma_3: its nodes, the path between them
@@ -282,17 +315,16 @@ namespace Contact
     // setup.cc).
     std::unique_ptr<FrictionSolver<dim>> friction_solver;
 
-    // Wall times: of the whole run, of the steps' first solves with K (or
-    // substitutions with its factor) summed over the steps computed by this
-    // process's run (not those before a resumed checkpoint), and since the
-    // last checkpoint ('Output/Checkpoint minutes').
-    Timer  run_timer;
-    double substitution_time = 0;
-    Timer  checkpoint_timer;
+    // The run's wall times ('Output/Print timings').
+    RunTimes run_times;
 
     // The lock on the output directory (its file descriptor, closed with
     // the last copy), held by the first process while the run lives.
     std::shared_ptr<const int> output_directory_lock;
+
+    // Checkpoint and restart ('Output/Checkpoint interval', --resume;
+    // checkpoint.cc) of the members above and of the postprocessors.
+    Checkpoint<dim> checkpoint;
 
     // Everything that observes the run, in the order of their ranks; last,
     // so that they are destroyed first (the VTU output's thread reads the

@@ -43,10 +43,9 @@ namespace Contact
   public:
     /** The expressions are parsed here, so that a syntax error is
      *  reported before anything is computed. */
-    Loads(const Parameters                &run_parameters,
-          const ManufacturedSolution<dim> *exact,
-          const DiscreteSpace<dim>        &discrete_space,
-          TimerOutput                     &timer);
+    Loads(const Parameters         &run_parameters,
+          const DiscreteSpace<dim> &discrete_space,
+          TimerOutput              &timer);
 
     virtual ~Loads() = default;
 
@@ -68,6 +67,9 @@ namespace Contact
     /** u_0 and w_0 = u_1 of the .prm or of the manufactured solution. */
     const Function<dim> &initial_displacement() const;
     const Function<dim> &initial_velocity() const;
+
+    /** The manufactured solution, or nullptr without one. */
+    const ManufacturedSolution<dim> *exact_solution() const;
 
   private:
     using CellVisitor =
@@ -92,11 +94,13 @@ namespace Contact
                        const bool   with_body_force) const;
     void assemble_constant_body_load();
 
-    const Parameters                &parameters;
-    const ManufacturedSolution<dim> *exact_solution;
-    const DiscreteSpace<dim>        &space;
-    const ContactBoundary<dim>      *gamma3 = nullptr;
-    TimerOutput                     &computing_timer;
+    const Parameters &parameters;
+    // With 'Verification/Manufactured solution', the exact solution that
+    // replaces the load data of the .prm.
+    const std::unique_ptr<const ManufacturedSolution<dim>> exact;
+    const DiscreteSpace<dim>                              &space;
+    const ContactBoundary<dim>                            *gamma3 = nullptr;
+    TimerOutput                                           &computing_timer;
 
     std::unique_ptr<FunctionParser<dim>> body_force;
     std::unique_ptr<Function<dim>>       u0;

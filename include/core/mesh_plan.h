@@ -11,6 +11,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,23 @@ namespace Contact
      *  from, on a line it cannot read. */
     static MeshPlan from_text(const std::string &text,
                               const std::string &file_name);
+  };
+
+
+  /**
+   * The adaptation of a run's mesh: the plan of the cycles that changed
+   * the scene's mesh so far, and during the run every how many steps the
+   * mesh adapts and what flags its cells (0 and empty: the mesh stays;
+   * ContactProblem::adapt_mesh_during_run()).
+   */
+  struct MeshAdaptation
+  {
+    MeshPlan              plan;
+    unsigned int          interval = 0;
+    std::function<void()> choose_cells;
+    /** A resumed run whose checkpoint was written at the end of a run, at
+     *  a step after which the mesh adapts: the adaptation comes first. */
+    bool due = false;
   };
 } // namespace Contact
 

@@ -9,10 +9,11 @@
  * class.
  *
  * A run calls, in the order of the postprocessors' ranks:
- *   initialize()      at the end of the set-up of the space, Gamma_3 and
- *                     the loads, before the matrices are assembled and the
- *                     initial values set (a postprocessor may refuse its
- *                     entries here, before the mesh is reported),
+ *   initialize()      at the end of the set-up of the space, Gamma_3, the
+ *                     loads and the matrices M, A_h and B_h, before the
+ *                     initial values are set and K is factorised (a
+ *                     postprocessor may refuse its entries here, before
+ *                     the mesh is reported),
  *   load()            on --resume, with the checkpoint's state,
  *   start(resumed)    before the first step: files are opened (a resumed
  *                     run cuts them back to its step), a fresh run's
@@ -135,15 +136,15 @@ namespace Contact
     }
     double time_step() const
     {
-      return observed->time_step;
+      return observed->state.time_step;
     }
     unsigned int n_time_steps() const
     {
-      return observed->n_time_steps;
+      return observed->parameters.time.n_steps();
     }
     const FrictionLaw &friction_law() const
     {
-      return observed->friction_law;
+      return observed->friction_solver->law();
     }
     const FrictionSolver<dim> &friction_solver() const
     {
@@ -163,7 +164,7 @@ namespace Contact
     }
     const ManufacturedSolution<dim> *exact_solution() const
     {
-      return observed->exact_solution.get();
+      return observed->loads->exact_solution();
     }
     const ConditionalOStream &pcout() const
     {
@@ -175,7 +176,7 @@ namespace Contact
     }
     MPI_Comm mpi_communicator() const
     {
-      return observed->mpi_communicator;
+      return observed->space.mpi_communicator;
     }
     /** All postprocessors of the run, this one among them. */
     const std::vector<std::unique_ptr<Postprocessor<dim>>> &

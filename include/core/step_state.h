@@ -74,8 +74,11 @@ namespace Contact
    */
   struct StepState
   {
-    double                        time        = 0;
-    unsigned int                  step_number = 0;
+    double       time        = 0;
+    unsigned int step_number = 0;
+    /** The time step k: constant, except while a step is cut ('Solver/Step
+     *  cuts'); not saved (the .prm gives it). */
+    double                        time_step = 0;
     TrilinosWrappers::MPI::Vector displacement;
     TrilinosWrappers::MPI::Vector velocity;
     TrilinosWrappers::MPI::Vector old_displacement;

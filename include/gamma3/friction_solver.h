@@ -38,6 +38,7 @@
 #include <base/parameters.h>
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -251,20 +252,32 @@ namespace Contact
   };
 
 
+  /** What a FrictionSolver reads of the problem it serves besides the
+   *  nodes of Gamma_3: the run's parameters (the friction law among them),
+   *  the constraints and the parallel layout of V_h, and where it reports. */
+  struct FrictionSolverEnvironment
+  {
+    const Parameters                &parameters;
+    const AffineConstraints<double> &constraints;
+    const IndexSet                  &locally_owned_dofs;
+    MPI_Comm                         mpi_communicator;
+    const ConditionalOStream        &pcout;
+    TimerOutput                     &computing_timer;
+  };
+
+
   template <int dim>
   class FrictionSolver
   {
   public:
     /** Takes the nodes of Gamma_3; every node sticks (slips freely without
-     *  friction) and carries no force. */
-    FrictionSolver(const Parameters                &run_parameters,
-                   const FrictionLaw               &law,
-                   std::vector<ContactNode<dim>>    nodes,
-                   const AffineConstraints<double> &constraints,
-                   const IndexSet                  &locally_owned_dofs,
-                   MPI_Comm                         mpi_communicator,
-                   const ConditionalOStream        &console,
-                   TimerOutput                     &timer);
+     *  friction) and carries no force. The law's bound S mu(s) at node p
+     *  is applied times `bound_scale(x_p)` where one is given (a variant
+     *  of the law; a test's wrong coefficient), else as it is. */
+    FrictionSolver(
+      const FrictionSolverEnvironment                 &environment,
+      std::vector<ContactNode<dim>>                    nodes,
+      const std::function<double(const Point<dim> &)> &bound_scale = {});
 
     virtual ~FrictionSolver() = default;
 
@@ -295,9 +308,11 @@ namespace Contact
     double law_residual_allowance() const;
 
     const ContactBoundary<dim> &boundary() const;
-    const FrictionState        &state() const;
-    void                        set_state(const FrictionState &state);
-    std::string                 description() const;
+    /** The friction law of the run's parameters. */
+    const FrictionLaw   &law() const;
+    const FrictionState &state() const;
+    void                 set_state(const FrictionState &state);
+    std::string          description() const;
     /** Wall time of the last step's first solve with K (or a variant), or
      *  its substitutions. */
     double substitution_seconds() const;
@@ -315,11 +330,6 @@ namespace Contact
     make_path(const MatrixType &system_matrix,
               Factorization    &factorization,
               const bool        delassus);
-
-    /** m_p of every node: the weights with which the law is applied
-     *  (NodalLaw, the bounds of the Tresca problems); a variant of the
-     *  solver may apply the law with other weights. */
-    Vector<double> law_weights;
 
   private:
     void choose_path(const MatrixType &system_matrix,
@@ -351,10 +361,13 @@ namespace Contact
     void         add_contact_state(StepStatistics &statistics) const;
 
     const Parameters         &parameters;
-    const FrictionLaw        &friction_law;
+    const FrictionLaw         friction_law;
     const ConditionalOStream &pcout;
     TimerOutput              &computing_timer;
     ContactBoundary<dim>      gamma3;
+    // m_p times the bound's scale at every node: the weights with which
+    // the law is applied (NodalLaw, the bounds of the Tresca problems).
+    Vector<double> law_weights;
 
     std::unique_ptr<ContactPath<dim>> path;
     // c_p of the active set method for every node.

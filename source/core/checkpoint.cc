@@ -29,7 +29,7 @@
 
 #include <base/dimensions.h>
 #include <base/printed_entries.h>
-#include <core/contact_problem.h>
+#include <core/checkpoint.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
 
@@ -305,55 +305,76 @@ namespace Contact
                              "run again without --resume."));
       return bytes;
     }
+
+    // @sect4{require_checkpoint}
+
+    // Checked before anything is computed or written.
+    void require_checkpoint(const std::string &directory,
+                            const MPI_Comm     mpi_communicator)
+    {
+      const unsigned int n_processes =
+        Utilities::MPI::n_mpi_processes(mpi_communicator);
+      std::string other;
+      if (n_processes > 1 && std::filesystem::exists(directory + "/checkpoint"))
+        other = " There is one written by 1 process ('" + directory +
+                "/checkpoint'): resume it with one process.";
+      else if (n_processes == 1 &&
+               std::filesystem::exists(directory + "/checkpoint.0"))
+        other = " There is one written by several processes ('" + directory +
+                "/checkpoint.0', ...): resume it with as many processes.";
+      const std::string name = checkpoint_name(directory, mpi_communicator);
+      AssertThrow(std::filesystem::exists(name),
+                  ExcMessage("'" + Entry::resume +
+                             "' (--resume): there is no "
+                             "checkpoint '" +
+                             name + "' for a run on " +
+                             std::to_string(n_processes) + " process(es)." +
+                             other +
+                             " Checkpoints are written with "
+                             "'" +
+                             Entry::checkpoint_interval +
+                             "' or "
+                             "'" +
+                             Entry::checkpoint_minutes +
+                             "' into the output "
+                             "directory."));
+    }
   } // namespace
 
 
-  // @sect4{ContactProblem::require_checkpoint}
+  // @sect4{Checkpoint::Checkpoint}
 
-  // Checked before anything is computed or written.
   template <int dim>
-  void ContactProblem<dim>::require_checkpoint() const
-  {
-    const std::string &directory = parameters.output.directory;
-    const unsigned int n_processes =
-      Utilities::MPI::n_mpi_processes(mpi_communicator);
-    std::string other;
-    if (n_processes > 1 && std::filesystem::exists(directory + "/checkpoint"))
-      other = " There is one written by 1 process ('" + directory +
-              "/checkpoint'): resume it with one process.";
-    else if (n_processes == 1 &&
-             std::filesystem::exists(directory + "/checkpoint.0"))
-      other = " There is one written by several processes ('" + directory +
-              "/checkpoint.0', ...): resume it with as many processes.";
-    const std::string name = checkpoint_name(directory, mpi_communicator);
-    AssertThrow(std::filesystem::exists(name),
-                ExcMessage("'" + Entry::resume +
-                           "' (--resume): there is no "
-                           "checkpoint '" +
-                           name + "' for a run on " +
-                           std::to_string(n_processes) + " process(es)." +
-                           other +
-                           " Checkpoints are written with "
-                           "'" +
-                           Entry::checkpoint_interval +
-                           "' or "
-                           "'" +
-                           Entry::checkpoint_minutes +
-                           "' into the output "
-                           "directory."));
-  }
+  Checkpoint<dim>::Checkpoint(
+    const Parameters                                       &run_parameters,
+    const DiscreteSpace<dim>                               &discrete_space,
+    MeshAdaptation                                         &mesh_adaptation,
+    StepState                                              &step_state,
+    const std::unique_ptr<FrictionSolver<dim>>             &solver,
+    const std::vector<std::unique_ptr<Postprocessor<dim>>> &observers,
+    const ConditionalOStream                               &console,
+    TimerOutput                                            &timer)
+    : parameters(run_parameters)
+    , space(discrete_space)
+    , adaptation(mesh_adaptation)
+    , state(step_state)
+    , friction_solver(solver)
+    , postprocessors(observers)
+    , pcout(console)
+    , computing_timer(timer)
+    , name(checkpoint_name(parameters.output.directory, space.mpi_communicator))
+  {}
 
 
-  // @sect4{ContactProblem::read_checkpoint_mesh_plan}
+  // @sect4{Checkpoint::restore_mesh_plan}
 
   // A resumed run is built on its checkpoint's mesh: the scene's mesh
   // changed by the cycles of the plan stored with it (of pilot runs, or of
   // the adaptations during the run up to the checkpoint's step).
   template <int dim>
-  void ContactProblem<dim>::read_checkpoint_mesh_plan()
+  void Checkpoint<dim>::restore_mesh_plan()
   {
-    const std::string name =
-      checkpoint_name(parameters.output.directory, mpi_communicator);
+    require_checkpoint(parameters.output.directory, space.mpi_communicator);
     std::string plan_text;
     {
       std::istringstream payload(read_payload(name), std::ios::binary);
@@ -362,68 +383,65 @@ namespace Contact
     }
     // A set of checkpoints of different steps (a job killed while they were
     // written) may have different plans: refused here, before the processes
-    // build different meshes (load_checkpoint() compares the steps).
+    // build different meshes (load() compares the steps).
     const std::size_t plan_hash = std::hash<std::string>()(plan_text);
-    AssertThrow(Utilities::MPI::min(plan_hash, mpi_communicator) ==
-                  Utilities::MPI::max(plan_hash, mpi_communicator),
+    AssertThrow(Utilities::MPI::min(plan_hash, space.mpi_communicator) ==
+                  Utilities::MPI::max(plan_hash, space.mpi_communicator),
                 ExcMessage(mixed_checkpoints(parameters.output.directory)));
-    mesh_plan = MeshPlan::from_text(plan_text, name);
+    adaptation.plan = MeshPlan::from_text(plan_text, name);
   }
 
 
-  // @sect4{ContactProblem::checkpoint_due}
+  // @sect4{Checkpoint::due}
 
   // Every 'Checkpoint interval' steps, when 'Checkpoint minutes' have
   // passed, and at the end (so that a finished run can be extended). The
   // processes agree on the wall time criterion through a reduction.
   template <int dim>
-  bool ContactProblem<dim>::checkpoint_due() const
+  bool Checkpoint<dim>::due() const
   {
     const auto &output = parameters.output;
     if (output.checkpoint_interval == 0 && output.checkpoint_minutes == 0)
       return false;
-    const bool late =
-      output.checkpoint_minutes > 0 &&
-      checkpoint_timer.wall_time() >= 60. * output.checkpoint_minutes;
-    return state.step_number == n_time_steps ||
+    const bool late = output.checkpoint_minutes > 0 &&
+                      wall_timer.wall_time() >= 60. * output.checkpoint_minutes;
+    return state.step_number == parameters.time.n_steps() ||
            (output.checkpoint_interval > 0 &&
             state.step_number % output.checkpoint_interval == 0) ||
-           Utilities::MPI::max(late ? 1 : 0, mpi_communicator) == 1;
+           Utilities::MPI::max(late ? 1 : 0, space.mpi_communicator) == 1;
   }
 
 
-  // @sect4{ContactProblem::save_checkpoint}
+  // @sect4{Checkpoint::save}
 
   // Everything a step reads from the past: the step state, the nodal state
   // of Gamma_3, and each postprocessor's own state (its totals, the
   // records of its files, ...), in the order of their ranks.
   template <int dim>
-  void ContactProblem<dim>::save_checkpoint()
+  void Checkpoint<dim>::save()
   {
     TimerOutput::Scope t(computing_timer, "Checkpoint");
-    const std::string  name =
-      checkpoint_name(parameters.output.directory, mpi_communicator);
     std::ostringstream payload(std::ios::binary);
     {
       boost::archive::binary_oarchive archive(payload);
-      std::string                     plan_text = mesh_plan.text();
+      std::string                     plan_text = adaptation.plan.text();
       std::string                     problem_shape =
         shape(space.dof_handler,
               friction_solver->boundary().nodes.size(),
-              time_step,
-              exact_solution != nullptr,
-              mpi_communicator);
+              state.time_step,
+              parameters.verification.manufactured(),
+              space.mpi_communicator);
       std::map<std::string, std::string> entries =
         problem_entries(parameters.used_parameters);
       FrictionState friction_state = friction_solver->state();
       archive &plan_text &problem_shape &entries &state &friction_state;
       for (const auto &postprocessor : postprocessors)
         postprocessor->save(archive);
-      // The time loop adapts after every adaptation_interval-th step but
-      // the last (time_loop()).
-      bool due = adaptation_interval > 0 && state.step_number > 0 &&
-                 state.step_number % adaptation_interval == 0 &&
-                 state.step_number == n_time_steps;
+      // The time loop adapts after every interval-th step but the last
+      // (ContactProblem::time_loop()).
+      bool due = adaptation.interval > 0 && state.step_number > 0 &&
+                 state.step_number % adaptation.interval == 0 &&
+                 state.step_number == parameters.time.n_steps();
       archive &due;
     }
     const std::string bytes = payload.str();
@@ -439,42 +457,72 @@ namespace Contact
     }
     // Every process's new checkpoint is complete before any replaces its
     // old one, so a job killed in between leaves one set of checkpoints of
-    // one step (of the old or the new one per process; load_checkpoint
-    // refuses a set of different steps).
-    const int ierr = MPI_Barrier(mpi_communicator);
+    // one step (of the old or the new one per process; load() refuses a
+    // set of different steps).
+    const int ierr = MPI_Barrier(space.mpi_communicator);
     AssertThrowMPI(ierr);
     std::filesystem::rename(name + ".tmp", name);
-    checkpoint_timer.restart();
+    wall_timer.restart();
   }
 
 
-  // @sect4{ContactProblem::load_checkpoint}
+  // @sect4{Checkpoint::load}
 
   template <int dim>
-  void ContactProblem<dim>::load_checkpoint()
+  void Checkpoint<dim>::load()
   {
-    const std::string name =
-      checkpoint_name(parameters.output.directory, mpi_communicator);
     std::istringstream payload(read_payload(name), std::ios::binary);
     boost::archive::binary_iarchive    archive(payload);
     std::string                        plan_text, stored_shape;
     std::map<std::string, std::string> stored_entries;
     // (The plan was read before the mesh was built.)
-    archive &plan_text &stored_shape        &stored_entries;
+    archive &plan_text &stored_shape &stored_entries;
+    require_same_problem(stored_shape, stored_entries);
+
+    FrictionState   friction_state;
+    archive &state &friction_state;
+    friction_solver->set_state(friction_state);
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->load(archive);
+    archive           &adaptation.due;
+    const unsigned int step_number = state.step_number;
+    AssertThrow(Utilities::MPI::min(step_number, space.mpi_communicator) ==
+                  Utilities::MPI::max(step_number, space.mpi_communicator),
+                ExcMessage(mixed_checkpoints(parameters.output.directory)));
+    const unsigned int n_steps = parameters.time.n_steps();
+    AssertThrow(step_number <= n_steps,
+                ExcMessage(
+                  "The checkpoint is at step " + std::to_string(step_number) +
+                  ", beyond the end of this run (" + std::to_string(n_steps) +
+                  " steps): '" + Entry::end_time + "' is too small."));
+    pcout << "Resumed from the checkpoint at step " << step_number
+          << " (t = " << state.time << ")." << std::endl;
+    wall_timer.restart();
+  }
+
+
+  // @sect4{Checkpoint::require_same_problem}
+
+  // The checkpoint's shape and defining entries against this run's.
+  template <int dim>
+  void Checkpoint<dim>::require_same_problem(
+    const std::string                        &stored_shape,
+    const std::map<std::string, std::string> &stored_entries) const
+  {
     const std::map<std::string, std::string> entries_now =
       problem_entries(parameters.used_parameters);
     const std::string problem_shape =
       shape(space.dof_handler,
             friction_solver->boundary().nodes.size(),
-            time_step,
-            exact_solution != nullptr,
-            mpi_communicator);
+            state.time_step,
+            parameters.verification.manufactured(),
+            space.mpi_communicator);
     AssertThrow(same_problem(stored_shape, problem_shape),
                 ExcMessage(another_problem(name,
                                            stored_shape,
                                            problem_shape,
                                            parameters.time.end_time,
-                                           time_step)));
+                                           state.time_step)));
     const std::string differences =
       differing_entries(stored_entries, entries_now);
     AssertThrow(differences.empty(),
@@ -486,36 +534,10 @@ namespace Contact
                            "', 'Solver/...' and most of "
                            "'Output/...' may change on --resume:" +
                            differences));
-
-    FrictionState   friction_state;
-    archive &state &friction_state;
-    friction_solver->set_state(friction_state);
-    for (const auto &postprocessor : postprocessors)
-      postprocessor->load(archive);
-    archive           &adaptation_due;
-    const unsigned int step_number = state.step_number;
-    AssertThrow(Utilities::MPI::min(step_number, mpi_communicator) ==
-                  Utilities::MPI::max(step_number, mpi_communicator),
-                ExcMessage(mixed_checkpoints(parameters.output.directory)));
-    AssertThrow(step_number <= n_time_steps,
-                ExcMessage("The checkpoint is at step " +
-                           std::to_string(step_number) +
-                           ", beyond the end of this run (" +
-                           std::to_string(n_time_steps) + " steps): '" +
-                           Entry::end_time + "' is too small."));
-    pcout << "Resumed from the checkpoint at step " << step_number
-          << " (t = " << state.time << ")." << std::endl;
-    checkpoint_timer.restart();
   }
 
 
-#define INSTANTIATE(dim)                                          \
-  template void ContactProblem<dim>::require_checkpoint() const;  \
-  template void ContactProblem<dim>::read_checkpoint_mesh_plan(); \
-  template bool ContactProblem<dim>::checkpoint_due() const;      \
-  template void ContactProblem<dim>::save_checkpoint();           \
-  template void ContactProblem<dim>::load_checkpoint();
-
+#define INSTANTIATE(dim) template class Checkpoint<dim>;
   CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
 } // namespace Contact

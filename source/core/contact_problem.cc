@@ -9,6 +9,8 @@
 
 #include <deal.II/grid/grid_tools.h>
 
+#include <deal.II/numerics/vector_tools.h>
+
 #include <base/dimensions.h>
 #include <base/printed_entries.h>
 #include <base/version.h>
@@ -56,144 +58,187 @@ namespace Contact
             CsvFile::rows_up_to(entry.path().string(), step);
         }
     }
-  } // namespace
 
 
-  // @sect4{ContactProblem::ContactProblem}
+    // @sect4{report_mesh}
 
-  // The load data are parsed here (Loads), so that an expression with an
-  // error is refused before anything is computed or written.
-  template <int dim>
-  ContactProblem<dim>::ContactProblem(const Parameters &run_parameters)
-    : parameters(run_parameters)
-    , friction_law(parameters.friction)
-    , n_time_steps(parameters.time.n_steps())
-    , time_step(parameters.time.end_time / n_time_steps)
-    , mpi_communicator(MPI_COMM_WORLD)
-    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-    , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
-    , exact_solution(parameters.verification.manufactured() ?
-                       std::make_unique<ManufacturedSolution<dim>>(parameters) :
-                       nullptr)
-    , geometry(create_geometry<dim>(parameters, mpi_communicator))
-    , space(parameters.geometry, mpi_communicator)
-    , loads(std::make_unique<Loads<dim>>(parameters,
-                                         exact_solution.get(),
-                                         space,
-                                         computing_timer))
-  {
-    AssertThrow(parameters.dimension == dim, ExcInternalError());
-    for (const auto &[rank, create] : postprocessor_registry<dim>())
-      add_postprocessor(create());
-  }
-
-
-  // A run that ends with an error completes what output it can (the
-  // postprocessors' destructors): the members are destroyed in reverse
-  // order, the postprocessors first.
-  template <int dim>
-  ContactProblem<dim>::~ContactProblem()
-  {}
+    // The size of the problem, and a warning where the mapping costs the
+    // tractions an order.
+    template <int dim>
+    void report_mesh(const Parameters           &parameters,
+                     const Geometry<dim>        &geometry,
+                     const DiscreteSpace<dim>   &space,
+                     const ContactBoundary<dim> &gamma3,
+                     const ConditionalOStream   &pcout)
+    {
+      pcout << "Mesh: " << space.triangulation->n_global_active_cells()
+            << " cells, "
+            << (parameters.geometry.cell_shape ==
+                    GeometryParameters::CellShape::simplex ?
+                  'P' :
+                  'Q')
+            << space.fe.degree << ", " << space.dof_handler.n_dofs()
+            << " unknowns, " << gamma3.nodes.size() << " free nodes on Gamma_3"
+            << std::endl;
+      // Measured on the bushing (doc/verification.md, "A curved Gamma_3"):
+      // Q2 nodes on the chords of a circle make the slip onset converge at
+      // first order in h only, Q2 on the curved cells at second order.
+      const unsigned int mapping_degree = parameters.geometry.mapping_degree;
+      if (geometry.has_curved_boundary() && mapping_degree < space.fe.degree)
+        pcout << "Warning: '" << Entry::mapping_degree
+              << "' = " << mapping_degree << " is below '"
+              << Entry::finite_element_degree << "' = " << space.fe.degree
+              << ": the element's nodes on the circles lie on their chords, "
+                 "which costs the tractions on Gamma_3 an order of accuracy "
+                 "(doc/verification.md); set both equal."
+              << std::endl;
+    }
 
 
-  template <int dim>
-  void ContactProblem<dim>::add_postprocessor(
-    std::unique_ptr<Postprocessor<dim>> postprocessor)
-  {
-    postprocessor->observed = this;
-    postprocessors.push_back(std::move(postprocessor));
-  }
+    // @sect4{warn_of_normal_component}
+
+    // The bilateral contact holds u.n = w.n = 0 on Gamma_3, and the
+    // constraints of V_h set the normal component of the initial values
+    // there to zero; where the .prm gives one that is not, the user is told
+    // that it was removed.
+    template <int dim>
+    void warn_of_normal_component(const VectorType           &values,
+                                  const std::string          &entry,
+                                  const ContactBoundary<dim> &gamma3,
+                                  const ConditionalOStream   &pcout)
+    {
+      double normal = 0, largest = values.linfty_norm();
+      for (const ContactNode<dim> &node : gamma3.nodes)
+        if (node.locally_owned)
+          {
+            double component = 0;
+            for (unsigned int d = 0; d < dim; ++d)
+              component += node.normal[d] * values[node.dofs[d]];
+            normal = std::max(normal, std::abs(component));
+          }
+      normal = Utilities::MPI::max(normal, gamma3.mpi_communicator);
+      if (normal > 1e-12 * largest)
+        pcout << "Warning: 'Loads and initial values/" << entry
+              << "' has a normal component on Gamma_3 (up to " << normal
+              << "), which the bilateral contact (u.n = w.n = 0 there) "
+              << "does not allow; it is set to zero." << std::endl;
+    }
 
 
-  template <int dim>
-  void ContactProblem<dim>::adapt_mesh(const MeshPlan &plan)
-  {
-    mesh_plan = plan;
-  }
+    // Before anything is written: a NaN in the initial values would be
+    // blamed on step 1.
+    void require_finite(const VectorType  &values,
+                        const std::string &entry,
+                        const std::string &expression)
+    {
+      // (The maximum norm skips NaN; the sum of the entries does not.)
+      AssertThrow(std::isfinite(values.linfty_norm()) &&
+                    !std::isnan(values.l1_norm()),
+                  ExcMessage("Entry 'Loads and initial values/" + entry +
+                             "' = '" + expression +
+                             "' is not a finite number at some node of the "
+                             "mesh (a division by zero, or the root or "
+                             "logarithm of a negative number there?); "
+                             "allowed are expressions finite on the whole "
+                             "body."));
+    }
 
 
-  template <int dim>
-  void
-  ContactProblem<dim>::adapt_mesh_during_run(const unsigned int    interval,
-                                             std::function<void()> choose_cells)
-  {
-    adaptation_interval   = interval;
-    choose_cells_to_adapt = std::move(choose_cells);
-  }
+    // @sect4{set_initial_state}
+
+    // u_0 and w_0 = u_1 (of the .prm or of the manufactured solution)
+    // interpolated at the nodes, then made to satisfy the constraints of
+    // V_h (the clamp and w.n = 0 on Gamma_3); M w_0 and B u_0 and the
+    // initial energy.
+    template <int dim>
+    void set_initial_state(const Parameters           &parameters,
+                           const DiscreteSpace<dim>   &space,
+                           const Loads<dim>           &loads,
+                           const SystemMatrices<dim>  &matrices,
+                           const ContactBoundary<dim> &gamma3,
+                           const ConditionalOStream   &pcout,
+                           StepState                  &state)
+    {
+      VectorTools::interpolate(*space.mapping,
+                               space.dof_handler,
+                               loads.initial_displacement(),
+                               state.displacement);
+      VectorTools::interpolate(*space.mapping,
+                               space.dof_handler,
+                               loads.initial_velocity(),
+                               state.velocity);
+      if (!parameters.verification.manufactured())
+        {
+          warn_of_normal_component(state.displacement,
+                                   "Initial displacement",
+                                   gamma3,
+                                   pcout);
+          warn_of_normal_component(state.velocity,
+                                   "Initial velocity",
+                                   gamma3,
+                                   pcout);
+        }
+      space.constraints.distribute(state.displacement);
+      space.constraints.distribute(state.velocity);
+      require_finite(state.displacement,
+                     "Initial displacement",
+                     parameters.loads.initial_displacement);
+      require_finite(state.velocity,
+                     "Initial velocity",
+                     parameters.loads.initial_velocity);
+      state.old_displacement = state.displacement;
+      state.old_velocity     = state.velocity;
+
+      state.energy = EnergyBalance();
+      matrices.update_state_products(state, space.constraints);
+      state.energy.initial = state.energy.kinetic + state.energy.elastic;
+    }
 
 
-  template <int dim>
-  const MeshPlan &ContactProblem<dim>::get_mesh_plan() const
-  {
-    return mesh_plan;
-  }
+    // @sect4{print_timings}
 
+    // With 'Output/Print timings': where the wall time of the run went
+    // (`steps`: the steps this process's run computed).
+    template <int dim>
+    void print_timings(const unsigned int         steps,
+                       const RunTimes            &run_times,
+                       const FrictionSolver<dim> &friction_solver,
+                       const Factorization       &factorization,
+                       const TimerOutput         &computing_timer,
+                       const ConditionalOStream  &pcout)
+    {
+      const MPI_Comm communicator = friction_solver.boundary().mpi_communicator;
+      pcout << "Wall time: " << std::setprecision(4)
+            << run_times.run.wall_time() << " s" << std::endl;
+      const double step_time = computing_timer.get_summary_data(
+                                 TimerOutput::total_wall_time)["Time steps"] /
+                               std::max(steps, 1u);
+      const double substitution = run_times.substitution / std::max(steps, 1u);
+      if (!friction_solver.law().is_frictionless())
+        pcout << "Contact solver: " << friction_solver.description()
+              << std::endl;
+      if (factorization.factor_size() > 0)
+        pcout << "Factor of K: "
+              << static_cast<long long>(factorization.factor_size())
+              << " nonzeros" << std::endl;
+      if (substitution > 0)
+        pcout << "Time per step " << 1e3 * step_time
+              << " ms = " << step_time / substitution
+              << (factorization.iterations() > 0 ?
+                    " solves with K (one: " :
+                    " substitutions with the factor of K (one: ")
+              << 1e3 * substitution << " ms)" << std::endl;
+      Utilities::System::MemoryStats memory;
+      Utilities::System::get_memory_stats(memory);
+      const auto peak =
+        Utilities::MPI::min_max_avg(memory.VmHWM / 1024., communicator);
+      pcout << "Peak memory per process: " << std::setprecision(4) << peak.max
+            << " MB (smallest " << peak.min << " MB, "
+            << Utilities::MPI::n_mpi_processes(communicator) << " processes)"
+            << std::endl;
+      computing_timer.print_summary();
+    }
 
-  // @sect4{ContactProblem::run}
-
-  // Set-up, the initial state, the steps, and what the run gives back. The
-  // output directory is locked before anything else, and kept locked until
-  // the problem is destroyed: an error estimate's coarse runs still write
-  // under it.
-  template <int dim>
-  RunSummary ContactProblem<dim>::run()
-  {
-    run_timer.restart();
-    output_directory_lock =
-      lock_output_directory(parameters.output.directory, mpi_communicator);
-    const bool resumed = parameters.output.resume;
-    if (resumed)
-      {
-        require_checkpoint();
-        read_checkpoint_mesh_plan();
-      }
-    make_grid();
-    if (exact_solution)
-      geometry->check_manufactured_scene();
-    setup_system();
-    // The postprocessors' set-up may refuse an entry of theirs (a probe
-    // outside the body): before anything is reported of the mesh.
-    for (const auto &postprocessor : postprocessors)
-      postprocessor->initialize();
-    report_mesh();
-    assemble_matrices();
-    set_initial_values();
-    factorize_system_matrix();
-    friction_solver->reinit(matrices.system, *factorization);
-    friction_solver->set_initial_velocity(state.velocity);
-
-    state.step_number = 0;
-    if (resumed)
-      {
-        load_checkpoint();
-        check_step_tables(parameters.output.directory, state.step_number);
-      }
-    prepare_output_directory();
-    for (const auto &postprocessor : postprocessors)
-      postprocessor->start(resumed);
-    const unsigned int first_step = state.step_number;
-    time_loop();
-    for (const auto &postprocessor : postprocessors)
-      postprocessor->end();
-    state.step_number = n_time_steps;
-    for (const auto &postprocessor : postprocessors)
-      postprocessor->print_summary();
-    print_timings(n_time_steps - first_step);
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      {
-        // Removed only if empty: what a killed run left there stays.
-        std::error_code error;
-        std::filesystem::remove(parameters.output.directory + "/.partial",
-                                error);
-      }
-    for (const auto &postprocessor : postprocessors)
-      postprocessor->require_success();
-    return summary();
-  }
-
-
-  namespace
-  {
     // @sect4{say_what_is_replaced}
 
     // The results of an earlier run of other parameters that a fresh run
@@ -239,46 +284,202 @@ namespace Contact
       out << "." << std::endl;
     }
 
+
+    // @sect4{prepare_output_directory}
+
+    // A fresh run first removes the results an earlier run left in the
+    // directory (remove_results(): every file and run directory a part of
+    // the program registered; other files stay), so that its PVD lists only
+    // its own files and a later --resume cannot resume the earlier run. A
+    // resumed run keeps them; its postprocessors cut them back to the
+    // checkpoint's step. Then the parameters of this run are written.
+    void prepare_output_directory(const Parameters &parameters,
+                                  const MPI_Comm    mpi_communicator)
+    {
+      const std::string &directory = parameters.output.directory;
+      if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+        return;
+      if (!parameters.output.resume)
+        {
+          // Said once the earlier results are gone (a running run in a
+          // directory below may keep them).
+          std::ostringstream replaced;
+          say_what_is_replaced(parameters, replaced);
+          // The run that a target chose keeps the pilots it was chosen by.
+          remove_results(directory, parameters.keeps_pilots, mpi_communicator);
+          std::cout << replaced.str();
+        }
+      // Output that is written in pieces (VTU) is written here first and
+      // renamed into the directory when complete.
+      std::error_code error;
+      std::filesystem::create_directories(directory + "/.partial", error);
+      AssertThrow(!error,
+                  ExcMessage("Cannot create '" + directory +
+                             "/.partial': " + error.message()));
+      std::ofstream used(directory + "/parameters.prm");
+      used << parameter_file_header() << parameters.used_parameters;
+      used.flush();
+      AssertThrow(used,
+                  ExcMessage("Cannot write '" + directory +
+                             "/parameters.prm': " + std::strerror(errno) +
+                             "."));
+    }
   } // namespace
 
 
-  // @sect4{ContactProblem::prepare_output_directory}
+  // @sect4{ContactProblem::ContactProblem}
 
-  // A fresh run first removes the results an earlier run left in the
-  // directory (remove_results(): every file and run directory a part of
-  // the program registered; other files stay), so that its PVD lists only
-  // its own files and a later --resume cannot resume the earlier run. A
-  // resumed run keeps them; its postprocessors cut them back to the
-  // checkpoint's step. Then the parameters of this run are written.
   template <int dim>
-  void ContactProblem<dim>::prepare_output_directory()
+  ContactProblem<dim>::ContactProblem(const Parameters &run_parameters)
+    : parameters(run_parameters)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+    , geometry(create_geometry<dim>(parameters, MPI_COMM_WORLD))
+    , space(parameters.geometry, MPI_COMM_WORLD)
+    , checkpoint(parameters,
+                 space,
+                 adaptation,
+                 state,
+                 friction_solver,
+                 postprocessors,
+                 pcout,
+                 computing_timer)
   {
-    const std::string &directory = parameters.output.directory;
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
-      return;
-    if (!parameters.output.resume)
+    AssertThrow(parameters.dimension == dim, ExcInternalError());
+    state.time_step = parameters.time.end_time / parameters.time.n_steps();
+    for (const auto &[rank, create] : postprocessor_registry<dim>())
+      add_postprocessor(create());
+  }
+
+
+  // A run that ends with an error completes what output it can (the
+  // postprocessors' destructors): the members are destroyed in reverse
+  // order, the postprocessors first.
+  template <int dim>
+  ContactProblem<dim>::~ContactProblem()
+  {}
+
+
+  template <int dim>
+  void ContactProblem<dim>::add_postprocessor(
+    std::unique_ptr<Postprocessor<dim>> postprocessor)
+  {
+    postprocessor->observed = this;
+    postprocessors.push_back(std::move(postprocessor));
+  }
+
+
+  template <int dim>
+  void ContactProblem<dim>::adapt_mesh(const MeshPlan &plan)
+  {
+    adaptation.plan = plan;
+  }
+
+
+  template <int dim>
+  void
+  ContactProblem<dim>::adapt_mesh_during_run(const unsigned int    interval,
+                                             std::function<void()> choose_cells)
+  {
+    adaptation.interval     = interval;
+    adaptation.choose_cells = std::move(choose_cells);
+  }
+
+
+  template <int dim>
+  const MeshPlan &ContactProblem<dim>::get_mesh_plan() const
+  {
+    return adaptation.plan;
+  }
+
+
+  // @sect4{ContactProblem::run}
+
+  // Set-up, the initial state, the steps, and what the run gives back. The
+  // load data are parsed first, so that an expression with an error is
+  // refused before anything is computed or written. The output directory
+  // is locked before anything else, and kept locked until the problem is
+  // destroyed: an error estimate's coarse runs still write under it.
+  template <int dim>
+  RunSummary ContactProblem<dim>::run()
+  {
+    run_times.run.restart();
+    loads                 = create_loads(parameters, space, computing_timer);
+    output_directory_lock = lock_output_directory(parameters.output.directory,
+                                                  space.mpi_communicator);
+    const bool resumed    = parameters.output.resume;
+    if (resumed)
+      checkpoint.restore_mesh_plan();
+    make_grid();
+    if (parameters.verification.manufactured())
+      geometry->check_manufactured_scene();
+    setup_system();
+    // The postprocessors' set-up may refuse an entry of theirs (a probe
+    // outside the body): before anything is reported of the mesh.
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->initialize();
+    report_mesh(
+      parameters, *geometry, space, friction_solver->boundary(), pcout);
+    set_initial_state(parameters,
+                      space,
+                      *loads,
+                      matrices,
+                      friction_solver->boundary(),
+                      pcout,
+                      state);
+    matrices.factorize(state.time_step,
+                       parameters.solver,
+                       space,
+                       computing_timer);
+    friction_solver->reinit(matrices.system, *matrices.factorization);
+    friction_solver->set_initial_velocity(state.velocity);
+
+    state.step_number = 0;
+    if (resumed)
       {
-        // Said once the earlier results are gone (a running run in a
-        // directory below may keep them).
-        std::ostringstream replaced;
-        say_what_is_replaced(parameters, replaced);
-        // The run that a target chose keeps the pilots it was chosen by.
-        remove_results(directory, parameters.keeps_pilots, mpi_communicator);
-        std::cout << replaced.str();
+        checkpoint.load();
+        check_step_tables(parameters.output.directory, state.step_number);
       }
-    // Output that is written in pieces (VTU) is written here first and
-    // renamed into the directory when complete.
-    std::error_code error;
-    std::filesystem::create_directories(directory + "/.partial", error);
-    AssertThrow(!error,
-                ExcMessage("Cannot create '" + directory +
-                           "/.partial': " + error.message()));
-    std::ofstream used(directory + "/parameters.prm");
-    used << parameter_file_header() << parameters.used_parameters;
-    used.flush();
-    AssertThrow(used,
-                ExcMessage("Cannot write '" + directory +
-                           "/parameters.prm': " + std::strerror(errno) + "."));
+    prepare_output_directory(parameters, space.mpi_communicator);
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->start(resumed);
+    const unsigned int first_step = state.step_number;
+    time_loop();
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->end();
+    state.step_number = parameters.time.n_steps();
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->print_summary();
+    if (parameters.output.print_timings)
+      print_timings(state.step_number - first_step,
+                    run_times,
+                    *friction_solver,
+                    *matrices.factorization,
+                    computing_timer,
+                    pcout);
+    if (Utilities::MPI::this_mpi_process(space.mpi_communicator) == 0)
+      {
+        // Removed only if empty: what a killed run left there stays.
+        std::error_code error;
+        std::filesystem::remove(parameters.output.directory + "/.partial",
+                                error);
+      }
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->require_success();
+
+    // What a driver gets of the run (collective); its h is the geometry's
+    // (Geometry::cell_size()).
+    RunSummary summary;
+    summary.cell_size =
+      geometry->cell_size(*space.triangulation, *space.mapping);
+    summary.time_step           = state.time_step;
+    summary.n_steps             = parameters.time.n_steps();
+    summary.n_dofs              = space.dof_handler.n_dofs();
+    summary.wall_time           = run_times.run.wall_time();
+    summary.displacement_V_norm = strain_norm(state.displacement);
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->add_to_summary(summary);
+    return summary;
   }
 
 
@@ -291,12 +492,12 @@ namespace Contact
   template <int dim>
   void ContactProblem<dim>::time_loop()
   {
-    if (adaptation_due && state.step_number < n_time_steps)
+    const unsigned int n_steps = parameters.time.n_steps();
+    if (adaptation.due && state.step_number < n_steps)
       transfer_to_adapted_mesh();
-    for (++state.step_number; state.step_number <= n_time_steps;
-         ++state.step_number)
+    for (++state.step_number; state.step_number <= n_steps; ++state.step_number)
       {
-        state.time                      = state.step_number * time_step;
+        state.time                      = state.step_number * state.time_step;
         const StepStatistics statistics = advance(parameters.solver.step_cuts);
         AssertThrow(std::isfinite(state.velocity.linfty_norm()) &&
                       std::isfinite(state.energy.residual()),
@@ -309,75 +510,13 @@ namespace Contact
                                "data for values that overflow."));
         for (const auto &postprocessor : postprocessors)
           postprocessor->after_step(statistics);
-        if (adaptation_interval > 0 &&
-            state.step_number % adaptation_interval == 0 &&
-            state.step_number < n_time_steps)
+        if (adaptation.interval > 0 &&
+            state.step_number % adaptation.interval == 0 &&
+            state.step_number < n_steps)
           transfer_to_adapted_mesh();
-        if (checkpoint_due())
-          save_checkpoint();
+        if (checkpoint.due())
+          checkpoint.save();
       }
-  }
-
-
-  // @sect4{ContactProblem::print_timings}
-
-  // With 'Output/Print timings': where the wall time of the run went
-  // (`steps`: the steps this process's run computed).
-  template <int dim>
-  void ContactProblem<dim>::print_timings(const unsigned int steps) const
-  {
-    if (!parameters.output.print_timings)
-      return;
-    pcout << "Wall time: " << std::setprecision(4) << run_timer.wall_time()
-          << " s" << std::endl;
-    const double step_time = computing_timer.get_summary_data(
-                               TimerOutput::total_wall_time)["Time steps"] /
-                             std::max(steps, 1u);
-    const double substitution = substitution_time / std::max(steps, 1u);
-    if (!friction_law.is_frictionless())
-      pcout << "Contact solver: " << friction_solver->description()
-            << std::endl;
-    if (factorization && factorization->factor_size() > 0)
-      pcout << "Factor of K: "
-            << static_cast<long long>(factorization->factor_size())
-            << " nonzeros" << std::endl;
-    if (substitution > 0)
-      pcout << "Time per step " << 1e3 * step_time
-            << " ms = " << step_time / substitution
-            << (factorization->iterations() > 0 ?
-                  " solves with K (one: " :
-                  " substitutions with the factor of K (one: ")
-            << 1e3 * substitution << " ms)" << std::endl;
-    Utilities::System::MemoryStats memory;
-    Utilities::System::get_memory_stats(memory);
-    const auto peak =
-      Utilities::MPI::min_max_avg(memory.VmHWM / 1024., mpi_communicator);
-    pcout << "Peak memory per process: " << std::setprecision(4) << peak.max
-          << " MB (smallest " << peak.min << " MB, "
-          << Utilities::MPI::n_mpi_processes(mpi_communicator) << " processes)"
-          << std::endl;
-    computing_timer.print_summary();
-  }
-
-
-  // @sect4{ContactProblem::summary}
-
-  // What a driver gets of the run (collective); its h is the geometry's
-  // (Geometry::cell_size()).
-  template <int dim>
-  RunSummary ContactProblem<dim>::summary() const
-  {
-    RunSummary summary;
-    summary.cell_size =
-      geometry->cell_size(*space.triangulation, *space.mapping);
-    summary.time_step           = time_step;
-    summary.n_steps             = n_time_steps;
-    summary.n_dofs              = space.dof_handler.n_dofs();
-    summary.wall_time           = run_timer.wall_time();
-    summary.displacement_V_norm = strain_norm(state.displacement);
-    for (const auto &postprocessor : postprocessors)
-      postprocessor->add_to_summary(summary);
-    return summary;
   }
 
 
@@ -406,7 +545,7 @@ namespace Contact
           for (const unsigned int q : fe_values.quadrature_point_indices())
             sum += eps[q] * eps[q] * fe_values.JxW(q);
         }
-    return std::sqrt(Utilities::MPI::sum(sum, mpi_communicator));
+    return std::sqrt(Utilities::MPI::sum(sum, space.mpi_communicator));
   }
 
 
@@ -463,10 +602,7 @@ namespace Contact
   template void       ContactProblem<dim>::adapt_mesh_during_run(               \
     const unsigned int, std::function<void()>);                           \
   template const MeshPlan &ContactProblem<dim>::get_mesh_plan() const;          \
-  template void            ContactProblem<dim>::prepare_output_directory();     \
   template void            ContactProblem<dim>::time_loop();                    \
-  template void ContactProblem<dim>::print_timings(const unsigned int) const;   \
-  template RunSummary ContactProblem<dim>::summary() const;                     \
   template double ContactProblem<dim>::strain_norm(const VectorType &) const;   \
   template unsigned int           ContactProblem<dim>::get_step_number() const; \
   template const DoFHandler<dim> &ContactProblem<dim>::get_dof_handler()        \

@@ -17,17 +17,17 @@ namespace Contact
   // @sect4{Loads::Loads}
 
   template <int dim>
-  Loads<dim>::Loads(const Parameters                &run_parameters,
-                    const ManufacturedSolution<dim> *exact,
-                    const DiscreteSpace<dim>        &discrete_space,
-                    TimerOutput                     &timer)
+  Loads<dim>::Loads(const Parameters         &run_parameters,
+                    const DiscreteSpace<dim> &discrete_space,
+                    TimerOutput              &timer)
     : parameters(run_parameters)
-    , exact_solution(exact)
+    , exact(parameters.verification.manufactured() ?
+              std::make_unique<ManufacturedSolution<dim>>(parameters) :
+              nullptr)
     , space(discrete_space)
     , computing_timer(timer)
     , body_force_is_constant(
-        !exact_solution &&
-        !expression_uses_variable(parameters.loads.body_force, "t"))
+        !exact && !expression_uses_variable(parameters.loads.body_force, "t"))
   {
     body_force = parse_vector_function<dim>(Entry::body_force,
                                             parameters.loads.body_force,
@@ -44,12 +44,12 @@ namespace Contact
                                      std::to_string(id) + ")",
                                    expression,
                                    true);
-    if (exact_solution)
+    if (exact)
       {
-        u0 = std::make_unique<typename ManufacturedSolution<dim>::Field>(
-          *exact_solution, false);
-        u1 = std::make_unique<typename ManufacturedSolution<dim>::Field>(
-          *exact_solution, true);
+        u0 = std::make_unique<typename ManufacturedSolution<dim>::Field>(*exact,
+                                                                         false);
+        u1 = std::make_unique<typename ManufacturedSolution<dim>::Field>(*exact,
+                                                                         true);
       }
   }
 
@@ -85,6 +85,13 @@ namespace Contact
   const Function<dim> &Loads<dim>::initial_velocity() const
   {
     return *u1;
+  }
+
+
+  template <int dim>
+  const ManufacturedSolution<dim> *Loads<dim>::exact_solution() const
+  {
+    return exact.get();
   }
 
 
@@ -141,12 +148,12 @@ namespace Contact
           visit_cell(cell, cell_rhs);
       }
 
-    if (exact_solution && with_surface_loads)
+    if (exact && with_surface_loads)
       for (const ContactNode<dim> &node : gamma3->nodes)
         visit_node(node,
-                   node.weight * exact_solution->contact_load(node.location,
-                                                              node.normal,
-                                                              load_time));
+                   node.weight * exact->contact_load(node.location,
+                                                     node.normal,
+                                                     load_time));
   }
 
 
@@ -193,10 +200,9 @@ namespace Contact
     if (with_body_force)
       {
         fe_values.reinit(cell);
-        if (exact_solution)
+        if (exact)
           add_force(fe_values, [&](const unsigned int q) {
-            return exact_solution->body_force(fe_values.quadrature_point(q),
-                                              load_time);
+            return exact->body_force(fe_values.quadrature_point(q), load_time);
           });
         else
           add_force(fe_values, parsed(fe_values, *body_force));
@@ -205,17 +211,17 @@ namespace Contact
       if (with_surface_loads && cell->face(f)->at_boundary())
         {
           const types::boundary_id id = cell->face(f)->boundary_id();
-          if (exact_solution && is_free_side(id))
+          if (exact && is_free_side(id))
             {
               fe_face_values.reinit(cell, f);
               add_force(fe_face_values, [&](const unsigned int q) {
-                return exact_solution->stress(
-                         fe_face_values.quadrature_point(q), load_time) *
+                return exact->stress(fe_face_values.quadrature_point(q),
+                                     load_time) *
                        fe_face_values.normal_vector(q);
               });
               loaded = true;
             }
-          else if (!exact_solution && tractions.count(id) != 0)
+          else if (!exact && tractions.count(id) != 0)
             {
               fe_face_values.reinit(cell, f);
               add_force(fe_face_values,

@@ -23,7 +23,8 @@ namespace Contact
   // parent takes its children's values at its nodes) and made to satisfy
   // the constraints of the new V_h: its hanging nodes, and where Gamma_3 is
   // curved the normal component of the new nodes there. Everything else is
-  // built again from them, as at the start of a run: the matrices, K and
+  // built again from them, as at the start of a run: the matrices (assembled
+  // before the transfer's interpolation, which they do not read), K and
   // its factor (one factorisation per mesh), Gamma_3's nodes and the
   // friction solver, whose slip velocities are those of the transferred
   // w_n (its friction forces, only the first guess of the next step's
@@ -41,8 +42,8 @@ namespace Contact
     TimerOutput::Scope t(computing_timer, "Mesh adaptation");
     for (const auto &postprocessor : postprocessors)
       postprocessor->before_mesh_change();
-    choose_cells_to_adapt();
-    mesh_plan.add_cycle_from_flags(*space.triangulation);
+    adaptation.choose_cells();
+    adaptation.plan.add_cycle_from_flags(*space.triangulation);
     // Coarsening flags that p4est drops (not every child of a cell
     // flagged) may leave nothing to change: then the mesh stays.
     space.triangulation->prepare_coarsening_and_refinement();
@@ -51,18 +52,19 @@ namespace Contact
       if (cell->is_locally_owned() &&
           (cell->refine_flag_set() || cell->coarsen_flag_set()))
         changes = true;
-    if (Utilities::MPI::max(changes ? 1 : 0, mpi_communicator) == 0)
+    if (Utilities::MPI::max(changes ? 1 : 0, space.mpi_communicator) == 0)
       {
-        mesh_plan.refined.pop_back();
-        mesh_plan.coarsened.pop_back();
+        adaptation.plan.refined.pop_back();
+        adaptation.plan.coarsened.pop_back();
         return;
       }
     // The factor of K refers to K, which the new mesh's set-up
     // reinitialises (MUMPS frees its factor through the matrix's map), and
     // the friction solver to the factor: both go first.
     friction_solver.reset();
-    factorization.reset();
-    const double energy_before = state.energy.kinetic + state.energy.elastic;
+    matrices.factorization.reset();
+    const EnergyBalance before        = state.energy;
+    const double        energy_before = before.kinetic + before.elastic;
     const types::global_dof_index unknowns_before = space.dof_handler.n_dofs();
     {
       const VectorType old_displacement = space.ghosted(state.displacement);
@@ -81,8 +83,8 @@ namespace Contact
     space.constraints.distribute(state.displacement);
     space.constraints.distribute(state.velocity);
 
-    assemble_matrices();
-    update_state_products();
+    matrices.update_state_products(state, space.constraints);
+    after_mesh_transfer(state.energy, before);
     const double energy_after = state.energy.kinetic + state.energy.elastic;
     state.energy.mesh_transfer += energy_after - energy_before;
 
@@ -96,8 +98,11 @@ namespace Contact
           << std::setprecision(6) << energy_before << " before the transfer, "
           << energy_after << " after" << std::endl;
 
-    factorize_system_matrix();
-    friction_solver->reinit(matrices.system, *factorization);
+    matrices.factorize(state.time_step,
+                       parameters.solver,
+                       space,
+                       computing_timer);
+    friction_solver->reinit(matrices.system, *matrices.factorization);
     friction_solver->set_initial_velocity(state.velocity);
     for (const auto &postprocessor : postprocessors)
       postprocessor->mesh_changed();

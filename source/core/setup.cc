@@ -50,62 +50,73 @@ namespace Contact
     if (fully_distributed == nullptr)
       {
         geometry->create_mesh(*space.triangulation);
-        mesh_plan.replay(*space.triangulation);
+        adaptation.plan.replay(*space.triangulation);
         return;
       }
-    AssertThrow(mesh_plan.n_cycles() == 0,
+    AssertThrow(adaptation.plan.n_cycles() == 0,
                 ExcInternalError("A mesh adaptation on simplices."));
     Triangulation<dim> whole;
     geometry->create_mesh(whole);
     GridTools::partition_triangulation(
-      Utilities::MPI::n_mpi_processes(mpi_communicator), whole);
+      Utilities::MPI::n_mpi_processes(space.mpi_communicator), whole);
     fully_distributed->create_triangulation(
       TriangulationDescription::Utilities::
-        create_description_from_triangulation(whole, mpi_communicator));
+        create_description_from_triangulation(whole, space.mpi_communicator));
   }
 
 
   // @sect4{ContactProblem::setup_system}
 
-  // V_h with its constraints, the sparsity of the matrices, the vectors of
-  // the state, the nodes of Gamma_3 and the friction solver on them: on the
-  // Geometry's mesh, and again on each mesh adapted during the run.
+  // V_h with its constraints, the matrices and the vectors of the state,
+  // the nodes of Gamma_3 and the friction solver on them, and M, A_h and
+  // B_h: on the Geometry's mesh, and again on each mesh adapted during the
+  // run.
   template <int dim>
   void ContactProblem<dim>::setup_system()
   {
-    TimerOutput::Scope t(computing_timer, "Setup");
-    space.setup(parameters.boundary);
-    const IndexSet &owned    = space.locally_owned_dofs;
-    const IndexSet &relevant = space.locally_relevant_dofs;
+    {
+      TimerOutput::Scope t(computing_timer, "Setup");
+      space.setup(parameters.boundary);
+      matrices.reinit(space);
+      for (VectorType *vector : {&state.displacement,
+                                 &state.velocity,
+                                 &state.old_displacement,
+                                 &state.old_velocity,
+                                 &state.load,
+                                 &state.step_rhs,
+                                 &state.system_times_velocity})
+        vector->reinit(space.locally_owned_dofs, space.mpi_communicator);
 
-    DynamicSparsityPattern dsp(relevant);
-    DoFTools::make_sparsity_pattern(space.dof_handler,
-                                    dsp,
-                                    space.constraints,
-                                    false);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               owned,
-                                               mpi_communicator,
-                                               relevant);
-    for (MatrixType *matrix : {&matrices.mass,
-                               &matrices.viscosity,
-                               &matrices.elasticity,
-                               &matrices.system})
-      matrix->reinit(owned, owned, dsp, mpi_communicator);
-    for (VectorType &vector : matrices.momentum_density)
-      vector.reinit(owned, mpi_communicator);
-    matrices.angular_momentum_density.reinit(owned, mpi_communicator);
-    for (VectorType *vector : {&state.displacement,
-                               &state.velocity,
-                               &state.old_displacement,
-                               &state.old_velocity,
-                               &state.load,
-                               &state.step_rhs,
-                               &state.system_times_velocity})
-      vector->reinit(owned, mpi_communicator);
+      friction_solver = create_friction_solver(
+        make_contact_nodes(space, parameters.boundary.contact_ids),
+        {parameters,
+         space.constraints,
+         space.locally_owned_dofs,
+         space.mpi_communicator,
+         pcout,
+         computing_timer});
+      loads->setup(friction_solver->boundary());
+    }
+    {
+      TimerOutput::Scope t(computing_timer, "Assembly");
+      matrices.assemble(space, parameters.material);
+    }
+    after_assembly(matrices);
+  }
 
-    friction_solver = create_friction_solver();
-    loads->setup(friction_solver->boundary());
+
+  // @sect4{ContactProblem::create_loads}
+
+  // The loads of the .prm, or of the manufactured solution (a virtual
+  // function: a problem derived from this one may make loads derived from
+  // Loads).
+  template <int dim>
+  std::unique_ptr<Loads<dim>>
+  ContactProblem<dim>::create_loads(const Parameters         &run_parameters,
+                                    const DiscreteSpace<dim> &discrete_space,
+                                    TimerOutput              &timer) const
+  {
+    return std::make_unique<Loads<dim>>(run_parameters, discrete_space, timer);
   }
 
 
@@ -113,60 +124,26 @@ namespace Contact
 
   // The friction solver on the nodes of Gamma_3 of the current mesh, every
   // node sticking and without force (a virtual function: a problem derived
-  // from this one may make a solver derived from FrictionSolver).
+  // from this one may change the nodes or make a solver derived from
+  // FrictionSolver).
   template <int dim>
   std::unique_ptr<FrictionSolver<dim>>
-  ContactProblem<dim>::create_friction_solver()
+  ContactProblem<dim>::create_friction_solver(
+    std::vector<ContactNode<dim>>    nodes,
+    const FrictionSolverEnvironment &environment) const
   {
-    return std::make_unique<FrictionSolver<dim>>(
-      parameters,
-      friction_law,
-      make_contact_nodes(space, parameters.boundary.contact_ids),
-      space.constraints,
-      space.locally_owned_dofs,
-      mpi_communicator,
-      pcout,
-      computing_timer);
+    return std::make_unique<FrictionSolver<dim>>(environment, std::move(nodes));
   }
 
 
-  // @sect4{ContactProblem::report_mesh}
-
-  // The size of the problem, and a warning where the mapping costs the
-  // tractions an order.
-  template <int dim>
-  void ContactProblem<dim>::report_mesh() const
-  {
-    pcout << "Mesh: " << space.triangulation->n_global_active_cells()
-          << " cells, "
-          << (parameters.geometry.cell_shape ==
-                  GeometryParameters::CellShape::simplex ?
-                'P' :
-                'Q')
-          << space.fe.degree << ", " << space.dof_handler.n_dofs()
-          << " unknowns, " << friction_solver->boundary().nodes.size()
-          << " free nodes on Gamma_3" << std::endl;
-    // Measured on the bushing (doc/verification.md, "A curved Gamma_3"):
-    // Q2 nodes on the chords of a circle make the slip onset converge at
-    // first order in h only, Q2 on the curved cells at second order.
-    const unsigned int mapping_degree = parameters.geometry.mapping_degree;
-    if (geometry->has_curved_boundary() && mapping_degree < space.fe.degree)
-      pcout << "Warning: '" << Entry::mapping_degree << "' = " << mapping_degree
-            << " is below '" << Entry::finite_element_degree
-            << "' = " << space.fe.degree
-            << ": the element's nodes on the circles lie on their chords, "
-               "which costs the tractions on Gamma_3 an order of accuracy "
-               "(doc/verification.md); set both equal."
-            << std::endl;
-  }
-
-
-#define INSTANTIATE(dim)                                       \
-  template void ContactProblem<dim>::make_grid();              \
-  template void ContactProblem<dim>::setup_system();           \
-  template std::unique_ptr<FrictionSolver<dim>>                \
-                ContactProblem<dim>::create_friction_solver(); \
-  template void ContactProblem<dim>::report_mesh() const;
+#define INSTANTIATE(dim)                                                    \
+  template void                        ContactProblem<dim>::make_grid();    \
+  template void                        ContactProblem<dim>::setup_system(); \
+  template std::unique_ptr<Loads<dim>> ContactProblem<dim>::create_loads(   \
+    const Parameters &, const DiscreteSpace<dim> &, TimerOutput &) const;   \
+  template std::unique_ptr<FrictionSolver<dim>>                             \
+  ContactProblem<dim>::create_friction_solver(                              \
+    std::vector<ContactNode<dim>>, const FrictionSolverEnvironment &) const;
 
   CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE

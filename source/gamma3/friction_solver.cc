@@ -26,22 +26,17 @@ namespace Contact
   // Gamma_3 only carries the normal constraint: every node slips freely).
   template <int dim>
   FrictionSolver<dim>::FrictionSolver(
-    const Parameters                &run_parameters,
-    const FrictionLaw               &law,
-    std::vector<ContactNode<dim>>    nodes,
-    const AffineConstraints<double> &constraints,
-    const IndexSet                  &locally_owned_dofs,
-    MPI_Comm                         mpi_communicator,
-    const ConditionalOStream        &console,
-    TimerOutput                     &timer)
-    : parameters(run_parameters)
-    , friction_law(law)
-    , pcout(console)
-    , computing_timer(timer)
+    const FrictionSolverEnvironment                 &environment,
+    std::vector<ContactNode<dim>>                    nodes,
+    const std::function<double(const Point<dim> &)> &bound_scale)
+    : parameters(environment.parameters)
+    , friction_law(parameters.friction)
+    , pcout(environment.pcout)
+    , computing_timer(environment.computing_timer)
     , gamma3{std::move(nodes),
-             constraints,
-             locally_owned_dofs,
-             mpi_communicator}
+             environment.constraints,
+             environment.locally_owned_dofs,
+             environment.mpi_communicator}
   {
     current.friction_force.reinit(gamma3.n_unknowns());
     current.slip_velocity.reinit(gamma3.n_unknowns());
@@ -51,7 +46,9 @@ namespace Contact
                                 NodeState::stick);
     law_weights.reinit(gamma3.nodes.size());
     for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
-      law_weights[p] = gamma3.nodes[p].weight;
+      law_weights[p] =
+        gamma3.nodes[p].weight *
+        (bound_scale ? bound_scale(gamma3.nodes[p].location) : 1.);
   }
 
 
@@ -713,6 +710,12 @@ namespace Contact
   const ContactBoundary<dim> &FrictionSolver<dim>::boundary() const
   {
     return gamma3;
+  }
+
+  template <int dim>
+  const FrictionLaw &FrictionSolver<dim>::law() const
+  {
+    return friction_law;
   }
 
   template <int dim>

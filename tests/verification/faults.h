@@ -1,13 +1,17 @@
 /* Faults made on purpose, so that a test sees the self-checks of a run
    (self_checks.cc) catch them. The faults live here, not in the program:
-   FaultyProblem derives from ContactProblem and FaultySolver from
-   FrictionSolver, and each overrides one of their phases or wraps the
-   solver's path, breaking one thing that the checks verify on their own. */
+   FaultyProblem derives from ContactProblem and overrides its private
+   seams (the loads, the nodes of Gamma_3 and the friction solver made on
+   them, the matrices after their assembly, the energies after a mesh
+   transfer); FaultySolver derives from FrictionSolver, with a scale of
+   the law's bound and wrappers of its path. Each fault breaks one thing
+   that the checks verify on their own. */
 #ifndef contact_tests_faults_h
 #define contact_tests_faults_h
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/fe/fe_values.h>
 
@@ -45,7 +49,8 @@ namespace Contact
    * along its normal by `normal_velocity` times max |w_n|, the constraints
    * not applied. The assembly multiplies B by `stiffness_factor`. With
    * `unshared_hanging_weights` the hanging nodes of Gamma_3 keep their
-   * weights (lost with them) instead of sharing them. With
+   * weights and their parts of the normals (lost with them) instead of
+   * sharing them. With
    * `stale_energies_after_mesh_change` a transfer to an adapted mesh keeps
    * the kinetic and elastic energy of the old mesh.
    */
@@ -299,16 +304,14 @@ namespace Contact
   class FaultySolver : public FrictionSolver<dim>
   {
   public:
-    template <typename... Arguments>
-    FaultySolver(const Faults<dim> &faults_to_make, Arguments &&...arguments)
-      : FrictionSolver<dim>(std::forward<Arguments>(arguments)...)
+    FaultySolver(const Faults<dim>               &faults_to_make,
+                 const FrictionSolverEnvironment &environment,
+                 std::vector<ContactNode<dim>>    nodes)
+      : FrictionSolver<dim>(environment,
+                            std::move(nodes),
+                            faults_to_make.bound_factor)
       , faults(faults_to_make)
-    {
-      if (faults.bound_factor)
-        for (unsigned int p = 0; p < this->law_weights.size(); ++p)
-          this->law_weights[p] *=
-            faults.bound_factor(this->boundary().nodes[p].location);
-    }
+    {}
 
     StepStatistics solve_step(const VectorType &step_rhs,
                               VectorType       &velocity,
@@ -403,24 +406,30 @@ namespace Contact
   };
 
 
-  // m_p = int_Gamma3 phi_p ds, without the shares of the hanging nodes
-  // that follow node p (which are lost with them).
+  // The weight m_p = int_Gamma3 phi_p ds and the normal of node p
+  // integrated like the nodes' (the outward normal weighted with
+  // |phi_p|), but without the shares of the hanging nodes that follow
+  // node p: both are lost with the hanging nodes. (The integration is the
+  // test's own, on the faces of hypercubes.)
   template <int dim>
-  void drop_hanging_shares(const DiscreteSpace<dim>              &space,
+  void drop_hanging_shares(const DoFHandler<dim>                 &dof_handler,
+                           const Mapping<dim>                    &mapping,
                            const std::vector<types::boundary_id> &contact_ids,
                            std::vector<ContactNode<dim>>         &nodes)
   {
     std::map<types::global_dof_index, unsigned int> node_of_dof;
     for (unsigned int p = 0; p < nodes.size(); ++p)
       node_of_dof[nodes[p].dofs[0]] = p;
-    const FiniteElement<dim>            &fe = space.fe;
-    FEFaceValues<dim>                    face_values(*space.mapping,
+    const FiniteElement<dim>            &fe = dof_handler.get_fe();
+    FEFaceValues<dim>                    face_values(mapping,
                                   fe,
-                                  space.face_quadrature,
-                                  update_values | update_JxW_values);
+                                  QGauss<dim - 1>(fe.degree + 1),
+                                  update_values | update_normal_vectors |
+                                    update_JxW_values);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::vector<double>                  weights(nodes.size());
-    for (const auto &cell : space.dof_handler.active_cell_iterators())
+    // Per node its weight, then its normal.
+    std::vector<double> integrals(nodes.size() * (dim + 1));
+    for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
@@ -437,21 +446,34 @@ namespace Contact
                   if (fe.system_to_component_index(i).first != 0 ||
                       node == node_of_dof.end())
                     continue;
+                  double *const node_integrals =
+                    &integrals[node->second * (dim + 1)];
                   for (const unsigned int q :
                        face_values.quadrature_point_indices())
-                    weights[node->second] +=
-                      face_values.shape_value_component(i, q, 0) *
-                      face_values.JxW(q);
+                    {
+                      const double phi_JxW =
+                        face_values.shape_value_component(i, q, 0) *
+                        face_values.JxW(q);
+                      node_integrals[0] += phi_JxW;
+                      for (unsigned int d = 0; d < dim; ++d)
+                        node_integrals[1 + d] +=
+                          face_values.normal_vector(q)[d] * std::abs(phi_JxW);
+                    }
                 }
             }
     MPI_Allreduce(MPI_IN_PLACE,
-                  weights.data(),
-                  weights.size(),
+                  integrals.data(),
+                  integrals.size(),
                   MPI_DOUBLE,
                   MPI_SUM,
-                  space.mpi_communicator);
+                  dof_handler.get_communicator());
     for (unsigned int p = 0; p < nodes.size(); ++p)
-      nodes[p].weight = weights[p];
+      {
+        nodes[p].weight = integrals[p * (dim + 1)];
+        for (unsigned int d = 0; d < dim; ++d)
+          nodes[p].normal[d] = integrals[p * (dim + 1) + 1 + d];
+        nodes[p].normal /= nodes[p].normal.norm();
+      }
   }
 
 
@@ -465,24 +487,29 @@ namespace Contact
                   const Faults<dim> &faults_to_make)
       : ContactProblem<dim>(run_parameters)
       , faults(faults_to_make)
+    {}
+
+  private:
+    std::unique_ptr<Loads<dim>>
+    create_loads(const Parameters         &run_parameters,
+                 const DiscreteSpace<dim> &discrete_space,
+                 TimerOutput              &timer) const override
     {
-      if (faults.load_factor != 1.)
-        this->loads =
-          std::make_unique<ScaledLoads<dim>>(faults.load_factor,
-                                             this->parameters,
-                                             this->exact_solution.get(),
-                                             this->space,
-                                             this->computing_timer);
+      return std::make_unique<ScaledLoads<dim>>(faults.load_factor,
+                                                run_parameters,
+                                                discrete_space,
+                                                timer);
     }
 
-  protected:
-    std::unique_ptr<FrictionSolver<dim>> create_friction_solver() override
+    std::unique_ptr<FrictionSolver<dim>> create_friction_solver(
+      std::vector<ContactNode<dim>>    nodes,
+      const FrictionSolverEnvironment &environment) const override
     {
-      const auto &contact_ids = this->parameters.boundary.contact_ids;
-      std::vector<ContactNode<dim>> nodes =
-        make_contact_nodes(this->space, contact_ids);
       if (faults.unshared_hanging_weights)
-        drop_hanging_shares(this->space, contact_ids, nodes);
+        drop_hanging_shares(this->get_dof_handler(),
+                            this->get_mapping(),
+                            environment.parameters.boundary.contact_ids,
+                            nodes);
       for (ContactNode<dim> &node : nodes)
         node.weight *= faults.weight_factor;
       if (faults.tangent_turn != 0. && !nodes.empty())
@@ -493,37 +520,24 @@ namespace Contact
                     std::sin(faults.tangent_turn) * node.normal;
         }
       return std::make_unique<FaultySolver<dim>>(faults,
-                                                 this->parameters,
-                                                 this->friction_law,
-                                                 std::move(nodes),
-                                                 this->space.constraints,
-                                                 this->space.locally_owned_dofs,
-                                                 this->mpi_communicator,
-                                                 this->pcout,
-                                                 this->computing_timer);
+                                                 environment,
+                                                 std::move(nodes));
     }
 
-    void assemble_matrices() override
+    void after_assembly(SystemMatrices<dim> &assembled) const override
     {
-      ContactProblem<dim>::assemble_matrices();
       if (faults.stiffness_factor != 1.)
-        {
-          this->matrices.elasticity *= faults.stiffness_factor;
-          this->form_system_matrix();
-        }
+        assembled.elasticity *= faults.stiffness_factor;
     }
 
-    // The energies before the products, kept after a mesh change.
-    void update_state_products() override
+    // The energies before the transfer, kept on the new mesh.
+    void after_mesh_transfer(EnergyBalance       &energy,
+                             const EnergyBalance &before) const override
     {
-      const EnergyBalance old_energy = this->state.energy;
-      ContactProblem<dim>::update_state_products();
-      if (faults.stale_energies_after_mesh_change &&
-          this->state.step_number > 0)
-        this->state.energy = old_energy;
+      if (faults.stale_energies_after_mesh_change)
+        energy = before;
     }
 
-  private:
     const Faults<dim> faults;
   };
 } // namespace Contact

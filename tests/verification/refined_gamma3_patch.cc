@@ -14,8 +14,9 @@
    nodes on Gamma_3) and in 3D with Q2. Printed: the nodes of Gamma_3, the
    largest deviation of the slip rates from 0.02 n and of the friction
    tractions from 10 (relative), the self-checks. Last, the 3D graded run
-   with the hanging nodes' weights dropped (a fault of faults.h): the
-   self-check of the friction law, whose weights are V_h's, must fail. The same
+   with the hanging nodes' shares of the weights and of the normals
+   dropped (a fault of faults.h): the self-check of the friction law,
+   whose weights are V_h's, must fail. The same
    on two processes. */
 
 #include <deal.II/base/exceptions.h>
