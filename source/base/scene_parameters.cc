@@ -8,6 +8,7 @@
 #include <base/parameters.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -71,20 +72,18 @@ namespace Contact
     return true;
   }
 
-  // The entries of every geometry; after each, those of the geometries
-  // that follow it (source/geometry/).
-  void GeometryParameters::declare_parameters(ParameterHandler &prm)
+  namespace
   {
-    const auto declare_entry = [&prm](const std::string           &name,
-                                      const std::string           &value,
-                                      const Patterns::PatternBase &pattern,
-                                      const std::string           &help) {
-      prm.declare_entry(name, value, pattern, help);
-      for (const auto &[geometry, entries] : registered_entries())
-        if (entries.after == name)
-          entries.declare(prm);
-    };
-    prm.enter_subsection("Geometry");
+    // Declares an entry of Geometry, and after it the entries of the
+    // geometries that follow it.
+    using EntryDeclarer =
+      std::function<void(const std::string           &name,
+                         const std::string           &value,
+                         const Patterns::PatternBase &pattern,
+                         const std::string           &help)>;
+
+    // The mesh: its source, its cells and its finite element.
+    void declare_mesh_entries(const EntryDeclarer &declare_entry)
     {
       declare_entry(
         "Mesh file",
@@ -101,8 +100,8 @@ namespace Contact
                     "file, or of the shell's coarse mesh.");
       declare_entry(
         "Domain",
-        domains().name(Domain::box),
-        domains().pattern(),
+        GeometryParameters::domains().name(GeometryParameters::Domain::box),
+        GeometryParameters::domains().pattern(),
         "box: Lower and Upper corner, divided by the Cell size; shell: the "
         "annulus (2D) or the tube along z from z = 0 to the Shell length "
         "(3D) between the Inner and the Outer radius around the origin, "
@@ -124,8 +123,9 @@ namespace Contact
         "(doc/verification.md).");
       declare_entry(
         "Cell shape",
-        cell_shapes().name(CellShape::hypercube),
-        cell_shapes().pattern(),
+        GeometryParameters::cell_shapes().name(
+          GeometryParameters::CellShape::hypercube),
+        GeometryParameters::cell_shapes().pattern(),
         "hypercube: quadrilaterals/hexahedra with Q_p elements; simplex: "
         "every box cell split into triangles (2) or tetrahedra (5), with "
         "P_p elements (FE_SimplexP).");
@@ -134,10 +134,16 @@ namespace Contact
                     Patterns::Integer(1, 4),
                     "Polynomial degree of the Lagrange elements Q_p.");
       declare_entry("Mass matrix",
-                    mass_matrices().name(MassMatrix::consistent),
-                    mass_matrices().pattern(),
+                    GeometryParameters::mass_matrices().name(
+                      GeometryParameters::MassMatrix::consistent),
+                    GeometryParameters::mass_matrices().pattern(),
                     "consistent: Gauss quadrature; lumped: Gauss-Lobatto "
                     "quadrature at the nodes, a diagonal M.");
+    }
+
+    // What changes the mesh: the grading towards points and the rotation.
+    void declare_refinement_entries(const EntryDeclarer &declare_entry)
+    {
       declare_entry(
         "Refinement points",
         "",
@@ -171,6 +177,28 @@ namespace Contact
                     Patterns::List(Patterns::Double(), 3, 3),
                     "Axis of the rotation in 3D, three numbers, not all "
                     "zero.");
+    }
+  } // namespace
+
+
+  // The entries of every geometry; after each, those of the geometries
+  // that follow it (source/geometry/).
+  void GeometryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    const EntryDeclarer declare_entry =
+      [&prm](const std::string           &name,
+             const std::string           &value,
+             const Patterns::PatternBase &pattern,
+             const std::string           &help) {
+        prm.declare_entry(name, value, pattern, help);
+        for (const auto &[geometry, entries] : registered_entries())
+          if (entries.after == name)
+            entries.declare(prm);
+      };
+    prm.enter_subsection("Geometry");
+    {
+      declare_mesh_entries(declare_entry);
+      declare_refinement_entries(declare_entry);
     }
     prm.leave_subsection();
   }
