@@ -183,6 +183,34 @@ namespace Contact
 
 
   template <int dim>
+  class ContactProblem;
+
+
+  /**
+   * What a postprocessor reads of a run (the accessors of Postprocessor):
+   * const references to the parts of the problem, which fills it once and
+   * hands it to each postprocessor it takes. The loads are made at the
+   * start of run() and the friction solver with each mesh, so their
+   * owners' pointers are held. The timer is the one non-const part: a
+   * postprocessor times its own work in it.
+   */
+  template <int dim>
+  struct RunView
+  {
+    const ContactProblem<dim>                              &problem;
+    const Parameters                                       &parameters;
+    const StepState                                        &state;
+    const DiscreteSpace<dim>                               &space;
+    const SystemMatrices<dim>                              &matrices;
+    const std::unique_ptr<Loads<dim>>                      &loads;
+    const std::unique_ptr<FrictionSolver<dim>>             &friction_solver;
+    const ConditionalOStream                               &pcout;
+    TimerOutput                                            &computing_timer;
+    const std::vector<std::unique_ptr<Postprocessor<dim>>> &postprocessors;
+  };
+
+
+  template <int dim>
   class ContactProblem
   {
   public:
@@ -326,12 +354,14 @@ namespace Contact
     // checkpoint.cc) of the members above and of the postprocessors.
     Checkpoint<dim> checkpoint;
 
+    // What the postprocessors read of the members above (the
+    // constructor).
+    const RunView<dim> run_view;
+
     // Everything that observes the run, in the order of their ranks; last,
     // so that they are destroyed first (the VTU output's thread reads the
     // space).
     std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
-
-    friend class Postprocessor<dim>;
   };
 } // namespace Contact
 

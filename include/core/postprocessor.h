@@ -4,36 +4,44 @@
  * solves; everything a user sees of a run (the VTU/PVD output, the time
  * series, the Gamma_3 history, the probes, the console reports, the
  * self-checks, the slip diagnostics, the errors against a manufactured
- * solution) is a postprocessor that owns its state, saves it with a
+ * solution) is a postprocessor that owns its state, stores it with a
  * checkpoint, and reads the problem through the accessors of this base
- * class.
+ * class: the const view of the run (RunView, contact_problem.h) that the
+ * problem hands to each postprocessor it takes.
  *
  * A run calls, in the order of the postprocessors' ranks:
- *   initialize()      at the end of the set-up of the space, Gamma_3, the
- *                     loads and the matrices M, A_h and B_h, before the
- *                     initial values are set and K is factorised (a
- *                     postprocessor may refuse its entries here, before
- *                     the mesh is reported),
- *   load()            on --resume, with the checkpoint's state,
- *   start(resumed)    before the first step: files are opened (a resumed
- *                     run cuts them back to its step), a fresh run's
- *                     initial state is written,
- *   after_substep()   after each solved linear system of a step (both
- *                     halves of a cut step); a step that fails never gets
- *                     here, so no postprocessor has state to roll back,
- *   after_step()      after each step t_n,
- *   before_mesh_change() and
- *   mesh_changed()    before and after the mesh is adapted during the run
- *                     ('Mesh adaptation/Interval'): u_n and w_n are on the
- *                     new mesh, the matrices assembled and the friction
- *                     solver set up; what a postprocessor keeps of the
- *                     mesh is built again here,
- *   save()            for a checkpoint,
- *   end()             after the last step (output still pending is
- *                     completed),
- *   print_summary(), add_to_summary(), and last require_success(): a
- *   postprocessor that found the results wrong (a self-check) ends the run
- *   with an error.
+ *   mesh_event(initial)        at the end of the set-up of the space,
+ *                              Gamma_3, the loads and the matrices M, A_h
+ *                              and B_h, before the initial values are set
+ *                              and K is factorised (a postprocessor may
+ *                              refuse its entries here, before the mesh is
+ *                              reported),
+ *   checkpoint() loading       on --resume, with the checkpoint's state,
+ *   start(resumed)             before the first step: files are opened (a
+ *                              resumed run cuts them back to its step), a
+ *                              fresh run's initial state is written,
+ *   after_step(solve)          after each solved linear system of a step:
+ *                              the one of a step that is not cut, each half
+ *                              of a cut step; a step that fails never gets
+ *                              here, so no postprocessor has state to roll
+ *                              back,
+ *   after_step(whole_step)     after each step t_n (its statistics summed
+ *                              over its halves),
+ *   mesh_event(before_change)
+ *   and mesh_event(after_change) before and after the mesh is adapted
+ *                              during the run ('Mesh adaptation/Interval'):
+ *                              u_n and w_n are on the new mesh, the matrices
+ *                              assembled and the friction solver set up;
+ *                              what a postprocessor keeps of the mesh is
+ *                              built again here,
+ *   checkpoint() saving        for a checkpoint,
+ *   finish(summary)            after the last step: output still pending is
+ *                              completed, the summary's lines printed and
+ *                              the postprocessor's part of what a driver
+ *                              gets of the run added (collective),
+ *   require_success()          last, after the run's timings: a
+ *                              postprocessor that found the results wrong
+ *                              (a self-check) ends the run with an error.
  *
  * A postprocessor is registered once for all dimensions with a rank
  * (PostprocessorRegistration); ranks order the summary's lines and the
@@ -84,110 +92,168 @@ namespace Contact
   };
 
 
+  /** What changes the mesh of a run: its set-up at the start, and the
+   *  moments before and after an adaptation during the run. */
+  enum class MeshEvent
+  {
+    initial,
+    before_change,
+    after_change
+  };
+
+
+  /** Where after_step() is called: after a solve of the step's linear
+   *  system (the one of a step that is not cut, or each half of a cut
+   *  step), or once the whole step t_n is done. */
+  enum class StepEnd
+  {
+    solve,
+    whole_step
+  };
+
+
+  /**
+   * A postprocessor's part of a checkpoint: the archive that is written
+   * (Checkpoint::save()) or read (Checkpoint::load()), so that one
+   * function lists what is stored, in one order for both. `archive & x`
+   * writes or reads x as the archive held would; a postprocessor that
+   * stores something includes <boost/archive/binary_iarchive.hpp> and
+   * <boost/archive/binary_oarchive.hpp>.
+   */
+  class CheckpointArchive
+  {
+  public:
+    explicit CheckpointArchive(boost::archive::binary_oarchive &archive)
+      : output(&archive)
+    {}
+
+    explicit CheckpointArchive(boost::archive::binary_iarchive &archive)
+      : input(&archive)
+    {}
+
+    /** Whether the checkpoint is read (--resume) rather than written. */
+    bool is_loading() const
+    {
+      return input != nullptr;
+    }
+
+    template <typename T>
+    CheckpointArchive &operator&(T &value)
+    {
+      if (input)
+        *input &value;
+      else
+        *output &value;
+      return *this;
+    }
+
+  private:
+    boost::archive::binary_oarchive *output = nullptr;
+    boost::archive::binary_iarchive *input  = nullptr;
+  };
+
+
   template <int dim>
   class Postprocessor
   {
   public:
     virtual ~Postprocessor() = default;
 
-    virtual void initialize()
+    /** Called by the problem that takes the postprocessor, with what it
+     *  may read of the run. */
+    void observe(const RunView<dim> &run_view)
+    {
+      run = &run_view;
+    }
+
+    virtual void mesh_event(const MeshEvent /*event*/)
     {}
     virtual void start(const bool /*resumed*/)
     {}
-    virtual void after_substep()
-    {}
-    virtual void after_step(const StepStatistics & /*statistics*/)
-    {}
-    virtual void before_mesh_change()
-    {}
-    virtual void mesh_changed()
+    virtual void after_step(const StepStatistics & /*statistics*/,
+                            const StepEnd /*end*/)
     {}
     /** Its columns of the step's row of time_series.csv (collective). */
     virtual void add_columns(TimeSeriesRow & /*row*/) const
     {}
-    virtual void save(boost::archive::binary_oarchive & /*archive*/)
+    /** Its state, written to or read from a checkpoint. */
+    virtual void checkpoint(CheckpointArchive & /*archive*/)
     {}
-    virtual void load(boost::archive::binary_iarchive & /*archive*/)
-    {}
-    virtual void end()
-    {}
-    virtual void print_summary() const
-    {}
-    /** Its part of what a driver gets of the run (collective). */
-    virtual void add_to_summary(RunSummary & /*summary*/) const
+    /** After the last step: what is pending completed, its lines of the
+     *  summary printed, and its part of what a driver gets of the run
+     *  (collective). */
+    virtual void finish(RunSummary & /*summary*/)
     {}
     virtual void require_success() const
     {}
 
   protected:
-    // The problem observed, set by ContactProblem when it takes the
-    // postprocessor; and read access to it (a friend of the problem).
+    // Read access to the problem observed.
     const ContactProblem<dim> &problem() const
     {
-      return *observed;
+      return run->problem;
     }
     const Parameters &parameters() const
     {
-      return observed->parameters;
+      return run->parameters;
     }
     const StepState &state() const
     {
-      return observed->state;
+      return run->state;
     }
     double time_step() const
     {
-      return observed->state.time_step;
+      return run->state.time_step;
     }
     unsigned int n_time_steps() const
     {
-      return observed->parameters.time.n_steps();
+      return run->parameters.time.n_steps();
     }
     const FrictionLaw &friction_law() const
     {
-      return observed->friction_solver->law();
+      return run->friction_solver->law();
     }
     const FrictionSolver<dim> &friction_solver() const
     {
-      return *observed->friction_solver;
+      return *run->friction_solver;
     }
     const DiscreteSpace<dim> &space() const
     {
-      return observed->space;
+      return run->space;
     }
     const SystemMatrices<dim> &matrices() const
     {
-      return observed->matrices;
+      return run->matrices;
     }
     const Loads<dim> &loads() const
     {
-      return *observed->loads;
+      return *run->loads;
     }
     const ManufacturedSolution<dim> *exact_solution() const
     {
-      return observed->loads->exact_solution();
+      return run->loads->exact_solution();
     }
     const ConditionalOStream &pcout() const
     {
-      return observed->pcout;
+      return run->pcout;
     }
     TimerOutput &computing_timer() const
     {
-      return observed->computing_timer;
+      return run->computing_timer;
     }
     MPI_Comm mpi_communicator() const
     {
-      return observed->space.mpi_communicator;
+      return run->space.mpi_communicator;
     }
     /** All postprocessors of the run, this one among them. */
     const std::vector<std::unique_ptr<Postprocessor<dim>>> &
     postprocessors() const
     {
-      return observed->postprocessors;
+      return run->postprocessors;
     }
 
   private:
-    const ContactProblem<dim> *observed = nullptr;
-    friend class ContactProblem<dim>;
+    const RunView<dim> *run = nullptr;
   };
 
 
@@ -199,16 +265,17 @@ namespace Contact
   public:
     explicit StepObserver(
       const std::function<void(const ContactProblem<dim> &)> &observer)
-      : observe(observer)
+      : observe_step(observer)
     {}
 
-    void after_step(const StepStatistics &) override
+    void after_step(const StepStatistics &, const StepEnd end) override
     {
-      observe(this->problem());
+      if (end == StepEnd::whole_step)
+        observe_step(this->problem());
     }
 
   private:
-    const std::function<void(const ContactProblem<dim> &)> observe;
+    const std::function<void(const ContactProblem<dim> &)> observe_step;
   };
 
 

@@ -46,7 +46,9 @@ namespace Contact
     MeshIndicators(const MeshAdaptationParameters &parameters,
                    unsigned int                   &coarsest_level);
 
-    void initialize() override;
+    /** At the start of the run: the friction nodes, and the scene's
+     *  coarsest level where the run starts from the scene's mesh. */
+    void mesh_event(const MeshEvent event) override;
 
   protected:
     /** Whether this run starts from the scene's mesh (the first pilot, a

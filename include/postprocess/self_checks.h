@@ -164,10 +164,22 @@ namespace Contact
      *  max_p g_p(0): beyond it the check fails whatever the tolerance. */
     static constexpr double largest_friction_law_allowance = 1e-3;
 
-    void initialize() override
+    // The map of Gamma_3 and the rotation of the mesh at the start, and
+    // after a change of the mesh also the new matrices checked; the next
+    // step's energy identity starts from the energies after the transfer.
+    void mesh_event(const MeshEvent event) override
     {
+      if (event == MeshEvent::before_change)
+        return;
+      if (event == MeshEvent::after_change)
+        {
+          residual_work = VectorType();
+          friction_work = VectorType();
+        }
       setup_gamma3_map();
       setup_moment_balance();
+      if (event == MeshEvent::after_change)
+        start_self_checks();
     }
 
     // A resumed run has the checks' largest values from the checkpoint;
@@ -180,29 +192,19 @@ namespace Contact
       warn_of_loose_tolerance();
     }
 
-    void after_substep() override
+    // Each solve of a step: both halves of a cut step are checked.
+    void after_step(const StepStatistics &, const StepEnd end) override
     {
-      check_step();
-    }
-
-    // The new mesh's map of Gamma_3, rotation and matrices; the next step's
-    // energy identity starts from the energies after the transfer.
-    void mesh_changed() override
-    {
-      residual_work = VectorType();
-      friction_work = VectorType();
-      setup_gamma3_map();
-      setup_moment_balance();
-      start_self_checks();
+      if (end == StepEnd::solve)
+        check_step();
     }
 
     void add_columns(TimeSeriesRow &row) const override;
 
-    void save(boost::archive::binary_oarchive &archive) override;
+    void checkpoint(CheckpointArchive &archive) override;
 
-    void load(boost::archive::binary_iarchive &archive) override;
-
-    void print_summary() const override;
+    /** The summary's lines of the checks. */
+    void finish(RunSummary &) override;
 
     void require_success() const override;
 

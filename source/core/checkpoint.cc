@@ -435,8 +435,10 @@ namespace Contact
         problem_entries(parameters.used_parameters);
       FrictionState friction_state = friction_solver->state();
       archive &plan_text &problem_shape &entries &state &friction_state;
+      // Each postprocessor's own state, in the order of their ranks.
+      CheckpointArchive parts(archive);
       for (const auto &postprocessor : postprocessors)
-        postprocessor->save(archive);
+        postprocessor->checkpoint(parts);
       // The time loop adapts after every interval-th step but the last
       // (ContactProblem::time_loop()).
       bool due = adaptation.interval > 0 && state.step_number > 0 &&
@@ -482,8 +484,9 @@ namespace Contact
     FrictionState   friction_state;
     archive &state &friction_state;
     friction_solver->set_state(friction_state);
+    CheckpointArchive parts(archive);
     for (const auto &postprocessor : postprocessors)
-      postprocessor->load(archive);
+      postprocessor->checkpoint(parts);
     archive           &adaptation.due;
     const unsigned int step_number = state.step_number;
     AssertThrow(Utilities::MPI::min(step_number, space.mpi_communicator) ==

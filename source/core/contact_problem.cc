@@ -344,6 +344,16 @@ namespace Contact
                  postprocessors,
                  pcout,
                  computing_timer)
+    , run_view{*this,
+               parameters,
+               state,
+               space,
+               matrices,
+               loads,
+               friction_solver,
+               pcout,
+               computing_timer,
+               postprocessors}
   {
     AssertThrow(parameters.dimension == dim, ExcInternalError());
     state.time_step = parameters.time.end_time / parameters.time.n_steps();
@@ -364,7 +374,7 @@ namespace Contact
   void ContactProblem<dim>::add_postprocessor(
     std::unique_ptr<Postprocessor<dim>> postprocessor)
   {
-    postprocessor->observed = this;
+    postprocessor->observe(run_view);
     postprocessors.push_back(std::move(postprocessor));
   }
 
@@ -417,7 +427,7 @@ namespace Contact
     // The postprocessors' set-up may refuse an entry of theirs (a probe
     // outside the body): before anything is reported of the mesh.
     for (const auto &postprocessor : postprocessors)
-      postprocessor->initialize();
+      postprocessor->mesh_event(MeshEvent::initial);
     report_mesh(
       parameters, *geometry, space, friction_solver->boundary(), pcout);
     set_initial_state(parameters,
@@ -445,11 +455,13 @@ namespace Contact
       postprocessor->start(resumed);
     const unsigned int first_step = state.step_number;
     time_loop();
-    for (const auto &postprocessor : postprocessors)
-      postprocessor->end();
+    // What each postprocessor completes, prints and gives the summary (the
+    // summary's lines in the order of the ranks), then the timings; the
+    // failure of a self-check ends the run last.
     state.step_number = parameters.time.n_steps();
+    RunSummary summary;
     for (const auto &postprocessor : postprocessors)
-      postprocessor->print_summary();
+      postprocessor->finish(summary);
     if (parameters.output.print_timings)
       print_timings(state.step_number - first_step,
                     run_times,
@@ -469,7 +481,6 @@ namespace Contact
 
     // What a driver gets of the run (collective); its h is the geometry's
     // (Geometry::cell_size()).
-    RunSummary summary;
     summary.cell_size =
       geometry->cell_size(*space.triangulation, *space.mapping);
     summary.time_step           = state.time_step;
@@ -477,8 +488,6 @@ namespace Contact
     summary.n_dofs              = space.dof_handler.n_dofs();
     summary.wall_time           = run_times.run.wall_time();
     summary.displacement_V_norm = strain_norm(state.displacement);
-    for (const auto &postprocessor : postprocessors)
-      postprocessor->add_to_summary(summary);
     return summary;
   }
 
@@ -509,7 +518,7 @@ namespace Contact
                                " are written. Check the loads and material "
                                "data for values that overflow."));
         for (const auto &postprocessor : postprocessors)
-          postprocessor->after_step(statistics);
+          postprocessor->after_step(statistics, StepEnd::whole_step);
         if (adaptation.interval > 0 &&
             state.step_number % adaptation.interval == 0 &&
             state.step_number < n_steps)

@@ -41,7 +41,7 @@ namespace Contact
   {
     TimerOutput::Scope t(computing_timer, "Mesh adaptation");
     for (const auto &postprocessor : postprocessors)
-      postprocessor->before_mesh_change();
+      postprocessor->mesh_event(MeshEvent::before_change);
     adaptation.choose_cells();
     adaptation.plan.add_cycle_from_flags(*space.triangulation);
     // Coarsening flags that p4est drops (not every child of a cell
@@ -105,7 +105,7 @@ namespace Contact
     friction_solver->reinit(matrices.system, *matrices.factorization);
     friction_solver->set_initial_velocity(state.velocity);
     for (const auto &postprocessor : postprocessors)
-      postprocessor->mesh_changed();
+      postprocessor->mesh_event(MeshEvent::after_change);
   }
 
 

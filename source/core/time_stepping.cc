@@ -136,7 +136,7 @@ namespace Contact
         }
         update_step_products(products, state);
         for (const auto &postprocessor : postprocessors)
-          postprocessor->after_substep();
+          postprocessor->after_step(statistics, StepEnd::solve);
         return statistics;
       }
     catch (const ExcStepNotConverged &)

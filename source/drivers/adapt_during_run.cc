@@ -77,13 +77,31 @@ namespace Contact
           this->write_indicators(fields, indicator, this->state().step_number);
       }
 
-      void before_mesh_change() override
+      void mesh_event(const MeshEvent event) override
       {
-        energy_before =
-          this->state().energy.kinetic + this->state().energy.elastic;
+        MeshIndicators<dim>::mesh_event(event);
+        if (event == MeshEvent::before_change)
+          energy_before =
+            this->state().energy.kinetic + this->state().energy.elastic;
+        else if (event == MeshEvent::after_change)
+          add_row();
       }
 
-      void mesh_changed() override
+      // The scene's coarsest level and the table's rows are part of the
+      // run's state.
+      void checkpoint(CheckpointArchive &archive) override
+      {
+        archive &this->base_level &rows;
+      }
+
+    private:
+      bool coarsest_is_scene_mesh() const override
+      {
+        return true;
+      }
+
+      // The row of adaptation.csv of the change of the mesh just made.
+      void add_row()
       {
         this->index_friction_nodes();
         const StepState   &state = this->state();
@@ -94,24 +112,6 @@ namespace Contact
             << ',' << state.energy.kinetic + state.energy.elastic;
         rows.push_back(row.str());
         write_files();
-      }
-
-      // The scene's coarsest level and the table's rows are part of the
-      // run's state.
-      void save(boost::archive::binary_oarchive &archive) override
-      {
-        archive &this->base_level &rows;
-      }
-
-      void load(boost::archive::binary_iarchive &archive) override
-      {
-        archive &this->base_level &rows;
-      }
-
-    private:
-      bool coarsest_is_scene_mesh() const override
-      {
-        return true;
       }
 
       // The entry's fraction, or with a target number of unknowns at most

@@ -79,16 +79,19 @@ namespace Contact
         , plan(adapted_mesh)
       {}
 
-      void initialize() override
+      void mesh_event(const MeshEvent event) override
       {
-        MeshIndicators<dim>::initialize();
-        for (Vector<float> &field : largest)
-          field.reinit(this->space().triangulation->n_active_cells());
+        MeshIndicators<dim>::mesh_event(event);
+        if (event == MeshEvent::initial)
+          for (Vector<float> &field : largest)
+            field.reinit(this->space().triangulation->n_active_cells());
       }
 
       // At indicator_samples steps spread over the run and at its last.
-      void after_step(const StepStatistics &) override
+      void after_step(const StepStatistics &, const StepEnd end) override
       {
+        if (end != StepEnd::whole_step)
+          return;
         const unsigned int step = this->state().step_number,
                            n    = this->n_time_steps();
         const unsigned int stride =
@@ -97,7 +100,7 @@ namespace Contact
           this->take_indicators(largest);
       }
 
-      void end() override
+      void finish(RunSummary &) override
       {
         Triangulation<dim> &mesh      = *this->space().triangulation;
         const Vector<float> indicator = this->shares(largest);

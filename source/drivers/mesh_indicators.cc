@@ -53,8 +53,10 @@ namespace Contact
 
 
   template <int dim>
-  void MeshIndicators<dim>::initialize()
+  void MeshIndicators<dim>::mesh_event(const MeshEvent event)
   {
+    if (event != MeshEvent::initial)
+      return;
     index_friction_nodes();
     const Triangulation<dim> &mesh = *this->space().triangulation;
     unsigned int coarsest          = std::numeric_limits<unsigned int>::max();

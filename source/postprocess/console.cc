@@ -76,9 +76,10 @@ namespace Contact
   class Console : public Postprocessor<dim>
   {
   public:
-    void initialize() override
+    void mesh_event(const MeshEvent event) override
     {
-      report_times = ReportTimes(this->parameters().output.report_times);
+      if (event == MeshEvent::initial)
+        report_times = ReportTimes(this->parameters().output.report_times);
     }
 
     void start(const bool) override
@@ -86,29 +87,29 @@ namespace Contact
       loop_timer.restart();
     }
 
-    void after_step(const StepStatistics &statistics) override
+    void after_step(const StepStatistics &statistics,
+                    const StepEnd         end) override
     {
+      if (end != StepEnd::whole_step)
+        return;
       totals.add_counts(statistics);
       ++steps_timed;
       print_progress(statistics);
       report_contact_state();
     }
 
-    void save(boost::archive::binary_oarchive &archive) override
+    // The report times of a resumed run are this run's after the
+    // checkpoint (ReportTimes::drop_met()), not the checkpointed run's.
+    void checkpoint(CheckpointArchive &archive) override
     {
       serialize(archive);
-    }
-
-    // The report times are this run's after the checkpoint
-    // (ReportTimes::drop_met()), not the checkpointed run's.
-    void load(boost::archive::binary_iarchive &archive) override
-    {
-      serialize(archive);
+      if (!archive.is_loading())
+        return;
       report_times = ReportTimes(this->parameters().output.report_times);
       report_times.drop_met(this->state().step_number, this->time_step());
     }
 
-    void print_summary() const override;
+    void finish(RunSummary &) override;
 
   private:
     void        print_progress(const StepStatistics &statistics) const;
@@ -273,10 +274,11 @@ namespace Contact
   }
 
 
-  // @sect4{Console::print_summary}
+  // @sect4{Console::finish}
 
+  // The summary's lines of the run.
   template <int dim>
-  void Console<dim>::print_summary() const
+  void Console<dim>::finish(RunSummary &)
   {
     const unsigned int   n_steps = this->n_time_steps();
     const double         k       = this->time_step();

@@ -42,9 +42,10 @@ namespace Contact
   public:
     void start(const bool resumed) override;
 
-    void after_step(const StepStatistics &) override
+    void after_step(const StepStatistics &, const StepEnd end) override
     {
-      write_rows();
+      if (end == StepEnd::whole_step)
+        write_rows();
     }
 
   private:

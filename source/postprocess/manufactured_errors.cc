@@ -25,9 +25,9 @@ namespace Contact
         current_errors = compute_errors();
     }
 
-    void after_step(const StepStatistics &) override
+    void after_step(const StepStatistics &, const StepEnd end) override
     {
-      if (!this->exact_solution())
+      if (end != StepEnd::whole_step || !this->exact_solution())
         return;
       current_errors = compute_errors();
       max_errors.displacement_V =
@@ -47,17 +47,12 @@ namespace Contact
       row.add("error_u_L2", current_errors.displacement_L2);
     }
 
-    void save(boost::archive::binary_oarchive &archive) override
+    void checkpoint(CheckpointArchive &archive) override
     {
       archive &current_errors &max_errors;
     }
 
-    void load(boost::archive::binary_iarchive &archive) override
-    {
-      archive &current_errors &max_errors;
-    }
-
-    void print_summary() const override
+    void finish(RunSummary &summary) override
     {
       if (this->exact_solution())
         this->pcout() << "Errors, largest over the steps: ||eps(u - u_h)|| "
@@ -65,10 +60,6 @@ namespace Contact
                       << ", ||w - w_h|| " << max_errors.velocity_L2
                       << ", ||u - u_h|| " << max_errors.displacement_L2
                       << std::endl;
-    }
-
-    void add_to_summary(RunSummary &summary) const override
-    {
       summary.max_errors   = max_errors;
       summary.final_errors = current_errors;
     }

@@ -20,16 +20,18 @@ namespace Contact
   class Probes : public Postprocessor<dim>
   {
   public:
-    void initialize() override;
-    // The cells around the points are the new mesh's.
-    void mesh_changed() override
+    // At the start, and the new mesh's cells around the points after a
+    // change of the mesh.
+    void mesh_event(const MeshEvent event) override
     {
-      initialize();
+      if (event != MeshEvent::before_change)
+        locate_probes();
     }
     void add_columns(TimeSeriesRow &row) const override;
-    void add_to_summary(RunSummary &summary) const override;
+    void finish(RunSummary &summary) override;
 
   private:
+    void locate_probes();
     using Probe =
       std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>;
     unsigned int   probe_near_curved_boundary(const Point<dim> &point,
@@ -44,10 +46,10 @@ namespace Contact
   };
 
 
-  // @sect4{Probes::initialize}
+  // @sect4{Probes::locate_probes}
 
   template <int dim>
-  void Probes<dim>::initialize()
+  void Probes<dim>::locate_probes()
   {
     const DiscreteSpace<dim> &space        = this->space();
     const unsigned int        this_process = Utilities::MPI::this_mpi_process(
@@ -196,12 +198,12 @@ namespace Contact
   }
 
 
-  // @sect4{Probes::add_to_summary}
+  // @sect4{Probes::finish}
 
   // The probes' displacements at T, first among the final quantities (the
   // order of the rows of an error estimate).
   template <int dim>
-  void Probes<dim>::add_to_summary(RunSummary &summary) const
+  void Probes<dim>::finish(RunSummary &summary)
   {
     std::vector<std::pair<std::string, double>> quantities;
     const VectorType u = this->space().ghosted(this->state().displacement);

@@ -16,27 +16,21 @@
 
 namespace Contact
 {
-  // @sect4{SelfChecks::save and load}
+  // @sect4{SelfChecks::checkpoint}
 
   // The checks' largest values so far: a resumed run reports the largest
   // over the whole run.
   template <int dim>
-  void SelfChecks<dim>::save(boost::archive::binary_oarchive &archive)
-  {
-    archive &largest_checks;
-  }
-
-  template <int dim>
-  void SelfChecks<dim>::load(boost::archive::binary_iarchive &archive)
+  void SelfChecks<dim>::checkpoint(CheckpointArchive &archive)
   {
     archive &largest_checks;
   }
 
 
-  // @sect4{SelfChecks::print_summary}
+  // @sect4{SelfChecks::finish}
 
   template <int dim>
-  void SelfChecks<dim>::print_summary() const
+  void SelfChecks<dim>::finish(RunSummary &)
   {
     // A value far below the tolerance is round-off, whose digits depend
     // on the machine (an exact zero on one BLAS kernel is round-off on
@@ -199,9 +193,8 @@ namespace Contact
   // The members above, instantiated here as those of self_checks.cc are
   // there (the class is explicitly instantiated in that file only).
 #define INSTANTIATE(dim)                                                    \
-  template void SelfChecks<dim>::save(boost::archive::binary_oarchive &);   \
-  template void SelfChecks<dim>::load(boost::archive::binary_iarchive &);   \
-  template void SelfChecks<dim>::print_summary() const;                     \
+  template void SelfChecks<dim>::checkpoint(CheckpointArchive &);           \
+  template void SelfChecks<dim>::finish(RunSummary &);                      \
   template void SelfChecks<dim>::print_why_moments_are_not_checked() const; \
   template void SelfChecks<dim>::require_success() const;                   \
   template void SelfChecks<dim>::add_columns(TimeSeriesRow &) const;

@@ -54,25 +54,26 @@ namespace Contact
   class SlipDiagnostics : public Postprocessor<dim>
   {
   public:
-    void after_step(const StepStatistics &) override
+    void after_step(const StepStatistics &, const StepEnd end) override
     {
-      track_slip_onset();
+      if (end == StepEnd::whole_step)
+        track_slip_onset();
     }
 
-    void save(boost::archive::binary_oarchive &archive) override
-    {
-      archive &slip_onset;
-    }
-
-    void load(boost::archive::binary_iarchive &archive) override
+    void checkpoint(CheckpointArchive &archive) override
     {
       archive &slip_onset;
     }
 
-    void print_summary() const override;
-    void add_to_summary(RunSummary &summary) const override;
+    void finish(RunSummary &summary) override
+    {
+      print_summary();
+      add_to_summary(summary);
+    }
 
   private:
+    void print_summary() const;
+    void add_to_summary(RunSummary &summary) const;
     void track_slip_onset();
 
     SlipOnset slip_onset;

@@ -39,9 +39,11 @@ namespace Contact
   public:
     void start(const bool resumed) override;
 
-    void after_step(const StepStatistics &statistics) override
+    void after_step(const StepStatistics &statistics,
+                    const StepEnd         end) override
     {
-      if (this->parameters().output.template entry<bool>(series_entry))
+      if (end == StepEnd::whole_step &&
+          this->parameters().output.template entry<bool>(series_entry))
         write_row(columns(), statistics);
     }
 

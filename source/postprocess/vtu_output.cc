@@ -118,37 +118,33 @@ namespace Contact
     // its pieces stay in .partial/ (the PVD does not list them).
     ~VtuOutput() override;
 
-    void initialize() override
+    // The thread reads the mesh that is about to change.
+    void mesh_event(const MeshEvent event) override
     {
-      report_times = ReportTimes(this->parameters().output.report_times);
+      if (event == MeshEvent::initial)
+        report_times = ReportTimes(this->parameters().output.report_times);
+      else if (event == MeshEvent::before_change)
+        finish_vtu();
     }
 
     void start(const bool resumed) override;
-    void after_step(const StepStatistics &) override;
+    void after_step(const StepStatistics &, const StepEnd end) override;
 
-    // The checkpoint lists the records written so far.
-    void save(boost::archive::binary_oarchive &archive) override
-    {
-      finish_vtu();
-      archive &pvd_records &report_times;
-    }
-
-    // The report times are this run's after the checkpoint
+    // The checkpoint lists the records written so far. The report times of
+    // a resumed run are this run's after the checkpoint
     // (ReportTimes::drop_met()), not the checkpointed run's.
-    void load(boost::archive::binary_iarchive &archive) override
+    void checkpoint(CheckpointArchive &archive) override
     {
+      if (!archive.is_loading())
+        finish_vtu();
       archive &pvd_records &report_times;
+      if (!archive.is_loading())
+        return;
       report_times = ReportTimes(this->parameters().output.report_times);
       report_times.drop_met(this->state().step_number, this->time_step());
     }
 
-    void end() override
-    {
-      finish_vtu();
-    }
-
-    // The thread reads the mesh that is about to change.
-    void before_mesh_change() override
+    void finish(RunSummary &) override
     {
       finish_vtu();
     }
@@ -226,8 +222,10 @@ namespace Contact
   // Every 'VTU interval' steps, at the last step and at the step nearest
   // to each report time.
   template <int dim>
-  void VtuOutput<dim>::after_step(const StepStatistics &)
+  void VtuOutput<dim>::after_step(const StepStatistics &, const StepEnd end)
   {
+    if (end != StepEnd::whole_step)
+      return;
     const unsigned int interval =
       this->parameters().output.template entry<unsigned int>(interval_entry);
     const unsigned int step = this->state().step_number;
