@@ -15,9 +15,10 @@
  * A new geometry (doc/tutorial.md, "Adding a geometry"): its class (a
  * header and a .cc file here, with its entries; CMakeLists.txt compiles
  * every .cc file of source/geometry/), which answers the pure virtual
- * functions of GeometryBase and create_coarse_mesh() below, its enumerator and name in GeometryParameters::Domain
- * and GeometryParameters::domains(), its line in create_geometry(), and,
- * if it has entries of its own, their fields in GeometryParameters.
+ * functions of GeometryBase and create_coarse_mesh() below, its enumerator and
+ * name in GeometryParameters::Domain and GeometryParameters::domains(), its
+ * line in create_geometry(), and, if it has entries of its own, their fields in
+ * GeometryParameters.
  */
 #ifndef contact_geometry_h
 #define contact_geometry_h

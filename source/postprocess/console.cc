@@ -187,8 +187,8 @@ namespace Contact
       return;
     const std::vector<ContactNode<dim>> &contact_nodes =
       this->friction_solver().boundary().nodes;
-    const bool closed = this->problem().get_geometry().gamma3_is_closed();
-    const SlipZone zone = slip_zone(contact_nodes,
+    const bool     closed = this->problem().get_geometry().gamma3_is_closed();
+    const SlipZone zone   = slip_zone(contact_nodes,
                                     this->friction_solver().state().node_state,
                                     closed);
     for (const double t : due)
