@@ -16,8 +16,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
-#include <base/friction_laws.h>
 #include <base/choice_table.h>
+#include <base/friction_laws.h>
+#include <base/parts.h>
 #include <base/quantity.h>
 
 #include <any>
@@ -525,11 +526,6 @@ namespace Contact
     void        parse_parameters(ParameterHandler &prm);
   };
 
-  /**
-   * The subsection Output: the entries that several parts of the program
-   * read, and the values of those that one postprocessor alone reads
-   * (source/postprocess/), which it declares, parses and checks itself.
-   */
   /** The subsection Mesh adaptation: pilot runs that adapt the mesh to
    *  the whole run (drivers/mesh_adaptation.h). */
   struct MeshAdaptationParameters
@@ -557,6 +553,11 @@ namespace Contact
     void        parse_parameters(ParameterHandler &prm);
   };
 
+  /**
+   * The subsection Output: the entries that several parts of the program
+   * read. Those that one postprocessor alone reads are its own
+   * (PartEntries, base/parts.h).
+   */
   struct OutputParameters
   {
     std::string         directory;
@@ -572,45 +573,6 @@ namespace Contact
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm, const unsigned int dim);
-
-    /**
-     * One entry that one postprocessor alone reads: declare() declares it
-     * in the subsection Output right after the entry `after` (its place in
-     * the printed parameters); parse() reads it there, checks it (against
-     * the other entries, all parsed by then) and returns its value, which
-     * the postprocessor gets back by entry<Value>(entry). Each postprocessor
-     * registers its own from its file (register_entry(), while the shared
-     * library is loaded), so that the parameters do not depend on the
-     * postprocessors.
-     */
-    struct OwnEntry
-    {
-      std::string entry;
-      std::string after;
-      void (*declare)(ParameterHandler &prm);
-      std::any (*parse)(ParameterHandler &prm, const Parameters &parameters);
-    };
-    /** Adds an entry; returns true, for the static variable of the
-     *  registration. */
-    static bool register_entry(const OwnEntry &entry);
-
-    /** Reads and checks the registered entries, once the other entries
-     *  of `parameters` are parsed. */
-    void parse_own_entries(ParameterHandler &prm, const Parameters &parameters);
-
-    /** The value of the registered entry `name`. */
-    template <class Value>
-    const Value &entry(const std::string &name) const
-    {
-      return std::any_cast<const Value &>(own_values.at(name));
-    }
-
-  private:
-    static std::vector<OwnEntry> &registered_entries();
-    static void                   declare_entries_after(ParameterHandler  &prm,
-                                                        const std::string &name);
-    /** Entry name -> its value, as the registered parse() returned it. */
-    std::map<std::string, std::any> own_values;
   };
 
   struct Parameters
@@ -628,6 +590,17 @@ namespace Contact
     AccuracyParameters         accuracy;
     MeshAdaptationParameters   mesh_adaptation;
     OutputParameters           output;
+
+    /** The values of the parts' own entries (PartEntries, base/parts.h),
+     *  as each part's parse() returned them, by the part's name. */
+    std::map<std::string, std::any> part_values;
+
+    /** The value of the entries of the part `name`. */
+    template <class Value>
+    const Value &part(const std::string &name) const
+    {
+      return std::any_cast<const Value &>(part_values.at(name));
+    }
 
     /** The .prm text of all entries as they were used, for the results. */
     std::string used_parameters;

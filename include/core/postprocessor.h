@@ -43,11 +43,11 @@
  *                              postprocessor that found the results wrong
  *                              (a self-check) ends the run with an error.
  *
- * A postprocessor is registered once for all dimensions with a rank
- * (PostprocessorRegistration); ranks order the summary's lines and the
- * columns of time_series.csv. An entry that one postprocessor alone reads
- * is declared, parsed and checked in its file
- * (OutputParameters::register_entry(), base/parameters.h). Tests and
+ * A postprocessor is a part (base/parts.h), registered once for all
+ * dimensions with a name and a rank (PostprocessorRegistration); ranks
+ * order the summary's lines and the columns of time_series.csv. The
+ * entries that one postprocessor alone reads are its own: declared,
+ * parsed and checked in its file (PartEntries). Tests and
  * drivers that observe a run add their own with
  * ContactProblem::add_postprocessor().
  */
@@ -57,6 +57,7 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <base/dimensions.h>
+#include <base/parts.h>
 #include <core/contact_problem.h>
 
 #include <functional>
@@ -280,33 +281,30 @@ namespace Contact
 
 
   /**
-   * The postprocessors of every run, by rank: a postprocessor's file
-   * registers it for every compiled dimension with a static
-   *   const PostprocessorRegistration<Class> registration(rank);
-   * and ContactProblem::run() creates one of each (a class that is not
-   * wanted by the parameters is created all the same and does nothing).
+   * The postprocessors of every run, by rank (base/parts.h): a
+   * postprocessor's file registers it for every compiled dimension with a
+   * static
+   *   const PostprocessorRegistration<Class> registration(name, rank,
+   *                                                       entries);
+   * and ContactProblem's constructor creates one of each (a class that is
+   * not wanted by the parameters is created all the same and does
+   * nothing). `entries` are the postprocessor's own entries of Output, if
+   * it has any; it reads their value as parameters().part<Value>(name).
    */
   template <int dim>
-  using PostprocessorFactory =
-    std::function<std::unique_ptr<Postprocessor<dim>>()>;
-
-  template <int dim>
-  std::multimap<unsigned int, PostprocessorFactory<dim>> &
-  postprocessor_registry()
-  {
-    static std::multimap<unsigned int, PostprocessorFactory<dim>> registry;
-    return registry;
-  }
+  using PostprocessorParts = PartRegistry<Postprocessor<dim>>;
 
   template <template <int> class Class>
   struct PostprocessorRegistration
   {
-    explicit PostprocessorRegistration(const unsigned int rank)
+    PostprocessorRegistration(const std::string &name,
+                              const unsigned int rank,
+                              const PartEntries &entries = {})
     {
-#define INSTANTIATE(dim)                             \
-  postprocessor_registry<dim>().emplace(rank, []() { \
-    return std::make_unique<Class<dim>>();           \
-  });
+#define INSTANTIATE(dim)                                                 \
+  PostprocessorParts<dim>::add({name, "", rank, entries, []() {          \
+                                  return std::make_unique<Class<dim>>(); \
+                                }});
       CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
     }

@@ -55,40 +55,6 @@ namespace Contact
 
   // @sect3{Output}
 
-  std::vector<OutputParameters::OwnEntry> &
-  OutputParameters::registered_entries()
-  {
-    static std::vector<OwnEntry> entries;
-    return entries;
-  }
-
-  bool OutputParameters::register_entry(const OwnEntry &entry)
-  {
-    registered_entries().push_back(entry);
-    return true;
-  }
-
-  void OutputParameters::parse_own_entries(ParameterHandler &prm,
-                                           const Parameters &parameters)
-  {
-    prm.enter_subsection("Output");
-    for (const OwnEntry &own : registered_entries())
-      own_values[own.entry] = own.parse(prm, parameters);
-    prm.leave_subsection();
-  }
-
-  // An entry of a postprocessor may follow another one's.
-  void OutputParameters::declare_entries_after(ParameterHandler  &prm,
-                                               const std::string &name)
-  {
-    for (const OwnEntry &own : registered_entries())
-      if (own.after == name)
-        {
-          own.declare(prm);
-          declare_entries_after(prm, own.entry);
-        }
-  }
-
   void OutputParameters::declare_parameters(ParameterHandler &prm)
   {
     // After each entry, those of the postprocessors that follow it.
@@ -97,7 +63,7 @@ namespace Contact
                                       const Patterns::PatternBase &pattern,
                                       const std::string           &help) {
       prm.declare_entry(name, value, pattern, help);
-      declare_entries_after(prm, name);
+      Parts::declare_entries_after(prm, "Output", name);
     };
     prm.enter_subsection("Output");
     {

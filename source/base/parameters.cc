@@ -377,7 +377,9 @@ namespace Contact
                            "that holds the body against rigid motions. "
                            "Allowed: at least one clamped boundary id, or a "
                            "density > 0."));
-    output.parse_own_entries(prm, *this);
+    prm.enter_subsection("Output");
+    part_values.merge(Parts::parse_entries(prm, "Output", *this));
+    prm.leave_subsection();
     AssertThrow(!(output.resume && convergence_study.levels > 0),
                 ExcMessage("Entry 'Output/Resume' (--resume): a convergence "
                            "study ('Convergence study/Levels' > 0) cannot be "

@@ -357,8 +357,8 @@ namespace Contact
   {
     AssertThrow(parameters.dimension == dim, ExcInternalError());
     state.time_step = parameters.time.end_time / parameters.time.n_steps();
-    for (const auto &[rank, create] : postprocessor_registry<dim>())
-      add_postprocessor(create());
+    for (const auto &part : PostprocessorParts<dim>::parts())
+      add_postprocessor(part.create());
   }
 
 

@@ -72,8 +72,7 @@ namespace Contact
         const Vector<float> indicator = this->shares(fields);
         this->flag_cells(indicator, refine_fraction());
         // With the VTU output, whose interval the user chose for files.
-        if (this->parameters().output.template entry<unsigned int>(
-              "VTU interval") > 0)
+        if (this->parameters().template part<unsigned int>("VTU output") > 0)
           this->write_indicators(fields, indicator, this->state().step_number);
       }
 

@@ -25,19 +25,20 @@ namespace Contact
 
     const std::string progress_entry = "Progress interval";
 
-    [[maybe_unused]] const bool registered = OutputParameters::register_entry(
-      {progress_entry,
-       "Probe points",
-       [](ParameterHandler &prm) {
-         prm.declare_entry(progress_entry,
-                           "1",
-                           Patterns::Integer(0),
-                           "Print a progress line every this many steps; 0: "
-                           "none.");
-       },
-       [](ParameterHandler &prm, const Parameters &) -> std::any {
-         return static_cast<unsigned int>(prm.get_integer(progress_entry));
-       }});
+    const PartEntries own_entries{
+      "Output",
+      "Probe points",
+      progress_entry,
+      [](ParameterHandler &prm) {
+        prm.declare_entry(progress_entry,
+                          "1",
+                          Patterns::Integer(0),
+                          "Print a progress line every this many steps; 0: "
+                          "none.");
+      },
+      [](ParameterHandler &prm, const Parameters &) -> std::any {
+        return static_cast<unsigned int>(prm.get_integer(progress_entry));
+      }};
 
     // A sum whose terms cancel (the friction force of a symmetric stick
     // state, the momentum of a body at rest, the friction dissipation of
@@ -143,7 +144,7 @@ namespace Contact
                        n_steps = this->n_time_steps();
     const double       now     = this->state().time;
     const unsigned int interval =
-      this->parameters().output.template entry<unsigned int>(progress_entry);
+      this->parameters().template part<unsigned int>("console");
     if (interval == 0 || (step % interval != 0 && step != n_steps))
       return;
     const double elapsed = run_timer.wall_time();
@@ -371,6 +372,7 @@ namespace Contact
 
   namespace
   {
-    const PostprocessorRegistration<Console> registration(10);
+    const PostprocessorRegistration<Console>
+      registration("console", 10, own_entries);
   }
 } // namespace Contact

@@ -17,22 +17,23 @@ namespace Contact
 
     const std::string history_entry = "Gamma3 history";
 
-    [[maybe_unused]] const bool registered = OutputParameters::register_entry(
-      {history_entry,
-       "Time series",
-       [](ParameterHandler &prm) {
-         prm.declare_entry(
-           history_entry,
-           "true",
-           Patterns::Bool(),
-           "Write gamma3_history.csv: for every time step one row per node "
-           "of Gamma_3 (its position, stick or slip, slip rate, friction "
-           "traction and bound), the data of a space-time diagram of the "
-           "slip front (doc/plot_run.py).");
-       },
-       [](ParameterHandler &prm, const Parameters &) -> std::any {
-         return prm.get_bool(history_entry);
-       }});
+    const PartEntries own_entries{
+      "Output",
+      "Time series",
+      history_entry,
+      [](ParameterHandler &prm) {
+        prm.declare_entry(
+          history_entry,
+          "true",
+          Patterns::Bool(),
+          "Write gamma3_history.csv: for every time step one row per node "
+          "of Gamma_3 (its position, stick or slip, slip rate, friction "
+          "traction and bound), the data of a space-time diagram of the "
+          "slip front (doc/plot_run.py).");
+      },
+      [](ParameterHandler &prm, const Parameters &) -> std::any {
+        return prm.get_bool(history_entry);
+      }};
   } // namespace
 
 
@@ -62,7 +63,7 @@ namespace Contact
   template <int dim>
   void Gamma3History<dim>::start(const bool resumed)
   {
-    if (!this->parameters().output.template entry<bool>(history_entry) ||
+    if (!this->parameters().template part<bool>("gamma3 history") ||
         Utilities::MPI::this_mpi_process(this->mpi_communicator()) != 0)
       return;
     file.open(this->parameters().output.directory + "/gamma3_history.csv",
@@ -117,6 +118,7 @@ namespace Contact
 
   namespace
   {
-    const PostprocessorRegistration<Gamma3History> registration(60);
+    const PostprocessorRegistration<Gamma3History>
+      registration("gamma3 history", 60, own_entries);
   }
 } // namespace Contact

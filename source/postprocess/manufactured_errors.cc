@@ -131,6 +131,7 @@ namespace Contact
 
   namespace
   {
-    const PostprocessorRegistration<ManufacturedErrors> registration(50);
+    const PostprocessorRegistration<ManufacturedErrors>
+      registration("manufactured errors", 50);
   }
 } // namespace Contact

@@ -223,6 +223,6 @@ namespace Contact
 
   namespace
   {
-    const PostprocessorRegistration<Probes> registration(40);
+    const PostprocessorRegistration<Probes> registration("probes", 40);
   }
 } // namespace Contact

@@ -203,6 +203,6 @@ namespace Contact
 
   namespace
   {
-    const PostprocessorRegistration<SelfChecks> registration(30);
+    const PostprocessorRegistration<SelfChecks> registration("self-checks", 30);
   }
 } // namespace Contact

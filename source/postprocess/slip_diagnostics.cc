@@ -213,6 +213,7 @@ namespace Contact
 
   namespace
   {
-    const PostprocessorRegistration<SlipDiagnostics> registration(20);
+    const PostprocessorRegistration<SlipDiagnostics>
+      registration("slip diagnostics", 20);
   }
 } // namespace Contact

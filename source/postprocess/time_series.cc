@@ -18,18 +18,19 @@ namespace Contact
 
     const std::string series_entry = "Time series";
 
-    [[maybe_unused]] const bool registered = OutputParameters::register_entry(
-      {series_entry,
-       "VTU interval",
-       [](ParameterHandler &prm) {
-         prm.declare_entry(series_entry,
-                           "true",
-                           Patterns::Bool(),
-                           "Write time_series.csv, one row per time step.");
-       },
-       [](ParameterHandler &prm, const Parameters &) -> std::any {
-         return prm.get_bool(series_entry);
-       }});
+    const PartEntries own_entries{
+      "Output",
+      "VTU interval",
+      series_entry,
+      [](ParameterHandler &prm) {
+        prm.declare_entry(series_entry,
+                          "true",
+                          Patterns::Bool(),
+                          "Write time_series.csv, one row per time step.");
+      },
+      [](ParameterHandler &prm, const Parameters &) -> std::any {
+        return prm.get_bool(series_entry);
+      }};
   } // namespace
 
 
@@ -43,7 +44,7 @@ namespace Contact
                     const StepEnd         end) override
     {
       if (end == StepEnd::whole_step &&
-          this->parameters().output.template entry<bool>(series_entry))
+          this->parameters().template part<bool>("time series"))
         write_row(columns(), statistics);
     }
 
@@ -81,7 +82,7 @@ namespace Contact
   template <int dim>
   void TimeSeries<dim>::start(const bool resumed)
   {
-    if (!this->parameters().output.template entry<bool>(series_entry))
+    if (!this->parameters().template part<bool>("time series"))
       return;
     const TimeSeriesRow row = columns();
     if (Utilities::MPI::this_mpi_process(this->mpi_communicator()) != 0)
@@ -142,6 +143,7 @@ namespace Contact
 
   namespace
   {
-    const PostprocessorRegistration<TimeSeries> registration(80);
+    const PostprocessorRegistration<TimeSeries>
+      registration("time series", 80, own_entries);
   }
 } // namespace Contact

@@ -43,33 +43,34 @@ namespace Contact
 
     const std::string interval_entry = "VTU interval";
 
-    [[maybe_unused]] const bool registered = OutputParameters::register_entry(
-      {interval_entry,
-       "Output directory",
-       [](ParameterHandler &prm) {
-         prm.declare_entry(interval_entry,
-                           "8",
-                           Patterns::Integer(0),
-                           "Write a VTU file every this many steps, at the "
-                           "initial and final time and at the step nearest "
-                           "to each of the Report times; 0 writes none.");
-       },
-       // A VTU file per step of a long run fills a disk without a word.
-       [](ParameterHandler &prm, const Parameters &parameters) -> std::any {
-         const unsigned int interval      = prm.get_integer(interval_entry);
-         const unsigned int n_steps       = parameters.time.n_steps();
-         const unsigned int max_vtu_files = 10000;
-         check_entry(interval == 0 || n_steps / interval <= max_vtu_files,
-                     "Output/" + interval_entry,
-                     interval,
-                     "0 (none) or at least N / " +
-                       std::to_string(max_vtu_files) + " = " +
-                       std::to_string(n_steps / max_vtu_files + 1) +
-                       " for the N = " + std::to_string(n_steps) +
-                       " steps of this run (at most " +
-                       std::to_string(max_vtu_files) + " VTU files)");
-         return interval;
-       }});
+    const PartEntries own_entries{
+      "Output",
+      "Output directory",
+      interval_entry,
+      [](ParameterHandler &prm) {
+        prm.declare_entry(interval_entry,
+                          "8",
+                          Patterns::Integer(0),
+                          "Write a VTU file every this many steps, at the "
+                          "initial and final time and at the step nearest "
+                          "to each of the Report times; 0 writes none.");
+      },
+      // A VTU file per step of a long run fills a disk without a word.
+      [](ParameterHandler &prm, const Parameters &parameters) -> std::any {
+        const unsigned int interval      = prm.get_integer(interval_entry);
+        const unsigned int n_steps       = parameters.time.n_steps();
+        const unsigned int max_vtu_files = 10000;
+        check_entry(interval == 0 || n_steps / interval <= max_vtu_files,
+                    "Output/" + interval_entry,
+                    interval,
+                    "0 (none) or at least N / " +
+                      std::to_string(max_vtu_files) + " = " +
+                      std::to_string(n_steps / max_vtu_files + 1) +
+                      " for the N = " + std::to_string(n_steps) +
+                      " steps of this run (at most " +
+                      std::to_string(max_vtu_files) + " VTU files)");
+        return interval;
+      }};
 
     // The value at each hanging node that the continuity of a field asks
     // for, from the nodes it follows: the fields of Gamma_3 are set at the
@@ -211,8 +212,7 @@ namespace Contact
         drop_missing_records();
         write_pvd();
       }
-    else if (this->parameters().output.template entry<unsigned int>(
-               interval_entry) > 0)
+    else if (this->parameters().template part<unsigned int>("VTU output") > 0)
       write_vtu();
   }
 
@@ -227,7 +227,7 @@ namespace Contact
     if (end != StepEnd::whole_step)
       return;
     const unsigned int interval =
-      this->parameters().output.template entry<unsigned int>(interval_entry);
+      this->parameters().template part<unsigned int>("VTU output");
     const unsigned int step = this->state().step_number;
     const bool         last = (step == this->n_time_steps());
     const bool         reported =
@@ -595,6 +595,7 @@ namespace Contact
 
   namespace
   {
-    const PostprocessorRegistration<VtuOutput> registration(70);
+    const PostprocessorRegistration<VtuOutput>
+      registration("VTU output", 70, own_entries);
   }
 } // namespace Contact
