@@ -130,14 +130,17 @@ namespace Contact
   };
 
 
-  /** The wall times of a run: of the whole run, and of the steps' first
-   *  solves with K (or substitutions with its factor) summed over the
-   *  steps computed by this process's run (not those before a resumed
-   *  checkpoint). */
-  struct RunTimes
+  /** What a run keeps of itself besides the problem: its wall times (of
+   *  the whole run, and of the steps' first solves with K, or
+   *  substitutions with its factor, summed over the steps computed by this
+   *  process's run, not those before a resumed checkpoint), and the lock
+   *  on its output directory (its file descriptor, closed with the last
+   *  copy), held by the first process while the run lives. */
+  struct RunRecord
   {
-    Timer  run;
-    double substitution = 0;
+    Timer                      run;
+    double                     substitution = 0;
+    std::shared_ptr<const int> output_directory_lock;
   };
 
 
@@ -343,12 +346,9 @@ namespace Contact
     // setup.cc).
     std::unique_ptr<FrictionSolver<dim>> friction_solver;
 
-    // The run's wall times ('Output/Print timings').
-    RunTimes run_times;
-
-    // The lock on the output directory (its file descriptor, closed with
-    // the last copy), held by the first process while the run lives.
-    std::shared_ptr<const int> output_directory_lock;
+    // The run's wall times ('Output/Print timings') and the lock on its
+    // output directory (contact_problem.cc).
+    RunRecord run_record;
 
     // Checkpoint and restart ('Output/Checkpoint interval', --resume;
     // checkpoint.cc) of the members above and of the postprocessors.

@@ -201,7 +201,7 @@ namespace Contact
     // (`steps`: the steps this process's run computed).
     template <int dim>
     void print_timings(const unsigned int         steps,
-                       const RunTimes            &run_times,
+                       const RunRecord           &run_record,
                        const FrictionSolver<dim> &friction_solver,
                        const Factorization       &factorization,
                        const TimerOutput         &computing_timer,
@@ -209,11 +209,11 @@ namespace Contact
     {
       const MPI_Comm communicator = friction_solver.boundary().mpi_communicator;
       pcout << "Wall time: " << std::setprecision(4)
-            << run_times.run.wall_time() << " s" << std::endl;
+            << run_record.run.wall_time() << " s" << std::endl;
       const double step_time = computing_timer.get_summary_data(
                                  TimerOutput::total_wall_time)["Time steps"] /
                                std::max(steps, 1u);
-      const double substitution = run_times.substitution / std::max(steps, 1u);
+      const double substitution = run_record.substitution / std::max(steps, 1u);
       if (!friction_solver.law().is_frictionless())
         pcout << "Contact solver: " << friction_solver.description()
               << std::endl;
@@ -413,11 +413,12 @@ namespace Contact
   template <int dim>
   RunSummary ContactProblem<dim>::run()
   {
-    run_times.run.restart();
-    loads                 = create_loads(parameters, space, computing_timer);
-    output_directory_lock = lock_output_directory(parameters.output.directory,
-                                                  space.mpi_communicator);
-    const bool resumed    = parameters.output.resume;
+    run_record.run.restart();
+    loads = create_loads(parameters, space, computing_timer);
+    run_record.output_directory_lock =
+      lock_output_directory(parameters.output.directory,
+                            space.mpi_communicator);
+    const bool resumed = parameters.output.resume;
     if (resumed)
       checkpoint.restore_mesh_plan();
     make_grid();
@@ -464,7 +465,7 @@ namespace Contact
       postprocessor->finish(summary);
     if (parameters.output.print_timings)
       print_timings(state.step_number - first_step,
-                    run_times,
+                    run_record,
                     *friction_solver,
                     *matrices.factorization,
                     computing_timer,
@@ -486,7 +487,7 @@ namespace Contact
     summary.time_step           = state.time_step;
     summary.n_steps             = parameters.time.n_steps();
     summary.n_dofs              = space.dof_handler.n_dofs();
-    summary.wall_time           = run_times.run.wall_time();
+    summary.wall_time           = run_record.run.wall_time();
     summary.displacement_V_norm = strain_norm(state.displacement);
     return summary;
   }

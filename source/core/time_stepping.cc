@@ -124,7 +124,7 @@ namespace Contact
                                         state.velocity,
                                         {state.step_number, state.time, k});
           statistics.cg_iterations = factor.iterations() - cg_before;
-          run_times.substitution += friction_solver->substitution_seconds();
+          run_record.substitution += friction_solver->substitution_seconds();
           state.displacement = state.old_displacement;
           state.displacement.add(k, state.velocity);
         }
