@@ -1,16 +1,14 @@
 /**
  * The friction laws mu(s) of the slip rate s = |w_tau| in the slip threshold
- * mu(s) S of (3.6), and the one registry that knows them.
+ * mu(s) S of (3.6), a kind of part of the program (base/parts.h).
  *
  * A law is one file in source/base/friction_laws/: a class derived from
  * FrictionLaws::Interface that declares, reads and checks its own entries of
- * the subsection Friction, and a function that returns its Registration. The
- * registry (source/base/friction_laws/registry.cc) lists these functions in
- * the order in which the Selection 'Friction law' names the laws; the
- * Selection, its help text and the parser are made from that one list, so
- * that they cannot differ, and a name that is not registered is an error
- * that names the entry. doc/tutorial.md ("Adding a friction law") lists the
- * files to touch.
+ * the subsection Friction, and the one statement that registers it
+ * (LawRegistration). The Selection 'Friction law', its help text and the
+ * parser are made of the registered laws, so that they cannot differ, and a
+ * name that is not registered is an error that names the entry.
+ * doc/tutorial.md ("Adding a friction law"): one file and one test.
  *
  * The laws live in base, not in gamma3, because the parameters are parsed
  * here and a layer uses only the layers below it; the friction solver sees
@@ -20,6 +18,8 @@
 #define contact_friction_laws_h
 
 #include <deal.II/base/parameter_handler.h>
+
+#include <base/parts.h>
 
 #include <functional>
 #include <memory>
@@ -83,62 +83,54 @@ namespace Contact
     };
 
 
-    /** A law as the registry holds it. */
-    struct Registration
-    {
-      /** Its value of 'Friction law'. */
-      std::string name;
-      /** What 'Friction law' says about it in its help text,
-       *  e.g. "mu = a". */
-      std::string description;
-      /** Declares its entries in the subsection Friction (entered by the
-       *  caller). An entry that several laws read ('a', 'b') is declared by
-       *  each of them, with the same default, pattern and help text
-       *  (register_law() refuses a law that declares it differently). */
-      std::function<void(ParameterHandler &prm)> declare_parameters;
-      /** Reads and checks its entries there and returns the law. */
-      std::function<std::unique_ptr<const Interface>(ParameterHandler &prm)>
-        create;
-    };
+    /** The entry whose values are the names of the laws. */
+    inline const std::string law_entry = "Friction law";
 
-    /** The Registration of a law class Law with a static
-     *  declare_parameters(prm) and a constructor from prm that reads and
-     *  checks its entries. */
-    template <class Law>
-    Registration registration(const std::string &name,
-                              const std::string &description)
-    {
-      return {name,
-              description,
-              &Law::declare_parameters,
-              [](ParameterHandler &prm) -> std::unique_ptr<const Interface> {
-                return std::make_unique<const Law>(prm);
-              }};
-    }
+    /** The kind of the friction laws (base/parts.h): a law made from the
+     *  subsection Friction (entered by the caller), its entries read and
+     *  checked. The Selection 'Friction law', its help text and the parser
+     *  are made of the registered laws, by rank. */
+    using LawRegistry = PartRegistry<const Interface, ParameterHandler &>;
 
     /**
-     * Adds a law after the built-in ones, e.g. from a test, before the
-     * parameters are declared. A name that is empty, contains '|' or ','
-     * (the separators of a Selection and of its list) or is already
-     * registered is refused with an error.
+     * Refuses the law `name` if it declares with `declare` an entry that a
+     * registered law declares with another default, pattern or help text.
+     * An entry that several laws read ('a', 'b') is declared by each of
+     * them; ParameterHandler keeps the last declaration without a word, so
+     * that a law declaring it differently would change the other laws'
+     * entry.
      */
-    void register_law(const Registration &law);
+    void check_declarations_agree(
+      const std::string                             &name,
+      const std::function<void(ParameterHandler &)> &declare);
 
-    /** The registered names, in the order of the Selection. */
-    std::vector<std::string> names();
-
-    /** Declares 'Friction law': the Selection of the registered names, its
-     *  default and its help text made of the laws' descriptions. */
-    void declare_law_entry(ParameterHandler &prm);
-
-    /** Declares the entries of every registered law. */
-    void declare_parameters(ParameterHandler &prm);
-
-    /** The law registered as `name`, its entries read and checked in the
-     *  subsection Friction (entered by the caller). A name that is not
-     *  registered is an error that names the entry and the allowed names. */
-    std::unique_ptr<const Interface> create(const std::string &name,
-                                            ParameterHandler  &prm);
+    /**
+     * The registration of a law, one statement in its file:
+     *   const LawRegistration<Class> registration(name, rank, description);
+     * Class derives from Interface, with a static declare_parameters(prm)
+     * that declares its entries of the subsection Friction and a
+     * constructor from prm that reads and checks them. `rank` orders the
+     * Selection 'Friction law', `description` is what its help text says
+     * of the law (e.g. "mu = a"). Its entries follow 'Friction bound S'.
+     */
+    template <class Law>
+    struct LawRegistration
+    {
+      LawRegistration(const std::string &name,
+                      const unsigned int rank,
+                      const std::string &description)
+      {
+        check_declarations_agree(name, &Law::declare_parameters);
+        LawRegistry::add(
+          {name,
+           description,
+           rank,
+           {subsection, "Friction bound S", "", &Law::declare_parameters, {}},
+           [](ParameterHandler &prm) -> std::unique_ptr<const Interface> {
+             return std::make_unique<const Law>(prm);
+           }});
+      }
+    };
 
     /** "Friction/<entry>": how a message names an entry of a law. */
     std::string entry_path(const std::string &entry);
@@ -151,6 +143,15 @@ namespace Contact
                      const double       value,
                      const std::string &allowed);
   } // namespace FrictionLaws
+
+
+  /** The messages name a part of this kind a friction law. */
+  template <>
+  inline std::string
+  PartRegistry<const FrictionLaws::Interface, ParameterHandler &>::noun()
+  {
+    return "friction law";
+  }
 } // namespace Contact
 
 #endif

@@ -2,10 +2,10 @@
  * What the rest of the program asks of the domain without a mesh, the same
  * in 2D and 3D (GeometryBase), and the one way to get it from the
  * parameters (create_geometry()). The answers are the geometry's
- * (geometry/geometry.h): its classes derive from GeometryBase, and
- * geometry/ registers the factory that picks one (GeometryRegistration),
- * so that base/ (the checks of the parameters) asks the geometry without
- * including it.
+ * (geometry/geometry.h): its classes derive from GeometryBase, and each
+ * registers itself as a part of the kind GeometryBaseRegistry too, so that
+ * base/ (the checks of the parameters, the Selection 'Geometry/Domain')
+ * knows the geometries without including them.
  *
  * A run asks the geometry of its problem (ContactProblem::get_geometry());
  * the checks of the parameters and the drivers before a run, which have no
@@ -15,8 +15,8 @@
 #define contact_geometry_base_h
 
 #include <base/parameters.h>
+#include <base/parts.h>
 
-#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -94,25 +94,27 @@ namespace Contact
   };
 
 
+  /** The geometries as base/ knows them (base/parts.h): the Selection
+   *  'Geometry/Domain' and its help text are made of their names and
+   *  descriptions, by rank; each is made from the parameters in their
+   *  dimension, on one process. geometry/'s GeometryRegistration
+   *  registers every geometry here. */
+  using GeometryBaseRegistry =
+    PartRegistry<const GeometryBase, const Parameters &>;
+
   /** The geometry of `parameters`, in their dimension, for the answers
    *  that need no mesh. */
   std::unique_ptr<const GeometryBase>
   create_geometry(const Parameters &parameters);
 
-  /** What create_geometry() calls: the factory of geometry/. */
-  using GeometryFactory =
-    std::function<std::unique_ptr<const GeometryBase>(const Parameters &)>;
 
-  /**
-   * The registration of the factory: geometry/ registers it once, while
-   * the shared library is loaded, with a static
-   *   const GeometryRegistration registration(factory);
-   * as a postprocessor registers itself (core/postprocessor.h).
-   */
-  struct GeometryRegistration
+  /** The messages name a part of this kind a geometry. */
+  template <>
+  inline std::string
+  PartRegistry<const GeometryBase, const Parameters &>::noun()
   {
-    explicit GeometryRegistration(const GeometryFactory &factory);
-  };
+    return "geometry";
+  }
 } // namespace Contact
 
 #endif

@@ -6,8 +6,8 @@
  * and the allowed range), Parameters::parse_parameters() the checks that
  * involve entries of several subsections, and Geometry::create_mesh()
  * those that need the mesh. A Selection entry is an enum class with its
- * ChoiceTable. The entries of the box and the shell are declared and
- * parsed by those geometries (source/geometry/).
+ * ChoiceTable. The entries of one geometry alone are declared and parsed
+ * by that geometry (source/geometry/).
  */
 #ifndef contact_parameters_h
 #define contact_parameters_h
@@ -68,10 +68,6 @@ namespace Contact
     inline const std::string mesh_file         = "Geometry/Mesh file";
     inline const std::string mesh_refinements  = "Geometry/Mesh refinements";
     inline const std::string domain            = "Geometry/Domain";
-    inline const std::string inner_radius      = "Geometry/Inner radius";
-    inline const std::string outer_radius      = "Geometry/Outer radius";
-    inline const std::string shell_length      = "Geometry/Shell length";
-    inline const std::string cells_around      = "Geometry/Cells around";
     inline const std::string mapping_degree    = "Geometry/Mapping degree";
     inline const std::string refinement_points = "Geometry/Refinement points";
     inline const std::string refinement_radius = "Geometry/Refinement radius";
@@ -153,10 +149,6 @@ namespace Contact
               mesh_file,
               mesh_refinements,
               domain,
-              inner_radius,
-              outer_radius,
-              shell_length,
-              cells_around,
               mapping_degree,
               refinement_points,
               refinement_radius,
@@ -216,34 +208,21 @@ namespace Contact
   struct Parameters;
 
   /**
-   * The subsection Geometry: the entries that every geometry shares, and
-   * the fields of those of the box and the shell, which each geometry
-   * (source/geometry/) declares and parses itself.
+   * The subsection Geometry: the entries that every geometry shares. The
+   * entries of one geometry alone are its own (PartEntries, base/parts.h):
+   * it declares, parses and checks them in its file (source/geometry/).
    */
   struct GeometryParameters
   {
-    /** A gmsh .msh file; empty: the box of lower_corner, upper_corner, or
-     *  the shell. */
+    /** A gmsh .msh file; empty: the geometry of `domain`. */
     std::string  mesh_file;
     unsigned int mesh_refinements;
-    /** 'Geometry/Domain': the box, or the annulus (2D) or tube along z (3D)
-     *  between inner_radius and outer_radius around the origin. */
-    enum class Domain
-    {
-      box,
-      shell
-    };
-    Domain       domain;
-    double       inner_radius;
-    double       outer_radius;
-    double       shell_length;
-    unsigned int cells_around;
+    /** 'Geometry/Domain': the name of a registered geometry
+     *  (GeometryBaseRegistry, base/geometry_base.h), e.g. "box". */
+    std::string domain;
     /** Degree of the polynomial mapping of the cells: 2 and more follow a
      *  curved boundary (the shell's circles) between the nodes. */
-    unsigned int        mapping_degree;
-    std::vector<double> lower_corner;
-    std::vector<double> upper_corner;
-    double              cell_size;
+    unsigned int mapping_degree;
     /** Quadrilaterals/hexahedra with Q_p, or triangles/tetrahedra with
      *  P_p. */
     enum class CellShape
@@ -269,40 +248,19 @@ namespace Contact
     double              rotation_angle;
     std::vector<double> rotation_axis;
 
-    /** The names of the choices of 'Domain', 'Cell shape' and 'Mass
-     *  matrix'. */
-    static const ChoiceTable<Domain>     &domains();
+    /** The names of the choices of 'Cell shape' and 'Mass matrix'. */
     static const ChoiceTable<CellShape>  &cell_shapes();
     static const ChoiceTable<MassMatrix> &mass_matrices();
 
+    /** Declares the shared entries, and after each of them the entries of
+     *  the geometries that follow it. */
     static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm, const unsigned int dim);
-
-    /**
-     * The entries of one geometry: declare() declares them in the
-     * subsection Geometry right after the shared entry `after` (their
-     * place in the printed parameters), parse() reads them into the
-     * fields above (in the subsection, after the shared entries) and
-     * checks them. Each geometry registers its own from its file
-     * (register_entries(), while the shared library is loaded), so that
-     * the parameters declare and check no entry of a geometry; only the
-     * fields that hold their values are here.
-     */
-    struct Entries
-    {
-      std::string after;
-      void (*declare)(ParameterHandler &prm);
-      void (*parse)(ParameterHandler   &prm,
-                    GeometryParameters &geometry,
-                    const unsigned int  dim);
-    };
-    /** Adds the entries of the geometry `name`; returns true, for the
-     *  static variable of the registration. */
-    static bool register_entries(const std::string &name,
-                                 const Entries     &entries);
-
-  private:
-    static std::map<std::string, Entries> &registered_entries();
+    /** Reads the shared entries; the geometries' own entries are parsed
+     *  after them (Parameters::parse_parameters()). */
+    void parse_parameters(ParameterHandler &prm, const unsigned int dim);
+    /** The checks of the shared entries that come after the geometries'
+     *  own: what simplices do not allow. */
+    void check_simplices() const;
   };
 
   struct BoundaryParameters
@@ -360,7 +318,7 @@ namespace Contact
   struct FrictionParameters
   {
     /** The law of 'Friction law' with its own entries read and checked
-     *  (FrictionLaws::create()); copies of the parameters share it. */
+     *  (FrictionLaws::LawRegistry); copies of the parameters share it. */
     std::shared_ptr<const FrictionLaws::Interface> law;
     double                                         bound_S;
 

@@ -60,13 +60,16 @@ namespace Contact
 
   namespace Parts
   {
-    /** Adds the entries of the part `part`, once: a part registered for
-     *  each dimension declares its entries once. */
-    void add_entries(const std::string &part, const PartEntries &entries);
+    /** Adds the entries of the part `part` of rank `rank`, once: a part
+     *  registered for each dimension declares its entries once. */
+    void add_entries(const std::string &part,
+                     const unsigned int rank,
+                     const PartEntries &entries);
 
     /** Declares the entries of every part that follow the entry or
-     *  subsection `after` of `subsection` (entered by the caller), and
-     *  after each of them those that follow it. */
+     *  subsection `after` of `subsection` (entered by the caller), in the
+     *  order of their ranks, and after each of them those that follow
+     *  it. */
     void declare_entries_after(ParameterHandler  &prm,
                                const std::string &subsection,
                                const std::string &after);
@@ -104,14 +107,20 @@ namespace Contact
       std::function<std::unique_ptr<Product>(Arguments...)> create;
     };
 
+    /** What the messages call a part of this kind: "part", unless the
+     *  kind names itself by specialising this function (e.g. "friction
+     *  law", base/friction_laws.h). */
+    static std::string noun();
+
     /** Adds a part; a name already registered for this kind is an error.
      *  Returns true, for the static variable of the registration. */
     static bool add(const Part &part)
     {
       Parts::check_name(part.name);
       AssertThrow(!is_registered(part.name),
-                  ExcMessage("The part '" + part.name +
-                             "' is registered twice for its kind."));
+                  ExcMessage("The " + noun() + " '" + part.name +
+                             "' is registered twice; registered are " +
+                             quoted_names() + "."));
       auto &all = registered();
       all.insert(std::upper_bound(all.begin(),
                                   all.end(),
@@ -121,7 +130,7 @@ namespace Contact
                                   }),
                  part);
       if (part.entries.declare)
-        Parts::add_entries(part.name, part.entries);
+        Parts::add_entries(part.name, part.rank, part.entries);
       return true;
     }
 
@@ -167,17 +176,23 @@ namespace Contact
       for (const Part &part : registered())
         if (part.name == name)
           return part.create(std::forward<Arguments>(arguments)...);
-      std::string allowed;
-      for (const Part &part : registered())
-        allowed += (allowed.empty() ? "'" : ", '") + part.name + "'";
       AssertThrow(false,
                   ExcMessage("Entry '" + entry + "' = '" + name +
-                             "' is not a part of this program; allowed: " +
-                             allowed + "."));
+                             "' is not a registered " + noun() +
+                             "; allowed: " + quoted_names() + "."));
       return nullptr;
     }
 
   private:
+    /** "'a', 'b', 'c'": the names as a message lists them. */
+    static std::string quoted_names()
+    {
+      std::string names;
+      for (const Part &part : registered())
+        names += (names.empty() ? "'" : ", '") + part.name + "'";
+      return names;
+    }
+
     // A function-local static, so that the list exists before any
     // registration whatever the order in which files are initialised.
     static std::vector<Part> &registered()
@@ -186,6 +201,13 @@ namespace Contact
       return all;
     }
   };
+
+
+  template <class Product, class... Arguments>
+  std::string PartRegistry<Product, Arguments...>::noun()
+  {
+    return "part";
+  }
 } // namespace Contact
 
 #endif

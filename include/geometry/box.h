@@ -2,21 +2,35 @@
  * The box of 'Lower corner' and 'Upper corner' divided into cells of the
  * 'Cell size' (the paper's domain), of hypercubes or simplices; its
  * faces carry the boundary ids 0 (x = x0), 1 (x = x1), 2 (y = y0),
- * 3 (y = y1), 4, 5 (z). box.cc declares and parses those three entries.
- * Its h is the 'Cell size': the entry that a scene variant halves.
+ * 3 (y = y1), 4, 5 (z). box.cc declares and parses those three entries
+ * (BoxParameters) and registers the box as the geometry 'box' of
+ * 'Geometry/Domain'. Its h is the 'Cell size': the entry that a scene
+ * variant halves.
  */
 #ifndef contact_box_h
 #define contact_box_h
 
 #include <geometry/geometry.h>
 
+#include <vector>
+
 namespace Contact
 {
+  /** The entries of the box, as box.cc parses them. */
+  struct BoxParameters
+  {
+    std::vector<double> lower_corner;
+    std::vector<double> upper_corner;
+    /** The edge length h of the cells. */
+    double cell_size;
+  };
+
+
   template <int dim>
   class Box : public Geometry<dim>
   {
   public:
-    using Geometry<dim>::Geometry;
+    Box(const Parameters &run_parameters, const MPI_Comm mpi_communicator);
 
     unsigned int create_coarse_mesh(Triangulation<dim> &mesh) const override;
 
@@ -50,6 +64,9 @@ namespace Contact
     /** The number of cells along the edge `d` with cells of `size`:
      *  round(edge / size), at least 1. */
     long n_cells(const unsigned int d, const double size) const;
+
+    /** A copy: the geometry may outlive the parameters. */
+    const BoxParameters box;
   };
 } // namespace Contact
 

@@ -6,19 +6,17 @@
  * turn into itself, what h is and how it is halved, whether a point lies
  * in the body. Each geometry (the box, the shell, a gmsh mesh file) is one
  * class in its own file, which also declares, parses and checks the
- * entries of the subsection Geometry that describe it alone
- * (GeometryParameters::register_entries()). create_geometry() picks one by
- * 'Geometry/Domain' and 'Geometry/Mesh file'; geometry.cc registers it as
- * the factory of base/'s create_geometry(parameters) too. No code outside
- * source/geometry/ asks which geometry it is.
+ * entries of the subsection Geometry that describe it alone (PartEntries,
+ * base/parts.h). The box and the shell are parts of the program
+ * (GeometryRegistration): 'Geometry/Domain' is the Selection of their
+ * names; a 'Geometry/Mesh file' replaces the Domain (create_geometry()).
+ * No code outside source/geometry/ asks which geometry it is.
  *
- * A new geometry (doc/tutorial.md, "Adding a geometry"): its class (a
- * header and a .cc file here, with its entries; CMakeLists.txt compiles
- * every .cc file of source/geometry/), which answers the pure virtual
- * functions of GeometryBase and create_coarse_mesh() below, its enumerator and
- * name in GeometryParameters::Domain and GeometryParameters::domains(), its
- * line in create_geometry(), and, if it has entries of its own, their fields in
- * GeometryParameters.
+ * A new geometry (doc/tutorial.md, "Adding a geometry") is one file: its
+ * class, which answers the pure virtual functions of GeometryBase and
+ * create_coarse_mesh() below, its entries if it has any, and the one
+ * statement that registers it; tests/verification/second_geometry.cc is
+ * one, defined in the test alone.
  */
 #ifndef contact_geometry_h
 #define contact_geometry_h
@@ -29,8 +27,10 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <base/dimensions.h>
 #include <base/geometry_base.h>
 #include <base/parameters.h>
+#include <base/parts.h>
 
 #include <memory>
 #include <string>
@@ -95,6 +95,57 @@ namespace Contact
   template <int dim>
   std::unique_ptr<const Geometry<dim>>
   create_geometry(const Parameters &parameters, const MPI_Comm communicator);
+
+  /** The same in the dimension of `parameters`, on one process (it builds
+   *  no mesh): what base/'s create_geometry(parameters) makes for the
+   *  answers without a mesh. */
+  std::unique_ptr<const GeometryBase>
+  create_geometry_on_one_process(const Parameters &parameters);
+
+
+  /** The kind of the geometries of dimension dim (base/parts.h): made
+   *  from the parameters of a run on its communicator. */
+  template <int dim>
+  using GeometryRegistry =
+    PartRegistry<const Geometry<dim>, const Parameters &, MPI_Comm>;
+
+  /**
+   * The registration of a geometry, one statement in its file:
+   *   const GeometryRegistration<Class> registration(name, rank,
+   *                                                  description, entries);
+   * Class<dim> derives from Geometry<dim> and is made from (parameters,
+   * communicator); it reads its own entries as
+   * parameters.part<Value>(name). `name` is its value of
+   * 'Geometry/Domain', `rank` its place in the Selection, `description`
+   * what the entry's help text says of it; `entries` its own entries of
+   * the subsection Geometry, if it has any. It is registered in every
+   * compiled dimension, and as a geometry of base/ (GeometryBaseRegistry),
+   * whose answers without a mesh are those of create_geometry().
+   */
+  template <template <int> class Class>
+  struct GeometryRegistration
+  {
+    GeometryRegistration(const std::string &name,
+                         const unsigned int rank,
+                         const std::string &description,
+                         const PartEntries &entries = {})
+    {
+#define INSTANTIATE(dim)                                                       \
+  GeometryRegistry<dim>::add(                                                  \
+    {name,                                                                     \
+     description,                                                              \
+     rank,                                                                     \
+     entries,                                                                  \
+     [](const Parameters &parameters,                                          \
+        const MPI_Comm communicator) -> std::unique_ptr<const Geometry<dim>> { \
+       return std::make_unique<const Class<dim>>(parameters, communicator);    \
+     }});
+      CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+      GeometryBaseRegistry::add(
+        {name, description, rank, {}, &create_geometry_on_one_process});
+    }
+  };
 } // namespace Contact
 
 #endif

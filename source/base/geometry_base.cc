@@ -1,5 +1,5 @@
-/* What a geometry answers without a mesh, by default, and the factory
-   that geometry/ registers (include/base/geometry_base.h). */
+/* What a geometry answers without a mesh, by default, and the geometry of
+   the parameters (include/base/geometry_base.h). */
 
 #include <deal.II/base/exceptions.h>
 
@@ -64,31 +64,13 @@ namespace Contact
   }
 
 
-  // @sect3{The factory}
-
-  namespace
-  {
-    // A function-local static: the registration runs while the library is
-    // loaded, in an order that is not defined.
-    GeometryFactory &registered_factory()
-    {
-      static GeometryFactory factory;
-      return factory;
-    }
-  } // namespace
-
-
-  GeometryRegistration::GeometryRegistration(const GeometryFactory &factory)
-  {
-    registered_factory() = factory;
-  }
-
+  // @sect3{The geometry of the parameters}
 
   std::unique_ptr<const GeometryBase>
   create_geometry(const Parameters &parameters)
   {
-    AssertThrow(registered_factory(),
-                ExcInternalError("No geometry is registered."));
-    return registered_factory()(parameters);
+    return GeometryBaseRegistry::create(Entry::domain,
+                                        parameters.geometry.domain,
+                                        parameters);
   }
 } // namespace Contact

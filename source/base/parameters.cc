@@ -343,6 +343,10 @@ namespace Contact
                            ", or a build configured with "
                            "-DCONTACT_DIMENSIONS=\"2;3\" (the default)."));
     geometry.parse_parameters(prm, dimension);
+    prm.enter_subsection("Geometry");
+    part_values.merge(Parts::parse_entries(prm, "Geometry", *this));
+    prm.leave_subsection();
+    geometry.check_simplices();
     boundary.parse_parameters(prm);
     material.parse_parameters(prm);
     loads.parse_parameters(prm);

@@ -3,6 +3,7 @@
 
 #include <base/parts.h>
 
+#include <algorithm>
 #include <utility>
 
 namespace Contact
@@ -13,35 +14,56 @@ namespace Contact
     {
       // A function-local static: parts register while the shared library
       // is loaded, in an order that the files' initialisation decides.
-      std::vector<std::pair<std::string, PartEntries>> &registered()
+      struct Added
       {
-        static std::vector<std::pair<std::string, PartEntries>> entries;
+        std::string  part;
+        unsigned int rank;
+        PartEntries  entries;
+      };
+
+      std::vector<Added> &registered()
+      {
+        static std::vector<Added> entries;
         return entries;
       }
     } // namespace
 
 
-    void add_entries(const std::string &part, const PartEntries &entries)
+    void add_entries(const std::string &part,
+                     const unsigned int rank,
+                     const PartEntries &entries)
     {
-      for (const auto &[name, added] : registered())
-        if (name == part && added.subsection == entries.subsection)
+      for (const Added &added : registered())
+        if (added.part == part &&
+            added.entries.subsection == entries.subsection)
           return;
-      registered().emplace_back(part, entries);
+      registered().push_back({part, rank, entries});
     }
 
 
-    // A part may place its entries after another part's last one.
+    // A part may place its entries after another part's last one. Parts
+    // that follow the same entry are declared in the order of their ranks,
+    // not in the order in which the files of the library registered them.
     void declare_entries_after(ParameterHandler  &prm,
                                const std::string &subsection,
                                const std::string &after)
     {
-      for (const auto &[part, entries] : registered())
-        if (entries.subsection == subsection && entries.after == after)
-          {
-            entries.declare(prm);
-            if (!entries.last.empty())
-              declare_entries_after(prm, subsection, entries.last);
-          }
+      std::vector<Added> following;
+      for (const Added &added : registered())
+        if (added.entries.subsection == subsection &&
+            added.entries.after == after)
+          following.push_back(added);
+      std::stable_sort(following.begin(),
+                       following.end(),
+                       [](const Added &a, const Added &b) {
+                         return a.rank < b.rank;
+                       });
+      for (const Added &added : following)
+        {
+          added.entries.declare(prm);
+          if (!added.entries.last.empty())
+            declare_entries_after(prm, subsection, added.entries.last);
+        }
     }
 
 
@@ -50,9 +72,9 @@ namespace Contact
                                                   const Parameters  &parameters)
     {
       std::map<std::string, std::any> values;
-      for (const auto &[part, entries] : registered())
-        if (entries.subsection == subsection && entries.parse)
-          values[part] = entries.parse(prm, parameters);
+      for (const Added &added : registered())
+        if (added.entries.subsection == subsection && added.entries.parse)
+          values[added.part] = added.entries.parse(prm, parameters);
       return values;
     }
 

@@ -5,6 +5,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <base/geometry_base.h>
 #include <base/parameters.h>
 
 #include <algorithm>
@@ -30,14 +31,6 @@ namespace Contact
 
   // @sect3{Geometry}
 
-  const ChoiceTable<GeometryParameters::Domain> &GeometryParameters::domains()
-  {
-    static const ChoiceTable<Domain> table(Entry::domain,
-                                           {{"box", Domain::box},
-                                            {"shell", Domain::shell}});
-    return table;
-  }
-
   const ChoiceTable<GeometryParameters::CellShape> &
   GeometryParameters::cell_shapes()
   {
@@ -54,22 +47,6 @@ namespace Contact
       "Geometry/Mass matrix",
       {{"consistent", MassMatrix::consistent}, {"lumped", MassMatrix::lumped}});
     return table;
-  }
-
-  // A function-local static: the geometries register their entries while
-  // the library is loaded, in an order that is not defined.
-  std::map<std::string, GeometryParameters::Entries> &
-  GeometryParameters::registered_entries()
-  {
-    static std::map<std::string, Entries> entries;
-    return entries;
-  }
-
-  bool GeometryParameters::register_entries(const std::string &name,
-                                            const Entries     &entries)
-  {
-    registered_entries()[name] = entries;
-    return true;
   }
 
   namespace
@@ -98,16 +75,14 @@ namespace Contact
                     Patterns::Integer(0, 10),
                     "Global refinements of the mesh read from the Mesh "
                     "file, or of the shell's coarse mesh.");
-      declare_entry(
-        "Domain",
-        GeometryParameters::domains().name(GeometryParameters::Domain::box),
-        GeometryParameters::domains().pattern(),
-        "box: Lower and Upper corner, divided by the Cell size; shell: the "
-        "annulus (2D) or the tube along z from z = 0 to the Shell length "
-        "(3D) between the Inner and the Outer radius around the origin, "
-        "Cells around the circle, refined Mesh refinements times along "
-        "the circles (boundary ids 0 inner, 1 outer, 2 z = 0, 3 z = "
-        "length). A Mesh file replaces both.");
+      // The registered geometries (source/geometry/), the box first.
+      const unsigned int n_geometries = GeometryBaseRegistry::parts().size();
+      declare_entry("Domain",
+                    "box",
+                    Patterns::Selection(GeometryBaseRegistry::selection()),
+                    GeometryBaseRegistry::help_text() + ". A Mesh file " +
+                      (n_geometries == 2 ? "replaces both." :
+                                           "replaces each of them."));
       declare_entry(
         "Mapping degree",
         "1",
@@ -181,8 +156,8 @@ namespace Contact
   } // namespace
 
 
-  // The entries of every geometry; after each, those of the geometries
-  // that follow it (source/geometry/).
+  // The entries that every geometry shares; after each, those of the
+  // geometries that follow it (source/geometry/).
   void GeometryParameters::declare_parameters(ParameterHandler &prm)
   {
     const EntryDeclarer declare_entry =
@@ -191,9 +166,7 @@ namespace Contact
              const Patterns::PatternBase &pattern,
              const std::string           &help) {
         prm.declare_entry(name, value, pattern, help);
-        for (const auto &[geometry, entries] : registered_entries())
-          if (entries.after == name)
-            entries.declare(prm);
+        Parts::declare_entries_after(prm, "Geometry", name);
       };
     prm.enter_subsection("Geometry");
     {
@@ -210,7 +183,7 @@ namespace Contact
     {
       mesh_file          = Utilities::trim(prm.get("Mesh file"));
       mesh_refinements   = prm.get_integer("Mesh refinements");
-      domain             = domains().parse(prm.get("Domain"));
+      domain             = prm.get("Domain");
       mapping_degree     = prm.get_integer("Mapping degree");
       cell_shape         = cell_shapes().parse(prm.get("Cell shape"));
       fe_degree          = prm.get_integer("Finite element degree");
@@ -228,11 +201,12 @@ namespace Contact
                   "Geometry/Rotation axis",
                   0.,
                   "a nonzero vector");
-      for (const auto &[name, entries] : registered_entries())
-        entries.parse(prm, *this, dim);
     }
     prm.leave_subsection();
+  }
 
+  void GeometryParameters::check_simplices() const
+  {
     const bool simplices = (cell_shape == CellShape::simplex);
     // FE_SimplexP of deal.II 9.4 has degrees 1 and 2 only.
     check_entry(!simplices || fe_degree <= 2,
@@ -470,20 +444,25 @@ namespace Contact
 
   void FrictionParameters::declare_parameters(ParameterHandler &prm)
   {
+    using FrictionLaws::LawRegistry;
     prm.enter_subsection(FrictionLaws::subsection);
     {
-      // 'Friction law' (its names, default and help text) and the entries of
-      // each law come from the registry of the laws
-      // (source/base/friction_laws/). The laws' entries follow S, so that the
-      // used parameters of a run, printed in the order of declaration, list
-      // S next to the law.
-      FrictionLaws::declare_law_entry(prm);
+      // 'Friction law' (its names and help text) and the entries of each
+      // law come from the registered laws (source/base/friction_laws/). The
+      // laws' entries follow S, so that the used parameters of a run,
+      // printed in the order of declaration, list S next to the law.
+      prm.declare_entry(FrictionLaws::law_entry,
+                        "slip rate weakening",
+                        Patterns::Selection(LawRegistry::selection()),
+                        LawRegistry::help_text() + ".");
       prm.declare_entry("Friction bound S",
                         "100",
                         Patterns::Double(0),
                         "S >= 0 [N/m^(dim-1)]: the slip threshold is mu S "
                         "(3.6).");
-      FrictionLaws::declare_parameters(prm);
+      Parts::declare_entries_after(prm,
+                                   FrictionLaws::subsection,
+                                   "Friction bound S");
     }
     prm.leave_subsection();
   }
@@ -493,7 +472,10 @@ namespace Contact
     prm.enter_subsection(FrictionLaws::subsection);
     {
       bound_S = prm.get_double("Friction bound S");
-      law     = FrictionLaws::create(prm.get("Friction law"), prm);
+      law     = FrictionLaws::LawRegistry::create(FrictionLaws::entry_path(
+                                                FrictionLaws::law_entry),
+                                              prm.get(FrictionLaws::law_entry),
+                                              prm);
     }
     prm.leave_subsection();
   }

@@ -8,6 +8,7 @@
 #include <geometry/box.h>
 
 #include <algorithm>
+#include <any>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -39,19 +40,19 @@ namespace Contact
 
     // The corners and the cell size are checked where they describe the
     // domain, the box.
-    void parse_entries(ParameterHandler   &prm,
-                       GeometryParameters &geometry,
-                       const unsigned int  dim)
+    std::any parse_entries(ParameterHandler &prm, const Parameters &parameters)
     {
-      geometry.lower_corner = Utilities::string_to_double(
+      BoxParameters box;
+      box.lower_corner = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Lower corner")));
-      geometry.upper_corner = Utilities::string_to_double(
+      box.upper_corner = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Upper corner")));
-      geometry.cell_size = prm.get_double("Cell size");
-      if (!geometry.mesh_file.empty() ||
-          geometry.domain != GeometryParameters::Domain::box)
-        return;
-      const auto &lower = geometry.lower_corner, &upper = geometry.upper_corner;
+      box.cell_size             = prm.get_double("Cell size");
+      const unsigned int dim    = parameters.dimension;
+      const auto        &shared = parameters.geometry;
+      if (!shared.mesh_file.empty() || shared.domain != "box")
+        return box;
+      const auto &lower = box.lower_corner, &upper = box.upper_corner;
       check_entry(lower.size() == dim,
                   Entry::lower_corner,
                   lower.size(),
@@ -70,24 +71,35 @@ namespace Contact
                         " in every coordinate");
           shortest_edge = std::min(shortest_edge, upper[d] - lower[d]);
         }
-      check_entry(geometry.cell_size > 0,
+      check_entry(box.cell_size > 0, Entry::cell_size, box.cell_size, "h > 0");
+      check_entry(box.cell_size <= shortest_edge,
                   Entry::cell_size,
-                  geometry.cell_size,
-                  "h > 0");
-      check_entry(geometry.cell_size <= shortest_edge,
-                  Entry::cell_size,
-                  geometry.cell_size,
+                  box.cell_size,
                   "h at most the shortest edge of the box, " +
                     Utilities::to_string(shortest_edge));
+      return box;
     }
 
-    // Declared after 'Mapping degree': their place in doc/parameters.prm.
-    [[maybe_unused]] const bool registered =
-      GeometryParameters::register_entries("box",
-                                           {"Mapping degree",
-                                            declare_entries,
-                                            parse_entries});
+    // The core's geometry, first in 'Domain'. Its entries are declared
+    // after 'Mapping degree': their place in doc/parameters.prm.
+    const GeometryRegistration<Box>
+      registration("box",
+                   10,
+                   "Lower and Upper corner, divided by the Cell size",
+                   {"Geometry",
+                    "Mapping degree",
+                    "Cell size",
+                    declare_entries,
+                    parse_entries});
   } // namespace
+
+
+  template <int dim>
+  Box<dim>::Box(const Parameters &run_parameters,
+                const MPI_Comm    mpi_communicator)
+    : Geometry<dim>(run_parameters, mpi_communicator)
+    , box(run_parameters.part<BoxParameters>("box"))
+  {}
 
 
   // @sect4{Box::create_coarse_mesh}
@@ -113,10 +125,10 @@ namespace Contact
     double              cells = 1, unknowns = dim;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        parts[d] = std::max(1.,
-                            std::round((geometry.upper_corner[d] -
-                                        geometry.lower_corner[d]) /
-                                       geometry.cell_size));
+        parts[d] =
+          std::max(1.,
+                   std::round((box.upper_corner[d] - box.lower_corner[d]) /
+                              box.cell_size));
         cells *= parts[d];
         unknowns *= parts[d] * geometry.fe_degree + 1;
       }
@@ -125,8 +137,8 @@ namespace Contact
     std::vector<unsigned int> subdivisions(parts.begin(), parts.end());
     for (unsigned int d = 0; d < dim; ++d)
       {
-        lower[d] = geometry.lower_corner[d];
-        upper[d] = geometry.upper_corner[d];
+        lower[d] = box.lower_corner[d];
+        upper[d] = box.upper_corner[d];
       }
     unsigned int n_refinements = 0;
     while (!(simplices && dim == 3) &&
@@ -168,8 +180,7 @@ namespace Contact
   template <int dim>
   long Box<dim>::n_cells(const unsigned int d, const double size) const
   {
-    const auto  &geometry = this->parameters.geometry;
-    const double edge     = geometry.upper_corner[d] - geometry.lower_corner[d];
+    const double edge = box.upper_corner[d] - box.lower_corner[d];
     return static_cast<long>(std::max(1., std::round(edge / size)));
   }
 
@@ -179,8 +190,7 @@ namespace Contact
   Box<dim>::entries_with_h_halved(const int h_halvings) const
   {
     std::ostringstream text;
-    text << std::setprecision(17)
-         << std::ldexp(this->parameters.geometry.cell_size, -h_halvings);
+    text << std::setprecision(17) << std::ldexp(box.cell_size, -h_halvings);
     return {{Entry::cell_size, text.str()}};
   }
 
@@ -189,8 +199,7 @@ namespace Contact
   std::string Box<dim>::mesh_size_text() const
   {
     std::ostringstream text;
-    text << std::setprecision(17)
-         << "h = " << this->parameters.geometry.cell_size;
+    text << std::setprecision(17) << "h = " << box.cell_size;
     return text.str();
   }
 
@@ -200,12 +209,11 @@ namespace Contact
   double Box<dim>::cell_size(const Triangulation<dim> &,
                              const Mapping<dim> &) const
   {
-    const auto &geometry = this->parameters.geometry;
-    double      h        = 0;
+    double h = 0;
     for (unsigned int d = 0; d < dim; ++d)
       h = std::max(h,
-                   (geometry.upper_corner[d] - geometry.lower_corner[d]) /
-                     n_cells(d, geometry.cell_size));
+                   (box.upper_corner[d] - box.lower_corner[d]) /
+                     n_cells(d, box.cell_size));
     return h;
   }
 
@@ -215,7 +223,7 @@ namespace Contact
   template <int dim>
   std::string Box<dim>::coarsening_obstacle(const unsigned int doublings) const
   {
-    const double h      = this->parameters.geometry.cell_size;
+    const double h      = box.cell_size;
     const long   factor = 1L << doublings;
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -235,9 +243,8 @@ namespace Contact
   template <int dim>
   void Box<dim>::check_coarse_runs(const std::string &mode) const
   {
-    const auto &geometry = this->parameters.geometry;
-    const auto  edge     = [&](const unsigned int d) {
-      return geometry.upper_corner[d] - geometry.lower_corner[d];
+    const auto edge = [&](const unsigned int d) {
+      return box.upper_corner[d] - box.lower_corner[d];
     };
     const auto fits = [&](const unsigned int d, const double size) {
       const long n = n_cells(d, size);
@@ -254,7 +261,7 @@ namespace Contact
       for (long m = 1; m <= 4096; ++m)
         {
           const double size = shortest / (4 * m);
-          bool         all  = size <= geometry.cell_size * (1 + 1e-12);
+          bool         all  = size <= box.cell_size * (1 + 1e-12);
           for (unsigned int d = 0; all && d < dim; ++d)
             all = fits(d, size);
           if (all)
@@ -263,18 +270,17 @@ namespace Contact
       return std::string();
     };
     for (unsigned int d = 0; d < dim; ++d)
-      if (!fits(d, geometry.cell_size))
+      if (!fits(d, box.cell_size))
         check_entry(false,
                     Entry::cell_size,
-                    geometry.cell_size,
+                    box.cell_size,
                     "a size that divides every edge of the box into a "
                     "multiple of 4 cells with " +
                       mode + " (the coarse runs have cells of 2h and 4h)" +
                       suggestion() + "; here the edge " +
                       std::string(1, "xyz"[d]) + " of length " +
                       number_text(edge(d)) + " gets " +
-                      std::to_string(n_cells(d, geometry.cell_size)) +
-                      " cells");
+                      std::to_string(n_cells(d, box.cell_size)) + " cells");
   }
 
 
@@ -289,10 +295,8 @@ namespace Contact
   template <int dim>
   void Box<dim>::check_manufactured_scene() const
   {
-    const auto &geometry = this->parameters.geometry;
     const auto &boundary = this->parameters.boundary;
-    AssertThrow(geometry.lower_corner[0] == 0. &&
-                  geometry.lower_corner[1] == 0.,
+    AssertThrow(box.lower_corner[0] == 0. && box.lower_corner[1] == 0.,
                 ExcMessage("'" + Entry::manufactured_solution +
                            "' needs "
                            "'" +
@@ -306,9 +310,8 @@ namespace Contact
                            Entry::clamped_boundary_ids +
                            " = 0' "
                            "(x = 0) and 'Contact boundary ids = 2' (y = 0)."));
-    const double length = geometry.upper_corner[0] - geometry.lower_corner[0];
-    const double cells_to_front =
-      0.5 / (length / n_cells(0, geometry.cell_size));
+    const double length         = box.upper_corner[0] - box.lower_corner[0];
+    const double cells_to_front = 0.5 / (length / n_cells(0, box.cell_size));
     AssertThrow(std::abs(cells_to_front - std::round(cells_to_front)) < 1e-8,
                 ExcMessage("'" + Entry::manufactured_solution +
                            "': the "

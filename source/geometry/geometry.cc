@@ -1,6 +1,6 @@
 /* What every geometry shares: the rotation, refinement and grading of its
    coarse mesh, the checks of the memory and of the boundary ids, and the
-   choice of the geometry. */
+   choice of the geometry among the registered ones. */
 
 #include <deal.II/base/exceptions.h>
 
@@ -10,10 +10,8 @@
 
 
 #include <base/dimensions.h>
-#include <geometry/box.h>
 #include <geometry/geometry.h>
 #include <geometry/mesh_file.h>
-#include <geometry/shell.h>
 
 #include <algorithm>
 #include <cmath>
@@ -261,49 +259,38 @@ namespace Contact
 
   // @sect4{create_geometry}
 
-  // The one place that knows every geometry. A mesh file replaces the
-  // Domain (its parsing refuses a shell with a mesh file).
+  // A mesh file replaces the Domain (the shell's parsing refuses a shell
+  // with a mesh file); else the registered geometry of that name.
   template <int dim>
   std::unique_ptr<const Geometry<dim>>
   create_geometry(const Parameters &parameters, const MPI_Comm communicator)
   {
-    using Domain = GeometryParameters::Domain;
     if (!parameters.geometry.mesh_file.empty())
       return std::make_unique<MeshFile<dim>>(parameters, communicator);
-    switch (parameters.geometry.domain)
-      {
-        case Domain::box:
-          return std::make_unique<Box<dim>>(parameters, communicator);
-        case Domain::shell:
-          return std::make_unique<Shell<dim>>(parameters, communicator);
-      }
-    AssertThrow(false, ExcInternalError("A Domain without a geometry."));
-    return nullptr;
+    return GeometryRegistry<dim>::create(Entry::domain,
+                                         parameters.geometry.domain,
+                                         parameters,
+                                         communicator);
   }
 
 
-  // The factory of base/'s create_geometry(parameters), for the answers
-  // that need no mesh: the geometry of the parameters' dimension on one
-  // process (it builds no mesh).
-  namespace
+  // For base/'s create_geometry(parameters), whatever the name it was
+  // registered under: the geometry of the parameters' dimension on one
+  // process.
+  std::unique_ptr<const GeometryBase>
+  create_geometry_on_one_process(const Parameters &parameters)
   {
-    std::unique_ptr<const GeometryBase>
-    create_mesh_free_geometry(const Parameters &parameters)
-    {
 #ifdef CONTACT_WITH_2D
-      if (parameters.dimension == 2)
-        return create_geometry<2>(parameters, MPI_COMM_SELF);
+    if (parameters.dimension == 2)
+      return create_geometry<2>(parameters, MPI_COMM_SELF);
 #endif
 #ifdef CONTACT_WITH_3D
-      if (parameters.dimension == 3)
-        return create_geometry<3>(parameters, MPI_COMM_SELF);
+    if (parameters.dimension == 3)
+      return create_geometry<3>(parameters, MPI_COMM_SELF);
 #endif
-      AssertThrow(false, ExcInternalError("A dimension without a geometry."));
-      return nullptr;
-    }
-
-    const GeometryRegistration registration(create_mesh_free_geometry);
-  } // namespace
+    AssertThrow(false, ExcInternalError("A dimension without a geometry."));
+    return nullptr;
+  }
 
 
 #define INSTANTIATE(dim)                                              \

@@ -8,6 +8,7 @@
 #include <geometry/shell.h>
 
 #include <algorithm>
+#include <any>
 #include <cmath>
 
 namespace Contact
@@ -38,64 +39,71 @@ namespace Contact
                         "as keep the cells about as long as wide).");
     }
 
-    // Checked where the shell is the domain. Its circles are a manifold
-    // about the origin (about the z axis in 3D): a rotated mesh would
-    // leave it.
-    void parse_entries(ParameterHandler   &prm,
-                       GeometryParameters &geometry,
-                       const unsigned int  dim)
+    // Cells far thinner than wide make K singular to working precision:
+    // on prm/bushing_3d.prm a width 4000 times the length along z passes
+    // the self-checks, 39 000 times fails them.
+    void check_aspect_ratio(const ShellParameters &shell,
+                            const unsigned int     dim)
     {
-      geometry.inner_radius = prm.get_double("Inner radius");
-      geometry.outer_radius = prm.get_double("Outer radius");
-      geometry.shell_length = prm.get_double("Shell length");
-      geometry.cells_around = prm.get_integer("Cells around");
-      if (geometry.domain != GeometryParameters::Domain::shell)
-        return;
-      const std::string with_shell = " with '" + Entry::domain + " = shell'";
-      AssertThrow(geometry.mesh_file.empty(),
-                  ExcMessage("Entry '" + Entry::domain +
-                             "': shell does not go with a '" +
-                             Entry::mesh_file +
-                             "' (the file is the domain); allowed with a "
-                             "mesh file is box."));
-      check_entry(geometry.outer_radius > geometry.inner_radius,
-                  Entry::outer_radius,
-                  geometry.outer_radius,
-                  "a radius above the Inner radius, " +
-                    Utilities::to_string(geometry.inner_radius));
-      check_entry(geometry.inner_radius > 0,
-                  Entry::inner_radius,
-                  geometry.inner_radius,
-                  "r > 0" + with_shell);
-      check_entry(dim == 2 || geometry.shell_length > 0,
-                  Entry::shell_length,
-                  geometry.shell_length,
-                  "a length > 0" + with_shell + " in 3D");
-      // Cells far thinner than wide make K singular to working precision:
-      // on prm/bushing_3d.prm a width 4000 times the length along z passes
-      // the self-checks, 39 000 times fails them.
       const double max_aspect_ratio = 1e4;
       const double cell_width =
-        2 * numbers::PI * geometry.inner_radius / geometry.cells_around;
+        2 * numbers::PI * shell.inner_radius / shell.cells_around;
       const std::string thinnest = number_text(cell_width / max_aspect_ratio);
       const std::string why =
         " (1e-4 of a coarse cell's width 2 pi r / 'Cells around' = " +
         number_text(cell_width) +
         "; thinner cells make the stiffness matrix singular to working "
         "precision)";
-      check_entry(geometry.outer_radius - geometry.inner_radius >=
+      check_entry(shell.outer_radius - shell.inner_radius >=
                     cell_width / max_aspect_ratio,
                   Entry::outer_radius,
-                  geometry.outer_radius,
+                  shell.outer_radius,
                   "a radius at least " + thinnest +
                     " above the Inner radius (here " +
-                    number_text(geometry.outer_radius - geometry.inner_radius) +
+                    number_text(shell.outer_radius - shell.inner_radius) +
                     " above)" + why);
       check_entry(dim == 2 ||
-                    geometry.shell_length >= cell_width / max_aspect_ratio,
+                    shell.shell_length >= cell_width / max_aspect_ratio,
                   Entry::shell_length,
-                  geometry.shell_length,
+                  shell.shell_length,
                   "a length of at least " + thinnest + why);
+    }
+
+    // Checked where the shell is the domain. Its circles are a manifold
+    // about the origin (about the z axis in 3D): a rotated mesh would
+    // leave it.
+    std::any parse_entries(ParameterHandler &prm, const Parameters &parameters)
+    {
+      ShellParameters shell;
+      shell.inner_radius   = prm.get_double("Inner radius");
+      shell.outer_radius   = prm.get_double("Outer radius");
+      shell.shell_length   = prm.get_double("Shell length");
+      shell.cells_around   = prm.get_integer("Cells around");
+      const auto &geometry = parameters.geometry;
+      if (geometry.domain != "shell")
+        return shell;
+      const unsigned int dim        = parameters.dimension;
+      const std::string  with_shell = " with '" + Entry::domain + " = shell'";
+      AssertThrow(geometry.mesh_file.empty(),
+                  ExcMessage("Entry '" + Entry::domain +
+                             "': shell does not go with a '" +
+                             Entry::mesh_file +
+                             "' (the file is the domain); allowed with a "
+                             "mesh file is box."));
+      check_entry(shell.outer_radius > shell.inner_radius,
+                  Entry::outer_radius,
+                  shell.outer_radius,
+                  "a radius above the Inner radius, " +
+                    Utilities::to_string(shell.inner_radius));
+      check_entry(shell.inner_radius > 0,
+                  Entry::inner_radius,
+                  shell.inner_radius,
+                  "r > 0" + with_shell);
+      check_entry(dim == 2 || shell.shell_length > 0,
+                  Entry::shell_length,
+                  shell.shell_length,
+                  "a length > 0" + with_shell + " in 3D");
+      check_aspect_ratio(shell, dim);
       check_entry(geometry.rotation_angle == 0,
                   Entry::rotation_angle,
                   geometry.rotation_angle,
@@ -105,15 +113,28 @@ namespace Contact
                   ExcMessage("Entry '" + Entry::domain +
                              "': shell is built of quadrilaterals/hexahedra; "
                              "allowed with 'Cell shape = simplex' is box."));
+      return shell;
     }
 
-    // Declared after 'Domain': their place in doc/parameters.prm.
-    [[maybe_unused]] const bool registered =
-      GeometryParameters::register_entries("shell",
-                                           {"Domain",
-                                            declare_entries,
-                                            parse_entries});
+    // Second in 'Domain'. Its entries are declared after 'Domain': their
+    // place in doc/parameters.prm.
+    const GeometryRegistration<Shell> registration(
+      "shell",
+      20,
+      "the annulus (2D) or the tube along z from z = 0 to the Shell length "
+      "(3D) between the Inner and the Outer radius around the origin, Cells "
+      "around the circle, refined Mesh refinements times along the circles "
+      "(boundary ids 0 inner, 1 outer, 2 z = 0, 3 z = length)",
+      {"Geometry", "Domain", "Cells around", declare_entries, parse_entries});
   } // namespace
+
+
+  template <int dim>
+  Shell<dim>::Shell(const Parameters &run_parameters,
+                    const MPI_Comm    mpi_communicator)
+    : Geometry<dim>(run_parameters, mpi_communicator)
+    , shell(run_parameters.part<ShellParameters>("shell"))
+  {}
 
 
   // @sect4{Shell::create_coarse_mesh}
@@ -125,16 +146,16 @@ namespace Contact
   unsigned int Shell<dim>::create_coarse_mesh(Triangulation<dim> &mesh) const
   {
     const auto  &geometry = this->parameters.geometry;
-    const double inner = geometry.inner_radius, outer = geometry.outer_radius;
+    const double inner = shell.inner_radius, outer = shell.outer_radius;
     // In 3D as many cells along z as keep them about as long as wide, at
     // most max_axial_cells (the count is formed as a double first: a cast
     // of a huge length to unsigned would be undefined).
-    const double cell_width = 2 * numbers::PI * inner / geometry.cells_around;
-    const double axial      = std::round(geometry.shell_length / cell_width);
+    const double cell_width = 2 * numbers::PI * inner / shell.cells_around;
+    const double axial      = std::round(shell.shell_length / cell_width);
     const unsigned int max_axial_cells = 10000;
     check_entry(dim == 2 || axial <= max_axial_cells,
                 Entry::shell_length,
-                geometry.shell_length,
+                shell.shell_length,
                 "a length of at most " +
                   number_text(max_axial_cells * cell_width) + " (" +
                   std::to_string(max_axial_cells) +
@@ -143,25 +164,21 @@ namespace Contact
     const unsigned int n_axial =
       dim == 2 ? 1 : std::max(1u, static_cast<unsigned int>(axial));
     const double cells = std::pow(2., dim * geometry.mesh_refinements) *
-                         geometry.cells_around * n_axial;
+                         shell.cells_around * n_axial;
     this->check_memory(cells,
                        dim * cells * std::pow(geometry.fe_degree, dim),
                        Entry::mesh_refinements);
     if constexpr (dim == 2)
       GridGenerator::hyper_shell(
-        mesh, Point<dim>(), inner, outer, geometry.cells_around, true);
+        mesh, Point<dim>(), inner, outer, shell.cells_around, true);
     else
       {
-        GridGenerator::cylinder_shell(mesh,
-                                      geometry.shell_length,
-                                      inner,
-                                      outer,
-                                      geometry.cells_around,
-                                      n_axial);
+        GridGenerator::cylinder_shell(
+          mesh, shell.shell_length, inner, outer, shell.cells_around, n_axial);
         // By the faces' vertices, which lie on the circles (a face's center
         // lies inside its circle, for few cells around below the middle
         // radius even on the outer one).
-        const double length = geometry.shell_length;
+        const double length = shell.shell_length;
         for (const auto &face : mesh.active_face_iterators())
           if (face->at_boundary())
             {
@@ -191,13 +208,11 @@ namespace Contact
   bool Shell<dim>::contains(const Point<dim> &point,
                             const Triangulation<dim> &) const
   {
-    const auto  &geometry = this->parameters.geometry;
-    const double slack    = 1e-6 * geometry.outer_radius;
-    const double r        = std::hypot(point[0], point[1]);
-    return r >= geometry.inner_radius - slack &&
-           r <= geometry.outer_radius + slack &&
+    const double slack = 1e-6 * shell.outer_radius;
+    const double r     = std::hypot(point[0], point[1]);
+    return r >= shell.inner_radius - slack && r <= shell.outer_radius + slack &&
            (dim == 2 || (point[dim - 1] >= -slack &&
-                         point[dim - 1] <= geometry.shell_length + slack));
+                         point[dim - 1] <= shell.shell_length + slack));
   }
 
 

@@ -1,9 +1,10 @@
 /* Every Selection entry of the .prm file is parsed by the table of its
-   enum class: the entry's pattern lists exactly the table's names (a
-   Selection entry without a table, or whose pattern differs from it, is
-   printed), and the table refuses a name that is not among them, naming
-   the entry and the allowed names (ParameterHandler's pattern check
-   refuses such a name first; the tables are called directly here). The
+   enum class or made of the registered parts of a kind (base/parts.h):
+   the entry's pattern lists exactly the table's or the registered names (a
+   Selection entry without either, or whose pattern differs from it, is
+   printed), and the table or the kind refuses a name that is not among
+   them, naming the entry and the allowed names (ParameterHandler's pattern
+   check refuses such a name first; they are called directly here). The
    quantities of 'Accuracy/Target quantity' are parsed by their own table:
    the name of each quantity parses back to it, and an unknown name is
    refused. */
@@ -14,6 +15,7 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
+#include <base/geometry_base.h>
 #include <base/parameters.h>
 
 #include <iostream>
@@ -89,6 +91,40 @@ namespace
         exc.print_info(std::cout);
       }
   }
+
+  // The pattern against the registered names of a kind, and an unknown
+  // name, which create() refuses (`arguments` are those of the kind's
+  // parts, not used for an unknown name).
+  template <class Registry, class... Arguments>
+  void check_parts(const std::string                  &entry,
+                   std::map<std::string, std::string> &selections,
+                   Arguments &&...arguments)
+  {
+    const auto        declared = selections.find(entry);
+    const std::string pattern =
+      Patterns::Selection(Registry::selection()).description();
+    std::cout << entry << ": "
+              << (declared == selections.end() ?
+                    "not a declared Selection" :
+                  declared->second == pattern ?
+                    "the pattern lists the registered names" :
+                    "the pattern " + declared->second + " differs from " +
+                      pattern)
+              << std::endl;
+    if (declared != selections.end())
+      selections.erase(declared);
+    try
+      {
+        Registry::create(entry,
+                         "no such choice",
+                         std::forward<Arguments>(arguments)...);
+        std::cout << "  an unknown name is accepted" << std::endl;
+      }
+    catch (const ExceptionBase &exc)
+      {
+        exc.print_info(std::cout);
+      }
+  }
 } // namespace
 
 int main()
@@ -103,7 +139,7 @@ int main()
   collect_selections(tree, "", selections);
   std::cout << selections.size() << " Selection entries" << std::endl;
 
-  check(GeometryParameters::domains(), selections);
+  check_parts<GeometryBaseRegistry>(Entry::domain, selections, Parameters());
   check(GeometryParameters::cell_shapes(), selections);
   check(GeometryParameters::mass_matrices(), selections);
   check(MaterialParameters::plane_models(), selections);
@@ -114,6 +150,8 @@ int main()
   check(ConvergenceStudyParameters::refinements(), selections);
   check(AccuracyParameters::target_error_types(), selections);
   check(AccuracyParameters::cost_models(), selections);
+  check_parts<FrictionLaws::LawRegistry>(
+    FrictionLaws::entry_path(FrictionLaws::law_entry), selections, prm);
   for (const auto &[entry, pattern] : selections)
     std::cout << entry << ": a Selection without a table, " << pattern
               << std::endl;

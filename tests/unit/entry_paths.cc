@@ -3,14 +3,18 @@
    list of entries that must not change) is declared: a renamed entry
    whose path in Entry was not renamed with it makes this test fail.
    The check itself must be able to fail: a path that is not declared is
-   reported as such. The list Entry::all() must hold every constant of the
-   namespace (counted in include/base/parameters.h), and no source file
-   other than parameters.cc may spell an entry path as a literal
-   ('Subsection/Entry' of a declared subsection): such lines are printed. */
+   reported as such. The list Entry::all() (the core's entries, in
+   include/base/parameters.h) and the lists of the parts whose headers add
+   their own constants to the namespace (the shell's, below) must hold
+   every constant of the namespace, counted in every header of include/,
+   and no source file other than parameters.cc may spell an entry path as
+   a literal ('Subsection/Entry' of a declared subsection): such lines are
+   printed. */
 
 #include <deal.II/base/parameter_handler.h>
 
 #include <base/parameters.h>
+#include <geometry/shell.h>
 
 #include <filesystem>
 #include <fstream>
@@ -51,8 +55,15 @@ int main()
   dealii::ParameterHandler prm;
   Contact::Parameters::declare_parameters(prm);
 
-  const std::vector<std::string> paths      = Contact::Entry::all();
-  unsigned int                   undeclared = 0;
+  namespace Entry                = Contact::Entry;
+  std::vector<std::string> paths = Entry::all();
+  // The parts' own constants.
+  for (const std::string &path : {Entry::inner_radius,
+                                  Entry::outer_radius,
+                                  Entry::shell_length,
+                                  Entry::cells_around})
+    paths.push_back(path);
+  unsigned int undeclared = 0;
   for (const std::string &path : paths)
     if (!is_declared(prm, path))
       {
@@ -62,19 +73,23 @@ int main()
   std::cout << paths.size() << " entry paths named outside parameters.cc, "
             << undeclared << " of them not declared" << std::endl;
 
-  // The constants of namespace Entry in the header, against all().
-  std::ifstream header(CONTACT_SOURCE_ROOT "/include/base/parameters.h");
-  unsigned int  constants = 0;
-  bool          in_entry  = false;
-  for (std::string line; std::getline(header, line);)
+  // The constants of namespace Entry in the headers, against the lists.
+  unsigned int constants = 0;
+  for (const auto &file : std::filesystem::recursive_directory_iterator(
+         CONTACT_SOURCE_ROOT "/include"))
     {
-      if (line.find("} // namespace Entry") != std::string::npos)
-        in_entry = false;
-      else if (line.find("namespace Entry") != std::string::npos)
-        in_entry = true;
-      else if (in_entry &&
-               line.find("inline const std::string") != std::string::npos)
-        ++constants;
+      std::ifstream header(file.path());
+      bool          in_entry = false;
+      for (std::string line; std::getline(header, line);)
+        {
+          if (line.find("} // namespace Entry") != std::string::npos)
+            in_entry = false;
+          else if (line.find("namespace Entry") != std::string::npos)
+            in_entry = true;
+          else if (in_entry &&
+                   line.find("inline const std::string") != std::string::npos)
+            ++constants;
+        }
     }
   std::cout << constants << " constants in namespace Entry, "
             << (constants == paths.size() ? "all" : "not all")

@@ -1,8 +1,9 @@
 /* A second weakening law, mu(s) = b + (a - b) / (1 + s/s0), defined and
    registered in this file alone: the path of a new friction law (the law,
    its registration, its test; doc/tutorial.md, "Adding a friction law").
-   - the registry lists it, the Selection 'Friction law' accepts it and its
-     help text describes it, and the whole parameters parse with it;
+   - its one registration statement adds it: the registered laws list it,
+     the Selection 'Friction law' accepts it and its help text describes
+     it, and the whole parameters parse with it;
    - through FrictionLaw: mu(0) = a and mu(s) -> b; the derivative of the
      bound S mu against centred differences of the bound, the potential j
      of (3.8) against the bound (j' = S mu); lambda bounds the steepest
@@ -38,8 +39,8 @@ namespace
   class RationalWeakening : public FrictionLaws::Interface
   {
   public:
-    // 'a' and 'b' as the built-in laws declare them (the registry refuses a
-    // different declaration); 's0' is new.
+    // 'a' and 'b' as the built-in laws declare them (the registration
+    // refuses a different declaration); 's0' is new.
     static void declare_parameters(ParameterHandler &prm)
     {
       prm.declare_entry("a", "1", Patterns::Double(0), "mu(0) = a >= 0.");
@@ -113,6 +114,13 @@ namespace
 
     using RationalWeakening::RationalWeakening;
   };
+
+
+  // @sect3{Registration}
+
+  // The one statement of a law's file: fourth in 'Friction law'.
+  const FrictionLaws::LawRegistration<RationalWeakening>
+    registration("rational weakening", 40, "mu(s) = b + (a - b) / (1 + s/s0)");
 
 
   // @sect3{Helpers}
@@ -199,14 +207,9 @@ int main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::cout << std::setprecision(8);
 
-  // @sect3{Registration}
-
-  FrictionLaws::register_law(FrictionLaws::registration<RationalWeakening>(
-    "rational weakening", "mu(s) = b + (a - b) / (1 + s/s0)"));
-
   std::cout << "registered laws:";
-  for (const std::string &name : FrictionLaws::names())
-    std::cout << " '" << name << "'";
+  for (const auto &law : FrictionLaws::LawRegistry::parts())
+    std::cout << " '" << law.name << "'";
   std::cout << std::endl;
 
   // The subsection Friction as --print-parameters would print it with the
@@ -255,7 +258,8 @@ int main(int argc, char *argv[])
       ParameterHandler prm;
       FrictionParameters::declare_parameters(prm);
       prm.enter_subsection(FrictionLaws::subsection);
-      FrictionLaws::create("coulomb", prm);
+      FrictionLaws::LawRegistry::create(
+        FrictionLaws::entry_path(FrictionLaws::law_entry), "coulomb", prm);
       std::cout << "'coulomb': accepted" << std::endl;
     }
   catch (const dealii::ExceptionBase &exc)
@@ -265,8 +269,9 @@ int main(int argc, char *argv[])
 
   try
     {
-      FrictionLaws::register_law(
-        FrictionLaws::registration<RationalWeakening>("constant", "mu = a"));
+      const FrictionLaws::LawRegistration<RationalWeakening> twice("constant",
+                                                                   50,
+                                                                   "mu = a");
       std::cout << "'constant' registered twice: accepted" << std::endl;
     }
   catch (const dealii::ExceptionBase &exc)
@@ -277,8 +282,9 @@ int main(int argc, char *argv[])
 
   try
     {
-      FrictionLaws::register_law(
-        FrictionLaws::registration<OtherDefault>("other default", "mu = a"));
+      const FrictionLaws::LawRegistration<OtherDefault> other("other default",
+                                                              60,
+                                                              "mu = a");
       std::cout << "'a' declared with another default: accepted" << std::endl;
     }
   catch (const dealii::ExceptionBase &exc)
@@ -288,7 +294,7 @@ int main(int argc, char *argv[])
     }
 
   std::cout << "registered laws after the refusals:";
-  for (const std::string &name : FrictionLaws::names())
-    std::cout << " '" << name << "'";
+  for (const auto &law : FrictionLaws::LawRegistry::parts())
+    std::cout << " '" << law.name << "'";
   std::cout << std::endl;
 }

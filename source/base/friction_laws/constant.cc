@@ -59,11 +59,8 @@ namespace Contact
       private:
         const double a;
       };
-    } // namespace
 
-    Registration constant_law()
-    {
-      return registration<Constant>("constant", "mu = a");
-    }
-  } // namespace FrictionLaws
+      const LawRegistration<Constant> registration("constant", 20, "mu = a");
+    } // namespace
+  }   // namespace FrictionLaws
 } // namespace Contact

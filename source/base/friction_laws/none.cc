@@ -52,11 +52,9 @@ namespace Contact
           return 0.;
         }
       };
-    } // namespace
 
-    Registration none_law()
-    {
-      return registration<None>("none", "frictionless Gamma_3");
-    }
-  } // namespace FrictionLaws
+      const LawRegistration<None>
+        registration("none", 10, "frictionless Gamma_3");
+    } // namespace
+  }   // namespace FrictionLaws
 } // namespace Contact

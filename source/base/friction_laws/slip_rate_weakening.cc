@@ -86,13 +86,11 @@ namespace Contact
         const double b;
         const double alpha;
       };
-    } // namespace
 
-    Registration slip_rate_weakening_law()
-    {
-      return registration<SlipRateWeakening>(
-        "slip rate weakening",
-        "mu(s) = (a - b) exp(-alpha s) + b, the paper's (6.1)");
-    }
-  } // namespace FrictionLaws
+      const LawRegistration<SlipRateWeakening>
+        registration("slip rate weakening",
+                     30,
+                     "mu(s) = (a - b) exp(-alpha s) + b, the paper's (6.1)");
+    } // namespace
+  }   // namespace FrictionLaws
 } // namespace Contact
