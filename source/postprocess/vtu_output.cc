@@ -416,14 +416,24 @@ namespace Contact
     const FEValuesExtractors::Vector     displacements(0);
     std::vector<SymmetricTensor<2, dim>> eps_u(space.quadrature.size()),
       eps_w(space.quadrature.size());
+    // The cell's values of u and w, read once for both (FEValues' own
+    // reading allocates them per call).
+    std::vector<double> u_cell(space.fe.n_dofs_per_cell()),
+      w_cell(space.fe.n_dofs_per_cell());
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          fe_values[displacements].get_function_symmetric_gradients(
-            output.displacement, eps_u);
-          fe_values[displacements].get_function_symmetric_gradients(
-            output.velocity, eps_w);
+          cell->get_dof_values(output.displacement,
+                               u_cell.begin(),
+                               u_cell.end());
+          cell->get_dof_values(output.velocity, w_cell.begin(), w_cell.end());
+          fe_values[displacements]
+            .get_function_symmetric_gradients_from_local_dof_values(u_cell,
+                                                                    eps_u);
+          fe_values[displacements]
+            .get_function_symmetric_gradients_from_local_dof_values(w_cell,
+                                                                    eps_w);
           SymmetricTensor<2, dim> sigma;
           double                  sigma_zz = 0, volume = 0;
           for (const unsigned int q : fe_values.quadrature_point_indices())
