@@ -96,20 +96,37 @@ namespace Contact
             field(line.index) = value;
           }
     }
+
+
+    // DataOut whose patches the next output on the same mesh fills with its
+    // own values (VtuOutput::refresh_patches()) instead of building them
+    // again; clear_input_data_references() keeps the field names and
+    // releases the vectors they came from.
+    template <int dim>
+    class ReusablePatches : public DataOut<dim>
+    {
+    public:
+      std::vector<DataOutBase::Patch<dim>> &built_patches()
+      {
+        return this->patches;
+      }
+    };
   } // namespace
 
 
   // @sect4{VtuOutput}
 
   // One VTU output: copies of the fields at t_n, and the thread that turns
-  // them into a file. DataOut's patches and the compression take most of
-  // an output's time (bench/output.md measures what the output adds to a
-  // run); they run in a background thread while the time loop goes on, and
-  // finish_vtu() waits for them before the next output, a checkpoint, a
-  // change of the mesh or the end of the run. The thread reads the mesh, the
-  // DoFHandlers and the mapping, which the steps do not change, and makes no
-  // MPI calls: DataOut's ghosted copies of the fields (MPI calls)
-  // are made before it starts.
+  // them into a file. The patches and the compression take most of an
+  // output's time (bench/output.md measures what the output adds to a run
+  // and where its time goes); they run in a background thread while the
+  // time loop goes on, and finish_vtu() waits for them before the next
+  // output, a checkpoint, a change of the mesh or the end of the run. DataOut
+  // builds the patches of the first output on a mesh; the later ones refill
+  // them (refresh_patches()), which costs a fraction of building them. The
+  // thread reads the mesh, the DoFHandlers and the mapping, which the steps
+  // do not change, and makes no MPI calls: DataOut's ghosted copies of the
+  // fields (MPI calls) are made before it starts.
   template <int dim>
   class VtuOutput : public Postprocessor<dim>
   {
@@ -125,7 +142,10 @@ namespace Contact
       if (event == MeshEvent::initial)
         report_times = ReportTimes(this->parameters().output.report_times);
       else if (event == MeshEvent::before_change)
-        finish_vtu();
+        {
+          finish_vtu();
+          mesh_patches.reset();
+        }
     }
 
     void start(const bool resumed) override;
@@ -159,8 +179,11 @@ namespace Contact
       Vector<double>              status, slip_rate, friction_bound;
       std::vector<Vector<double>> stress;
       Vector<double>              von_mises;
-      DataOut<dim>                data_out;
-      std::future<void>           written;
+      // The patches of the previous output on this mesh, if they can be
+      // refilled (refresh_patches()); else fields for a new DataOut.
+      std::shared_ptr<ReusablePatches<dim>> data_out;
+      bool                                  refresh = false;
+      std::future<void>                     written;
     };
 
     std::string vtu_piece_name(const unsigned int step,
@@ -169,6 +192,7 @@ namespace Contact
     void        cell_average_stress(Pending &output) const;
     void        add_hanging_values(Pending &output) const;
     void        add_vtu_fields(Pending &output) const;
+    void        refresh_patches(Pending &output) const;
     void        write_vtu_piece(Pending &output, const std::string &file) const;
     void        finish_vtu();
     void        write_pvd() const;
@@ -176,6 +200,10 @@ namespace Contact
 
     std::vector<std::pair<double, std::string>> pvd_records;
     ReportTimes                                 report_times;
+    // The patches of the last output on the current mesh (null before the
+    // first one, after a change of the mesh and for elements of degree
+    // above 1, whose patches are not filled from their vertices).
+    std::shared_ptr<ReusablePatches<dim>> mesh_patches;
     // The output being written in the background, last so that it is
     // destroyed first.
     std::shared_ptr<Pending> pending_vtu;
@@ -302,7 +330,11 @@ namespace Contact
     output->friction_traction.update_ghost_values();
     add_hanging_values(*output);
     cell_average_stress(*output);
-    add_vtu_fields(*output);
+    output->refresh = (mesh_patches != nullptr);
+    if (output->refresh)
+      output->data_out = std::move(mesh_patches);
+    else
+      add_vtu_fields(*output);
 
     const std::string piece = this->parameters().output.directory +
                               "/.partial/" +
@@ -384,14 +416,24 @@ namespace Contact
     const FEValuesExtractors::Vector     displacements(0);
     std::vector<SymmetricTensor<2, dim>> eps_u(space.quadrature.size()),
       eps_w(space.quadrature.size());
+    // The cell's values of u and w, read once for both (FEValues' own
+    // reading allocates them per call).
+    std::vector<double> u_cell(space.fe.n_dofs_per_cell()),
+      w_cell(space.fe.n_dofs_per_cell());
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          fe_values[displacements].get_function_symmetric_gradients(
-            output.displacement, eps_u);
-          fe_values[displacements].get_function_symmetric_gradients(
-            output.velocity, eps_w);
+          cell->get_dof_values(output.displacement,
+                               u_cell.begin(),
+                               u_cell.end());
+          cell->get_dof_values(output.velocity, w_cell.begin(), w_cell.end());
+          fe_values[displacements]
+            .get_function_symmetric_gradients_from_local_dof_values(u_cell,
+                                                                    eps_u);
+          fe_values[displacements]
+            .get_function_symmetric_gradients_from_local_dof_values(w_cell,
+                                                                    eps_w);
           SymmetricTensor<2, dim> sigma;
           double                  sigma_zz = 0, volume = 0;
           for (const unsigned int q : fe_values.quadrature_point_indices())
@@ -434,8 +476,9 @@ namespace Contact
   template <int dim>
   void VtuOutput<dim>::add_vtu_fields(Pending &output) const
   {
-    const DiscreteSpace<dim> &space    = this->space();
-    DataOut<dim>             &data_out = output.data_out;
+    const DiscreteSpace<dim> &space = this->space();
+    output.data_out                 = std::make_shared<ReusablePatches<dim>>();
+    DataOut<dim> &data_out          = *output.data_out;
     data_out.attach_dof_handler(space.dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
       vector_field(dim,
@@ -472,6 +515,65 @@ namespace Contact
   }
 
 
+  // @sect4{VtuOutput::refresh_patches}
+
+  // The patches of an element of degree 1 have one point per vertex of
+  // their cell, where a nodal field is its value at the vertex (DataOut's
+  // interpolation, whose other shape functions vanish there: 0 + value,
+  // which also turns -0 into 0 as DataOut's sum does). The rows are those
+  // of add_vtu_fields(): the nodal fields in its order, then the cell
+  // fields; the cells are DataOut's, the locally owned active ones in
+  // order. The points of curved cells, after the fields, stay.
+  template <int dim>
+  void VtuOutput<dim>::refresh_patches(Pending &output) const
+  {
+    const DiscreteSpace<dim>             &space = this->space();
+    std::vector<DataOutBase::Patch<dim>> &patches =
+      output.data_out->built_patches();
+    const std::vector<const FastVector *> vector_fields = {
+      &output.displacement, &output.velocity, &output.friction_traction};
+    const std::vector<const Vector<double> *> scalar_fields = {
+      &output.status, &output.slip_rate, &output.friction_bound};
+    std::vector<const Vector<double> *> cell_fields;
+    for (const Vector<double> &component : output.stress)
+      cell_fields.push_back(&component);
+    cell_fields.push_back(&output.von_mises);
+
+    std::vector<types::global_dof_index> dofs(space.fe.n_dofs_per_cell()),
+      scalar_dofs(space.scalar_dof_handler.get_fe().n_dofs_per_cell());
+    auto patch = patches.begin();
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          AssertThrow(patch != patches.end() &&
+                        patch->data.n_cols() == cell->n_vertices(),
+                      ExcInternalError());
+          cell->get_dof_indices(dofs);
+          typename DoFHandler<dim>::active_cell_iterator(
+            &cell->get_triangulation(),
+            cell->level(),
+            cell->index(),
+            &space.scalar_dof_handler)
+            ->get_dof_indices(scalar_dofs);
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              unsigned int row = 0;
+              for (const FastVector *field : vector_fields)
+                for (unsigned int d = 0; d < dim; ++d)
+                  patch->data(row++, v) =
+                    0. +
+                    (*field)(dofs[space.fe.component_to_system_index(d, v)]);
+              for (const Vector<double> *field : scalar_fields)
+                patch->data(row++, v) = 0. + (*field)(scalar_dofs[v]);
+              for (const Vector<double> *field : cell_fields)
+                patch->data(row++, v) = (*field)(cell->active_cell_index());
+            }
+          ++patch;
+        }
+    AssertThrow(patch == patches.end(), ExcInternalError());
+  }
+
+
   // @sect4{VtuOutput::write_vtu_piece}
 
   // This process's piece of the output, written into .partial/: the
@@ -481,8 +583,14 @@ namespace Contact
                                        const std::string &file) const
   {
     const DiscreteSpace<dim> &space    = this->space();
-    DataOut<dim>             &data_out = output.data_out;
-    data_out.build_patches(*space.mapping, space.fe.degree);
+    DataOut<dim>             &data_out = *output.data_out;
+    if (output.refresh)
+      refresh_patches(output);
+    else
+      {
+        data_out.build_patches(*space.mapping, space.fe.degree);
+        data_out.clear_input_data_references();
+      }
 
     DataOutBase::VtkFlags flags;
     flags.time              = output.time;
@@ -514,6 +622,8 @@ namespace Contact
     TimerOutput::Scope             t(this->computing_timer(), "Output");
     const std::shared_ptr<Pending> output = std::move(pending_vtu);
     output->written.get();
+    if (this->space().fe.degree == 1)
+      mesh_patches = output->data_out;
     const int ierr = MPI_Barrier(this->mpi_communicator());
     AssertThrowMPI(ierr);
     if (Utilities::MPI::this_mpi_process(this->mpi_communicator()) != 0)
@@ -529,7 +639,7 @@ namespace Contact
       pieces.push_back(vtu_piece_name(output->step, process));
     {
       std::ofstream stream(directory + "/.partial/" + record);
-      output->data_out.write_pvtu_record(stream, pieces);
+      output->data_out->write_pvtu_record(stream, pieces);
       stream.flush();
       AssertThrow(stream,
                   ExcMessage("Cannot write '" + directory + "/.partial/" +
