@@ -1,5 +1,5 @@
 /* The entries of the parts: declared where each part places them, parsed
-   in the order the parts were registered. */
+   and checked in the order the parts were registered. */
 
 #include <base/parts.h>
 
@@ -54,6 +54,24 @@ namespace Contact
         if (entries.subsection == subsection && entries.parse)
           values[part] = entries.parse(prm, parameters);
       return values;
+    }
+
+
+    void check_entries(const Parameters &parameters)
+    {
+      for (const auto &[part, entries] : registered())
+        if (entries.check)
+          entries.check(parameters);
+    }
+
+
+    bool may_change_on_resume(const std::string &entry)
+    {
+      for (const auto &[part, entries] : registered())
+        for (const std::string &path : entries.may_change_on_resume)
+          if (path == entry)
+            return true;
+      return false;
     }
 
 

@@ -15,6 +15,7 @@
 #include <boost/property_tree/ptree.hpp>
 
 #include <base/parameters.h>
+#include <drivers/study_parameters.h>
 
 #include <iostream>
 #include <map>
@@ -119,7 +120,8 @@ int main()
               << std::endl;
 
   for (const Quantity &quantity : Quantity::of_scene(2, 3))
-    if (Quantity::parse(quantity.name()).name() != quantity.name())
+    if (Quantity::parse(quantity.name(), Entry::target_quantity).name() !=
+        quantity.name())
       std::cout << "'" << quantity.name() << "' does not parse back"
                 << std::endl;
   std::cout << Quantity::of_scene(2, 3).size()
@@ -127,7 +129,7 @@ int main()
   for (const std::string name : {"probe 0 u_x", "probe 1 u_w", "V-norm"})
     try
       {
-        Quantity::parse(name);
+        Quantity::parse(name, Entry::target_quantity);
         std::cout << "'" << name << "' is accepted" << std::endl;
       }
     catch (const ExceptionBase &exc)
