@@ -481,40 +481,39 @@ namespace Contact
                         const PilotResults             &pilots,
                         const std::optional<Candidate> &chosen)
     {
-      bool some_degree_predicts = false;
+      const AccuracyParameters &accuracy = AccuracyParameters::of(parameters);
+      bool                      some_degree_predicts = false;
       for (const DegreeModel &model : pilots.models)
         some_degree_predicts =
           some_degree_predicts || std::isfinite(model.space.error);
       const bool predicts =
         std::isfinite(pilots.time.error) && some_degree_predicts;
       AssertThrow(chosen || predicts,
-                  ExcMessage(
-                    "Entry '" + Entry::target_error + "' = " +
-                    number_text(
-                      AccuracyParameters::of(parameters).target_error) +
-                    ": the pilots are not in the asymptotic range for "
-                    "'" +
-                    AccuracyParameters::of(parameters).target_quantity.name() +
-                    "' (see the lines above: an order below " +
-                    number_text(min_plausible_order) +
-                    " or differences that change sign), so they "
-                    "predict nothing. Start from a smaller '" +
-                    Entry::cell_size + "' and '" + Entry::time_step +
-                    "', or choose another '" + Entry::target_quantity + "'."));
-      AssertThrow(
-        chosen,
-        ExcMessage(
-          "Entry '" + Entry::target_error + "' = " +
-          number_text(AccuracyParameters::of(parameters).target_error) +
-          ": the pilots predict an error above the target "
-          "for every degree up to h = H/" +
-          std::to_string(1u << max_halvings) + " and '" + Entry::max_steps +
-          "' = " + std::to_string(parameters.time.max_steps) +
-          " steps (see the lines above). Ask for a larger "
-          "target, or start from a smaller '" +
-          Entry::cell_size + "' and '" + Entry::time_step +
-          "' if the pilots are not yet in the asymptotic "
-          "range."));
+                  ExcMessage("Entry '" + Entry::target_error +
+                             "' = " + number_text(accuracy.target_error) +
+                             ": the pilots are not in the asymptotic range for "
+                             "'" +
+                             accuracy.target_quantity.name() +
+                             "' (see the lines above: an order below " +
+                             number_text(min_plausible_order) +
+                             " or differences that change sign), so they "
+                             "predict nothing. Start from a smaller '" +
+                             Entry::cell_size + "' and '" + Entry::time_step +
+                             "', or choose another '" + Entry::target_quantity +
+                             "'."));
+      AssertThrow(chosen,
+                  ExcMessage("Entry '" + Entry::target_error +
+                             "' = " + number_text(accuracy.target_error) +
+                             ": the pilots predict an error above the target "
+                             "for every degree up to h = H/" +
+                             std::to_string(1u << max_halvings) + " and '" +
+                             Entry::max_steps + "' = " +
+                             std::to_string(parameters.time.max_steps) +
+                             " steps (see the lines above). Ask for a larger "
+                             "target, or start from a smaller '" +
+                             Entry::cell_size + "' and '" + Entry::time_step +
+                             "' if the pilots are not yet in the asymptotic "
+                             "range."));
     }
 
     // The line that announces the chosen run; stops the target where its
