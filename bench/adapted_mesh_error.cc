@@ -20,6 +20,7 @@
 #include <drivers/adapt_during_run.h>
 #include <drivers/mesh_adaptation.h>
 #include <drivers/reference_interpolation.h>
+#include <drivers/study_parameters.h>
 #include <drivers/sub_run.h>
 
 #include <iomanip>
@@ -46,7 +47,7 @@ void compare(const std::string                           &scene,
       std::string        table;
       std::ostringstream pilot_lines;
       std::streambuf    *console = std::cout.rdbuf(pilot_lines.rdbuf());
-      if (parameters.mesh_adaptation.cycles > 0)
+      if (MeshAdaptationParameters::of(parameters).cycles > 0)
         plan = adapt_mesh_by_pilots<dim>(parameters, table);
       std::cout.rdbuf(console);
       const double        pilots = pilots_timer.wall_time();

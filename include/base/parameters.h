@@ -7,7 +7,9 @@
  * involve entries of several subsections, and Geometry::create_mesh()
  * those that need the mesh. A Selection entry is an enum class with its
  * ChoiceTable. The entries of one geometry alone are declared and parsed
- * by that geometry (source/geometry/).
+ * by that geometry (source/geometry/), those of the studies by the
+ * studies (drivers/study_parameters.h): a part declares, parses and
+ * checks its own entries (PartEntries, base/parts.h).
  */
 #ifndef contact_parameters_h
 #define contact_parameters_h
@@ -55,7 +57,8 @@ namespace Contact
    * convergence study's levels and in the checkpoint's list of entries that
    * must not change. One definition each, so that renaming an entry is
    * this line and its declaration; unit/entry_paths checks that every one
-   * of them is declared.
+   * of them is declared. A part's own entries are constants of this
+   * namespace in the part's header.
    */
   namespace Entry
   {
@@ -115,94 +118,6 @@ namespace Contact
     inline const std::string resume              = "Output/Resume";
     inline const std::string manufactured_solution =
       "Verification/Manufactured solution";
-    inline const std::string levels = "Convergence study/Levels";
-    inline const std::string reference_degree =
-      "Convergence study/Reference degree";
-    inline const std::string estimate_error = "Accuracy/Estimate error";
-    inline const std::string separate_space_and_time =
-      "Accuracy/Separate space and time";
-    inline const std::string target_error      = "Accuracy/Target error";
-    inline const std::string target_error_type = "Accuracy/Target error type";
-    inline const std::string target_quantity   = "Accuracy/Target quantity";
-    inline const std::string cost_model        = "Accuracy/Cost model";
-    inline const std::string max_predicted_time =
-      "Accuracy/Maximum predicted time";
-    inline const std::string adaptation_cycles   = "Mesh adaptation/Cycles";
-    inline const std::string adaptation_interval = "Mesh adaptation/Interval";
-    inline const std::string refine_fraction =
-      "Mesh adaptation/Refine fraction";
-    inline const std::string coarsen_fraction =
-      "Mesh adaptation/Coarsen fraction";
-    inline const std::string target_unknowns =
-      "Mesh adaptation/Target unknowns";
-    inline const std::string max_levels = "Mesh adaptation/Max levels";
-    inline const std::string indicators = "Mesh adaptation/Indicators";
-
-    /** All of the above, for the test. */
-    inline std::vector<std::string> all()
-    {
-      return {lower_corner,
-              upper_corner,
-              cell_size,
-              cell_shape,
-              finite_element_degree,
-              mesh_file,
-              mesh_refinements,
-              domain,
-              mapping_degree,
-              refinement_points,
-              refinement_radius,
-              rotation_angle,
-              clamped_boundary_ids,
-              contact_boundary_ids,
-              tractions,
-              density,
-              youngs_modulus,
-              poisson_ratio,
-              body_force,
-              initial_displacement,
-              initial_velocity,
-              friction_bound_S,
-              end_time,
-              time_step,
-              max_steps,
-              convexification_tolerance,
-              max_convexification_iterations,
-              max_active_set_iterations,
-              active_set_parameter,
-              anderson_depth,
-              linear_solver,
-              step_cuts,
-              contact_solver,
-              friction_method,
-              max_newton_iterations,
-              output_directory,
-              time_series,
-              vtu_interval,
-              gamma3_history,
-              report_times,
-              probe_points,
-              checkpoint_interval,
-              checkpoint_minutes,
-              resume,
-              manufactured_solution,
-              levels,
-              reference_degree,
-              estimate_error,
-              separate_space_and_time,
-              target_error,
-              target_error_type,
-              target_quantity,
-              cost_model,
-              max_predicted_time,
-              adaptation_cycles,
-              adaptation_interval,
-              refine_fraction,
-              coarsen_fraction,
-              target_unknowns,
-              max_levels,
-              indicators};
-    }
   } // namespace Entry
 
   struct Parameters;
@@ -421,96 +336,6 @@ namespace Contact
     void        parse_parameters(ParameterHandler &prm);
   };
 
-  struct ConvergenceStudyParameters
-  {
-    enum class Refine
-    {
-      space_and_time,
-      space,
-      time
-    };
-    /** 0: one run; n: n + 1 runs, each halving h and/or k. */
-    unsigned int levels;
-    Refine       refine;
-    /** Element degree of the reference run; 0: that of the levels. */
-    unsigned int reference_degree;
-
-    /** The names of the choices of 'Refine'. */
-    static const ChoiceTable<Refine> &refinements();
-
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
-  };
-
-  struct AccuracyParameters
-  {
-    /** Also run the scene with h and k doubled and quadrupled, and report
-     *  the estimated error of this run (error_estimate.cc). */
-    bool estimate_error;
-    /** Also run with 2h, k and with h, 2k, and split each estimate into
-     *  the part that halving h removes and the part that halving k does. */
-    bool separate_space_and_time;
-    /** 0: off; else the error that the program picks h, k and the element
-     *  degree for (target_error.cc). */
-    double target_error;
-    /** Relative to the size of the quantity, or absolute. */
-    enum class TargetErrorType
-    {
-      relative,
-      absolute
-    };
-    TargetErrorType target_error_type;
-    /** A quantity of the estimate's table. */
-    Quantity target_quantity;
-    /** Predict the cost of a run from the pilots' measured wall times, or
-     *  (reproducibly, for tests) from unknowns times steps. */
-    enum class CostModel
-    {
-      measured,
-      unknowns_times_steps
-    };
-    CostModel cost_model;
-    /** The longest predicted wall time [s] of the run a target chooses (0:
-     *  no limit); beyond it the program stops and says what it would have
-     *  chosen. */
-    double max_predicted_time;
-
-    /** The names of the choices of 'Target error type' and 'Cost
-     *  model'. */
-    static const ChoiceTable<TargetErrorType> &target_error_types();
-    static const ChoiceTable<CostModel>       &cost_models();
-
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
-  };
-
-  /** The subsection Mesh adaptation: pilot runs that adapt the mesh to
-   *  the whole run (drivers/mesh_adaptation.h). */
-  struct MeshAdaptationParameters
-  {
-    /** 0: off; else the number of pilot runs, each on the mesh its
-     *  predecessor adapted. */
-    unsigned int cycles;
-    /** 0: not during the run; else the mesh is adapted after every
-     *  this many steps (ContactProblem::adapt_mesh_during_run()). */
-    unsigned int interval;
-    /** The shares of the cells refined and coarsened per cycle. */
-    double refine_fraction;
-    double coarsen_fraction;
-    /** 0: refine by the fraction; else refine towards this many unknowns
-     *  at the last cycle. */
-    unsigned int target_unknowns;
-    /** The finest cells: this many levels below the scene's coarsest. */
-    unsigned int max_levels;
-    /** Which indicators choose the cells: Kelly's of the displacement, of
-     *  the velocity, the variation of the slip rate on Gamma_3. */
-    std::array<bool, 3>                      indicators;
-    static const std::array<std::string, 3> &indicator_names();
-
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
-  };
-
   /**
    * The subsection Output: the entries that several parts of the program
    * read. Those that one postprocessor alone reads are its own
@@ -535,19 +360,16 @@ namespace Contact
 
   struct Parameters
   {
-    unsigned int               dimension;
-    GeometryParameters         geometry;
-    BoundaryParameters         boundary;
-    MaterialParameters         material;
-    LoadParameters             loads;
-    FrictionParameters         friction;
-    TimeParameters             time;
-    SolverParameters           solver;
-    VerificationParameters     verification;
-    ConvergenceStudyParameters convergence_study;
-    AccuracyParameters         accuracy;
-    MeshAdaptationParameters   mesh_adaptation;
-    OutputParameters           output;
+    unsigned int           dimension;
+    GeometryParameters     geometry;
+    BoundaryParameters     boundary;
+    MaterialParameters     material;
+    LoadParameters         loads;
+    FrictionParameters     friction;
+    TimeParameters         time;
+    SolverParameters       solver;
+    VerificationParameters verification;
+    OutputParameters       output;
 
     /** The values of the parts' own entries (PartEntries, base/parts.h),
      *  as each part's parse() returned them, by the part's name. */
@@ -569,11 +391,6 @@ namespace Contact
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);
-
-  private:
-    void check_error_estimate() const;
-    void check_mesh_adaptation() const;
-    void check_target_quantity() const;
   };
 
   /**

@@ -47,7 +47,11 @@ namespace Contact
    * declared. parse(), if given, reads them in `subsection` once the
    * subsections before it are parsed, checks them (against the other
    * entries of `parameters` where needed, check_entry() naming the entry)
-   * and returns the part's value.
+   * and returns the part's value. check(), if given, checks them against
+   * entries parsed after them (e.g. Output's), once every entry is parsed.
+   * A resumed run may change the entries `may_change_on_resume` (paths
+   * "Subsection/Entry"): they do not define the discrete problem, and the
+   * checkpoint does not compare them.
    */
   struct PartEntries
   {
@@ -56,6 +60,8 @@ namespace Contact
     std::string                                                     last;
     std::function<void(ParameterHandler &)>                         declare;
     std::function<std::any(ParameterHandler &, const Parameters &)> parse;
+    std::function<void(const Parameters &)>                         check{};
+    std::vector<std::string> may_change_on_resume{};
   };
 
   namespace Parts
@@ -79,6 +85,14 @@ namespace Contact
     std::map<std::string, std::any> parse_entries(ParameterHandler  &prm,
                                                   const std::string &subsection,
                                                   const Parameters &parameters);
+
+    /** Calls the check() of every part, in the order of registration,
+     *  once all entries are parsed. */
+    void check_entries(const Parameters &parameters);
+
+    /** Whether a part says that a resumed run may change the entry
+     *  `entry` ("Subsection/Entry"). */
+    bool may_change_on_resume(const std::string &entry);
 
     /** Refuses a part name that a Selection cannot hold: empty, or with
      *  '|' or ',' (its separators). */

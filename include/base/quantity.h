@@ -1,9 +1,9 @@
 /**
  * The scalars of a run that an error estimate compares between runs of
- * different h and k (the rows of its table) and that 'Accuracy/Target
- * quantity' chooses from. The code that computes a quantity names it by
- * name() and the entry is read by parse(): both spell the names of this
- * one table.
+ * different h and k (the rows of its table) and that a target error
+ * chooses from (drivers/study_parameters.h). The code that computes a
+ * quantity names it by name() and the entry is read by parse(): both
+ * spell the names of this one table.
  */
 #ifndef contact_quantity_h
 #define contact_quantity_h
@@ -45,9 +45,9 @@ namespace Contact
      *  integrals are per metre of thickness (plane strain). */
     std::string unit(const unsigned int dim) const;
 
-    /** The quantity called `text`; an error names 'Accuracy/Target
-     *  quantity' and the allowed names. */
-    static Quantity parse(const std::string &text);
+    /** The quantity called `text`; an error names the entry `entry`
+     *  ("Subsection/Entry") that gave it and the allowed names. */
+    static Quantity parse(const std::string &text, const std::string &entry);
 
     /** Every quantity of a scene with `n_probes` probe points in `dim`
      *  dimensions. */

@@ -237,6 +237,14 @@ namespace Contact
     void adapt_mesh_during_run(const unsigned int    interval,
                                std::function<void()> choose_cells);
 
+    /** Whether the mesh adapts during the run (adapt_mesh_during_run()):
+     *  what the postprocessors ask before they report the energy that the
+     *  transfers to new meshes change. */
+    bool adapts_mesh_during_run() const
+    {
+      return adaptation.interval > 0;
+    }
+
     /** The scene's mesh changed by the cycles so far. */
     const MeshPlan &get_mesh_plan() const;
 

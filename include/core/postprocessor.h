@@ -29,7 +29,7 @@
  *                              over its halves),
  *   mesh_event(before_change)
  *   and mesh_event(after_change) before and after the mesh is adapted
- *                              during the run ('Mesh adaptation/Interval'):
+ *                              during the run (adapt_mesh_during_run()):
  *                              u_n and w_n are on the new mesh, the matrices
  *                              assembled and the friction solver set up;
  *                              what a postprocessor keeps of the mesh is

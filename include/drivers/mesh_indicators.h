@@ -24,6 +24,7 @@
 
 #include <base/parameters.h>
 #include <core/postprocessor.h>
+#include <drivers/study_parameters.h>
 
 #include <array>
 #include <map>

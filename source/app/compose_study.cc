@@ -6,6 +6,7 @@
 #include <drivers/convergence_study.h>
 #include <drivers/error_estimate.h>
 #include <drivers/mesh_adaptation.h>
+#include <drivers/study_parameters.h>
 #include <drivers/target_error.h>
 
 namespace Contact
@@ -16,18 +17,18 @@ namespace Contact
   template <int dim>
   std::unique_ptr<Study<dim>> compose_study(const Parameters &scene)
   {
-    if (scene.convergence_study.levels > 0)
+    if (ConvergenceStudyParameters::of(scene).levels > 0)
       return std::make_unique<ConvergenceStudy<dim>>();
     const Equipment<dim> equipment = adapt_during_run<dim>;
-    if (scene.accuracy.target_error > 0)
+    if (AccuracyParameters::of(scene).target_error > 0)
       return std::make_unique<TargetError<dim>>(
         std::make_unique<ErrorEstimate<dim>>(equipment), equipment);
     std::unique_ptr<Study<dim>> run;
-    if (scene.accuracy.estimate_error)
+    if (AccuracyParameters::of(scene).estimate_error)
       run = std::make_unique<ErrorEstimate<dim>>(equipment);
     else
       run = std::make_unique<SingleRun<dim>>(equipment);
-    if (scene.mesh_adaptation.cycles > 0)
+    if (MeshAdaptationParameters::of(scene).cycles > 0)
       return std::make_unique<PilotAdaptation<dim>>(std::move(run));
     return run;
   }

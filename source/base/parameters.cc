@@ -2,8 +2,9 @@
    order, the checks that involve entries of several subsections, and the
    muparser expressions. Each subsection's own entries are in
    scene_parameters.cc (the scene), solver_parameters.cc (the solvers and
-   the verification), study_parameters.cc (the studies) and
-   output_parameters.cc (the output). */
+   the verification) and output_parameters.cc (the output); the parts
+   (base/parts.h) declare, parse and check theirs, the studies' subsections
+   among them (drivers/study_parameters.cc). */
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -12,7 +13,6 @@
 #include <deal.II/lac/vector.h>
 
 #include <base/dimensions.h>
-#include <base/geometry_base.h>
 #include <base/parameters.h>
 
 #include <algorithm>
@@ -96,236 +96,10 @@ namespace Contact
     TimeParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);
     VerificationParameters::declare_parameters(prm);
-    ConvergenceStudyParameters::declare_parameters(prm);
-    AccuracyParameters::declare_parameters(prm);
-    MeshAdaptationParameters::declare_parameters(prm);
+    Parts::declare_entries_after(prm, "", "Verification");
     OutputParameters::declare_parameters(prm);
   }
 
-
-  namespace
-  {
-    // Where the mesh adapts (`adapting` names the entry that makes it do
-    // so): what the other entries, the drivers' among them, must allow.
-    void check_adaptation_combinations(const Parameters  &parameters,
-                                       const std::string &adapting)
-    {
-      // An error estimate runs a mesh adapted by pilots coarsened, cell by
-      // cell (MeshPlan::coarser()), which gives nested meshes for plans that
-      // refine only.
-      AssertThrow(!parameters.accuracy.estimate_error ||
-                    parameters.mesh_adaptation.cycles == 0 ||
-                    parameters.mesh_adaptation.coarsen_fraction == 0,
-                  ExcMessage(
-                    adapting + "with '" + Entry::estimate_error +
-                    "' its coarse runs are the adapted mesh coarsened, "
-                    "which is only defined for meshes that the pilots "
-                    "refined; allowed with it is '" +
-                    Entry::coarsen_fraction + "' = 0."));
-      // During the run, a mesh that keeps its size at the target must give
-      // cells back to refine others.
-      AssertThrow(parameters.mesh_adaptation.interval == 0 ||
-                    parameters.mesh_adaptation.target_unknowns == 0 ||
-                    parameters.mesh_adaptation.coarsen_fraction > 0,
-                  ExcMessage(
-                    adapting + "with '" + Entry::target_unknowns + "' = " +
-                    std::to_string(parameters.mesh_adaptation.target_unknowns) +
-                    " the mesh keeps about that size once it has "
-                    "reached it, and can then follow the solution only "
-                    "by coarsening where it refines; allowed with it is "
-                    "'" +
-                    Entry::coarsen_fraction + "' > 0."));
-      AssertThrow(parameters.convergence_study.levels == 0,
-                  ExcMessage(adapting + "it cannot be combined with '" +
-                             Entry::levels + "' yet; allowed are '" +
-                             Entry::adaptation_cycles + "' = 0 and '" +
-                             Entry::adaptation_interval + "' = 0 there."));
-      // A target's 'Target unknowns' is the size of the scene's degree's
-      // adapted mesh, scaled for the other of the degrees 1 and 2 that it
-      // compares.
-      check_entry(parameters.accuracy.target_error == 0 ||
-                    parameters.mesh_adaptation.target_unknowns == 0 ||
-                    parameters.geometry.fe_degree <= 2,
-                  Entry::finite_element_degree,
-                  parameters.geometry.fe_degree,
-                  "1 or 2 with '" + Entry::target_error + "' > 0 and '" +
-                    Entry::target_unknowns +
-                    "' > 0 (the target compares degrees 1 and 2, and scales "
-                    "'" +
-                    Entry::target_unknowns +
-                    "' from the scene's degree to the other)");
-      // A target compares uniform meshes with meshes adapted during the run
-      // (target_error.cc); the pilots' adaptation would need its own cycles
-      // at each candidate h.
-      AssertThrow(parameters.accuracy.target_error == 0 ||
-                    parameters.mesh_adaptation.cycles == 0,
-                  ExcMessage(adapting + "it cannot be combined with '" +
-                             Entry::target_error +
-                             "' yet, which chooses between uniform meshes and "
-                             "meshes adapted during the run; allowed are '" +
-                             Entry::adaptation_cycles + "' = 0 (with '" +
-                             Entry::adaptation_interval +
-                             "' > 0 for the adapted ones) or '" +
-                             Entry::target_error + "' = 0."));
-    }
-  } // namespace
-
-
-  // A mesh adaptation refines the cells of p4est's forest by their ids,
-  // and runs the scene as it is several times: not as a level of a study
-  // (yet), nor as a target's pilot (those adapt during the run). An error
-  // estimate runs a mesh adapted by pilots coarsened, and a run adapted during
-  // itself again from coarser meshes (scene_variant.cc).
-  void Parameters::check_mesh_adaptation() const
-  {
-    if (mesh_adaptation.cycles == 0 && mesh_adaptation.interval == 0)
-      {
-        AssertThrow(mesh_adaptation.target_unknowns == 0,
-                    ExcMessage("Entry '" + Entry::target_unknowns + "' = " +
-                               std::to_string(mesh_adaptation.target_unknowns) +
-                               " is the size of an adapted mesh, but nothing "
-                               "adapts the mesh: allowed with it is '" +
-                               Entry::adaptation_cycles + "' > 0 or '" +
-                               Entry::adaptation_interval + "' > 0 (or " +
-                               Entry::target_unknowns + " = 0)."));
-        return;
-      }
-    const std::string adapting =
-      mesh_adaptation.cycles > 0 ?
-        "Entry '" + Entry::adaptation_cycles +
-          "' = " + std::to_string(mesh_adaptation.cycles) +
-          " adapts the mesh: " :
-        "Entry '" + Entry::adaptation_interval +
-          "' = " + std::to_string(mesh_adaptation.interval) +
-          " adapts the mesh during the run: ";
-    AssertThrow(mesh_adaptation.cycles == 0 || mesh_adaptation.interval == 0,
-                ExcMessage(adapting + "it cannot be combined with '" +
-                           Entry::adaptation_interval +
-                           "' = " + std::to_string(mesh_adaptation.interval) +
-                           " yet; allowed is one of the two, the other 0."));
-    // Settings under which the mesh cannot change at all.
-    check_entry(mesh_adaptation.max_levels > 0,
-                Entry::max_levels,
-                mesh_adaptation.max_levels,
-                "at least 1 where the mesh adapts (with 0 no cell may be "
-                "refined, and none coarser than the Geometry's)");
-    if (mesh_adaptation.interval > 0)
-      check_entry(mesh_adaptation.interval < time.n_steps(),
-                  Entry::adaptation_interval,
-                  mesh_adaptation.interval,
-                  "0 or below the run's " + std::to_string(time.n_steps()) +
-                    " steps (the mesh adapts after every n-th step but "
-                    "the last)");
-    AssertThrow(geometry.cell_shape != GeometryParameters::CellShape::simplex,
-                ExcMessage(adapting +
-                           "it refines quadrilaterals and "
-                           "hexahedra only; allowed with it is '" +
-                           Entry::cell_shape + "' = hypercube."));
-    check_adaptation_combinations(*this, adapting);
-  }
-
-
-  // An error estimate runs the scene twice more, with h and k doubled and
-  // quadrupled, and a target's pilots do so in h and in k separately: the
-  // coarse meshes must exist, and the runs are separate (not a study, not
-  // a resumed run).
-  void Parameters::check_error_estimate() const
-  {
-    const bool target = accuracy.target_error > 0;
-    AssertThrow(accuracy.estimate_error || target ||
-                  !accuracy.separate_space_and_time,
-                ExcMessage("Entry '" + Entry::separate_space_and_time +
-                           "' = true splits an error estimate: allowed with "
-                           "it is '" +
-                           Entry::estimate_error + "' = true or '" +
-                           Entry::target_error + "' > 0."));
-    AssertThrow(accuracy.max_predicted_time == 0 ||
-                  (target && accuracy.cost_model ==
-                               AccuracyParameters::CostModel::measured),
-                ExcMessage("Entry '" + Entry::max_predicted_time +
-                           "' = " + number_text(accuracy.max_predicted_time) +
-                           " limits the run that a target chooses by its "
-                           "predicted wall time: allowed with it are '" +
-                           Entry::target_error + "' > 0 and '" +
-                           Entry::cost_model + "' = " +
-                           AccuracyParameters::cost_models().name(
-                             AccuracyParameters::CostModel::measured) +
-                           " (or 0 for no limit)."));
-    if (target)
-      {
-        check_target_quantity();
-        // The nearest valid steps: T / N for the multiples N of 4 around
-        // the N = ceil(T / k) that the entry gives.
-        const unsigned int n     = time.n_steps();
-        const unsigned int below = std::max(4u, n / 4 * 4);
-        check_entry(
-          n % 4 == 0,
-          Entry::time_step,
-          time.time_step,
-          "a step that divides '" + Entry::end_time +
-            "' into a multiple of 4 steps with '" + Entry::target_error +
-            "' > 0 (the pilots run with 2k and 4k on the same "
-            "time grid); this one gives " +
-            std::to_string(n) + " steps, the nearest valid ones are T/" +
-            std::to_string(below) + " = " + number_text(time.end_time / below) +
-            " and T/" + std::to_string(below + 4) + " = " +
-            number_text(time.end_time / (below + 4)));
-      }
-    if (!accuracy.estimate_error && !target)
-      return;
-    const std::string mode = target ? "'" + Entry::target_error + "' > 0" :
-                                      "'" + Entry::estimate_error + "' = true";
-    AssertThrow(convergence_study.levels == 0 && !output.resume,
-                ExcMessage("Entry " + mode +
-                           " runs one scene with its error estimate; "
-                           "allowed with it are '" +
-                           Entry::levels + "' = 0 and no --resume ('" +
-                           Entry::resume + "' = false)" +
-                           (target ? std::string(".") :
-                                     "; a run killed before its estimate "
-                                     "resumes with '" +
-                                       Entry::estimate_error +
-                                       "' = false, and continues without "
-                                       "it.")));
-    // The geometry knows how its h is set, and so which meshes of 2h and
-    // 4h exist.
-    create_geometry(*this)->check_coarse_runs(mode);
-  }
-
-  // A probe's quantity needs the probe: the target must be one of this
-  // scene's quantities.
-  void Parameters::check_target_quantity() const
-  {
-    const std::string target = accuracy.target_quantity.name();
-    bool              found  = false;
-    std::string       list;
-    for (const Quantity &quantity :
-         Quantity::of_scene(output.probe_points.size(), dimension))
-      {
-        found = found || quantity.name() == target;
-        list += (list.empty() ? "'" : ", '") + quantity.name() + "'";
-      }
-    AssertThrow(found,
-                ExcMessage(
-                  "Entry '" + Entry::target_quantity + "' = '" + target +
-                  "' is not a quantity of this scene; allowed: " + list + "."));
-    // Found out before the pilots run: a closed Gamma_3 has no start of
-    // its slip zone, and its x has no scale of its own.
-    if (accuracy.target_quantity.kind != Quantity::Kind::slip_zone_start)
-      return;
-    AssertThrow(!create_geometry(*this)->gamma3_is_closed(),
-                ExcMessage("Entry '" + Entry::target_quantity + "' = '" +
-                           target +
-                           "' is not defined on a shell (its Gamma_3 is a "
-                           "closed circle); allowed there are the others of " +
-                           list + "."));
-    AssertThrow(accuracy.target_error_type ==
-                  AccuracyParameters::TargetErrorType::absolute,
-                ExcMessage("Entry '" + Entry::target_error_type +
-                           "': a relative target on '" + target +
-                           "' would depend on where x = 0 is; allowed for "
-                           "it is absolute (a length in m)."));
-  }
 
   void Parameters::parse_parameters(ParameterHandler &prm)
   {
@@ -354,9 +128,7 @@ namespace Contact
     time.parse_parameters(prm);
     solver.parse_parameters(prm);
     verification.parse_parameters(prm);
-    convergence_study.parse_parameters(prm);
-    accuracy.parse_parameters(prm);
-    mesh_adaptation.parse_parameters(prm);
+    part_values.merge(Parts::parse_entries(prm, "", *this));
     output.parse_parameters(prm, dimension);
 
     // On a P2 triangle the integral of a vertex basis function is zero:
@@ -384,12 +156,7 @@ namespace Contact
     prm.enter_subsection("Output");
     part_values.merge(Parts::parse_entries(prm, "Output", *this));
     prm.leave_subsection();
-    AssertThrow(!(output.resume && convergence_study.levels > 0),
-                ExcMessage("Entry 'Output/Resume' (--resume): a convergence "
-                           "study ('Convergence study/Levels' > 0) cannot be "
-                           "resumed; allowed is Resume = false there."));
-    check_error_estimate();
-    check_mesh_adaptation();
+    Parts::check_entries(*this);
 
     // The parameters a run writes run it again from its start: a resumed
     // run computes what the run without the break computes

@@ -1,5 +1,5 @@
 /* The entries of the parts: declared where each part places them, parsed
-   in the order the parts were registered. */
+   and checked in the order the parts were registered. */
 
 #include <base/parts.h>
 
@@ -76,6 +76,24 @@ namespace Contact
         if (added.entries.subsection == subsection && added.entries.parse)
           values[added.part] = added.entries.parse(prm, parameters);
       return values;
+    }
+
+
+    void check_entries(const Parameters &parameters)
+    {
+      for (const Added &added : registered())
+        if (added.entries.check)
+          added.entries.check(parameters);
+    }
+
+
+    bool may_change_on_resume(const std::string &entry)
+    {
+      for (const Added &added : registered())
+        for (const std::string &path : added.entries.may_change_on_resume)
+          if (path == entry)
+            return true;
+      return false;
     }
 
 

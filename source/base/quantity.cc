@@ -72,7 +72,7 @@ namespace Contact
 
   // @sect4{Quantity::parse}
 
-  Quantity Quantity::parse(const std::string &text)
+  Quantity Quantity::parse(const std::string &text, const std::string &entry)
   {
     for (const auto &[name, kind] : fixed_names())
       if (name == text)
@@ -88,7 +88,7 @@ namespace Contact
     for (const auto &[name, kind] : fixed_names())
       allowed += "'" + name + "', ";
     AssertThrow(false,
-                ExcMessage("Entry '" + Entry::target_quantity + "' = '" + text +
+                ExcMessage("Entry '" + entry + "' = '" + text +
                            "' is not a quantity; allowed: " + allowed +
                            "or 'probe <i> u_x' (u_y, u_z) of the i-th '" +
                            Entry::probe_points + "' point."));

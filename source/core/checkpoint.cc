@@ -29,6 +29,7 @@
 
 #include <base/dimensions.h>
 #include <base/printed_entries.h>
+#include <base/parts.h>
 #include <core/checkpoint.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
@@ -69,9 +70,9 @@ namespace Contact
     // What a resumed run may change without changing the discrete problem
     // (README, 'When a run fails'): the end and the solver, the output
     // except the probes, the time series and the Gamma_3 history, whose
-    // rows and columns must continue, and whether the run is followed by
-    // an error estimate (a resume is not: the estimate of a killed run is
-    // dropped).
+    // rows and columns must continue, and the entries that a part says
+    // a resumed run may change (whether the run is followed by an error
+    // estimate: a resume is not, the estimate of a killed run is dropped).
     // k itself is part of the checkpoint's shape.
     bool may_change_on_resume(const std::string &entry)
     {
@@ -80,8 +81,7 @@ namespace Contact
         return false;
       return entry.rfind("Output/", 0) == 0 || entry.rfind("Solver/", 0) == 0 ||
              entry == Entry::end_time || entry == Entry::time_step ||
-             entry == Entry::max_steps || entry == Entry::estimate_error ||
-             entry == Entry::separate_space_and_time;
+             entry == Entry::max_steps || Parts::may_change_on_resume(entry);
     }
 
     // 'Section/Entry' -> value for the entries of the .prm (its ShortPRM

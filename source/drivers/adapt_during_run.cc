@@ -15,6 +15,7 @@
 #include <core/output_directory.h>
 #include <drivers/adapt_during_run.h>
 #include <drivers/mesh_indicators.h>
+#include <drivers/study_parameters.h>
 
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
@@ -168,7 +169,8 @@ namespace Contact
   void adapt_during_run(ContactProblem<dim> &problem,
                         const Parameters    &parameters)
   {
-    const MeshAdaptationParameters &adaptation = parameters.mesh_adaptation;
+    const MeshAdaptationParameters &adaptation =
+      MeshAdaptationParameters::of(parameters);
     if (adaptation.interval == 0)
       return;
     auto chooser = std::make_unique<AdaptationDuringRun<dim>>(adaptation);

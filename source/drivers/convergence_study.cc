@@ -27,6 +27,7 @@
 #include <drivers/convergence_study.h>
 #include <drivers/reference_interpolation.h>
 #include <drivers/scene_variant.h>
+#include <drivers/study_parameters.h>
 
 #include <cmath>
 #include <fstream>
@@ -71,8 +72,9 @@ namespace Contact
     SceneVariant level_variant(const Parameters  &scene,
                                const unsigned int level)
     {
-      const ConvergenceStudyParameters &study     = scene.convergence_study;
-      const bool                        reference = level == study.levels &&
+      const ConvergenceStudyParameters &study =
+        ConvergenceStudyParameters::of(scene);
+      const bool reference = level == study.levels &&
                              study.reference_degree > 0 &&
                              !scene.verification.manufactured();
       return {study.refine == Refine::time ? 0 : static_cast<int>(level),
@@ -111,10 +113,10 @@ namespace Contact
     run_levels(const std::vector<Parameters>        &levels,
                std::unique_ptr<ContactProblem<dim>> &reference)
     {
-      const unsigned int       L      = levels.size() - 1;
-      const bool               exact  = levels[0].verification.manufactured();
-      const Refine             refine = levels[0].convergence_study.refine;
-      std::vector<LevelResult> results(L + 1);
+      const unsigned int L     = levels.size() - 1;
+      const bool         exact = levels[0].verification.manufactured();
+      const Refine refine = ConvergenceStudyParameters::of(levels[0]).refine;
+      std::vector<LevelResult>                     results(L + 1);
       std::unique_ptr<ReferenceInterpolation<dim>> interpolate;
       using NodesInCells =
         std::vector<typename ReferenceInterpolation<dim>::NodeInCell>;
@@ -252,7 +254,7 @@ namespace Contact
                      const TableHandler             &table)
     {
       const bool        exact  = scene.verification.manufactured();
-      const Refine      refine = scene.convergence_study.refine;
+      const Refine      refine = ConvergenceStudyParameters::of(scene).refine;
       const RunSummary &finest = results.back().run;
       console() << std::endl
                 << "Convergence study (refining "
@@ -301,7 +303,7 @@ namespace Contact
                                        // mesh: no study wraps this one.
                                        const StudyInput<dim> &)
   {
-    const unsigned int L     = scene.convergence_study.levels;
+    const unsigned int L     = ConvergenceStudyParameters::of(scene).levels;
     const bool         exact = scene.verification.manufactured();
     // Every level's entries are checked before the first level runs, so
     // that a study does not fail at its finest level (e.g. over 'Time/Max
@@ -329,15 +331,17 @@ namespace Contact
             {
               runs_without_degree = false;
             }
-          AssertThrow(!(level == L && runs_without_degree &&
-                        scene.convergence_study.reference_degree > 0 &&
-                        !scene.verification.manufactured()),
-                      ExcMessage("Entry '" + Entry::reference_degree + "' = " +
-                                 std::to_string(
-                                   scene.convergence_study.reference_degree) +
-                                 ": the reference level cannot run with "
-                                 "this degree, for this reason: " +
-                                 Utilities::trim(text.str())));
+          AssertThrow(
+            !(level == L && runs_without_degree &&
+              ConvergenceStudyParameters::of(scene).reference_degree > 0 &&
+              !scene.verification.manufactured()),
+            ExcMessage(
+              "Entry '" + Entry::reference_degree + "' = " +
+              std::to_string(
+                ConvergenceStudyParameters::of(scene).reference_degree) +
+              ": the reference level cannot run with "
+              "this degree, for this reason: " +
+              Utilities::trim(text.str())));
           throw;
         }
     // The study owns its directory while it runs (a plain run there would

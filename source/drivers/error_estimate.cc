@@ -30,6 +30,7 @@
 #include <drivers/error_estimate.h>
 #include <drivers/reference_interpolation.h>
 #include <drivers/scene_variant.h>
+#include <drivers/study_parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -409,8 +410,9 @@ namespace Contact
     // is a multiple of 4.
     // A run whose mesh changes during it has no one mesh to compare its
     // earlier states on: only its state at T is compared.
-    const unsigned int  n_steps      = parameters.time.n_steps();
-    const bool          mesh_changes = parameters.mesh_adaptation.interval > 0;
+    const unsigned int n_steps = parameters.time.n_steps();
+    const bool         mesh_changes =
+      MeshAdaptationParameters::of(parameters).interval > 0;
     const unsigned int  history_factor = mesh_changes            ? 0 :
                                          n_steps % coarsest == 0 ? coarsest :
                                          n_steps % 4 == 0        ? 4 :
@@ -428,7 +430,7 @@ namespace Contact
     for (unsigned int factor = 2; factor <= coarsest; factor *= 2)
       runs.sequence.push_back(coarse.run(
         factor, factor, "coarse-" + std::to_string(runs.sequence.size())));
-    if (parameters.accuracy.separate_space_and_time)
+    if (AccuracyParameters::of(parameters).separate_space_and_time)
       for (unsigned int factor = 2; factor <= 4; factor *= 2)
         {
           const std::string level = std::to_string(factor / 2);

@@ -8,6 +8,7 @@
 
 #include <base/quantity.h>
 #include <drivers/error_estimate.h>
+#include <drivers/study_parameters.h>
 #include <geometry/geometry.h>
 
 #include <algorithm>
@@ -58,7 +59,9 @@ namespace Contact
       for (const EstimateRow &row : rows)
         {
           table.add_value("quantity", row.name);
-          table.add_value("unit", Quantity::parse(row.name).unit(dim));
+          table.add_value(
+            "unit",
+            Quantity::parse(row.name, Entry::target_quantity).unit(dim));
           table.add_value("value", scientific(row.value));
           // The largest over time may come without the run with 8h.
           for (unsigned int i = 0; i < n_differences; ++i)
@@ -217,7 +220,8 @@ namespace Contact
             << "(the separation splits the rows at T only); with degree "
             << parameters.geometry.fe_degree << " it may be too small."
             << std::endl;
-      if (!has_worst_row && parameters.mesh_adaptation.interval > 0)
+      if (!has_worst_row &&
+          MeshAdaptationParameters::of(parameters).interval > 0)
         out << worst_V_error << ": not estimated: the mesh changes during "
             << "the run, so its earlier states have no one mesh to be "
             << "compared on." << std::endl;
@@ -264,11 +268,11 @@ namespace Contact
       // A run adapted during itself: its coarse runs adapt the same way
       // towards 1/2^dim of the unknowns per level, which a mesh too coarse
       // to refine (a share of a few cells rounds to none) does not reach.
-      if (parameters.mesh_adaptation.interval > 0)
+      if (MeshAdaptationParameters::of(parameters).interval > 0)
         {
           out << "The runs adapt their meshes during the run, from the h "
               << "above";
-          if (parameters.mesh_adaptation.target_unknowns > 0)
+          if (MeshAdaptationParameters::of(parameters).target_unknowns > 0)
             out << " towards 1/" << (1u << parameters.dimension)
                 << " of the unknowns per level";
           else

@@ -25,6 +25,7 @@
 #include <drivers/mesh_adaptation.h>
 #include <drivers/mesh_indicators.h>
 #include <drivers/scene_variant.h>
+#include <drivers/study_parameters.h>
 #include <drivers/sub_run.h>
 
 #include <algorithm>
@@ -184,11 +185,12 @@ namespace Contact
   template <int dim>
   MeshPlan adapt_mesh_by_pilots(const Parameters &scene, std::string &table)
   {
-    const MeshAdaptationParameters &adaptation = scene.mesh_adaptation;
-    const std::string              &directory  = scene.output.directory;
-    MeshPlan                        plan;
-    TableHandler                    cycles;
-    unsigned int                    base_level = 0;
+    const MeshAdaptationParameters &adaptation =
+      MeshAdaptationParameters::of(scene);
+    const std::string &directory = scene.output.directory;
+    MeshPlan           plan;
+    TableHandler       cycles;
+    unsigned int       base_level = 0;
     for (unsigned int cycle = 0; cycle < adaptation.cycles; ++cycle)
       {
         const std::string   name = "adaptation-cycle-" + std::to_string(cycle);

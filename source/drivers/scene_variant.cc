@@ -7,6 +7,7 @@
 #include <base/geometry_base.h>
 #include <base/printed_entries.h>
 #include <drivers/scene_variant.h>
+#include <drivers/study_parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -40,9 +41,9 @@ namespace Contact
     std::map<std::string, std::string>
     variant_entries(const Parameters &scene, const SceneVariant &variant)
     {
-      const AccuracyParameters          &accuracy = scene.accuracy;
-      const OutputParameters            &output   = scene.output;
-      const bool                         quiet    = variant.quiet;
+      const AccuracyParameters &accuracy = AccuracyParameters::of(scene);
+      const OutputParameters   &output   = scene.output;
+      const bool                quiet    = variant.quiet;
       std::map<std::string, std::string> entries;
       entries[Entry::finite_element_degree] = std::to_string(variant.degree);
       entries[Entry::time_step] =
@@ -59,8 +60,9 @@ namespace Contact
       // cells have more volume. A variant without adaptation runs on the
       // uniform mesh, and so does one of a single step (the mesh adapts
       // after a step but the last).
-      const MeshAdaptationParameters &adaptation = scene.mesh_adaptation;
-      entries[Entry::adaptation_cycles]          = "0";
+      const MeshAdaptationParameters &adaptation =
+        MeshAdaptationParameters::of(scene);
+      entries[Entry::adaptation_cycles] = "0";
       const long interval =
         std::min(std::max(1L,
                           std::lround(double(adaptation.interval) *
@@ -137,7 +139,8 @@ namespace Contact
         }
     Parameters parameters;
     parameters.parse_parameters(prm);
-    parameters.keeps_pilots = !variant.quiet && scene.accuracy.target_error > 0;
+    parameters.keeps_pilots =
+      !variant.quiet && AccuracyParameters::of(scene).target_error > 0;
     return parameters;
   }
 } // namespace Contact

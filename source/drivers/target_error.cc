@@ -27,6 +27,7 @@
 #include <base/dimensions.h>
 #include <drivers/scene_variant.h>
 #include <core/output_directory.h>
+#include <drivers/study_parameters.h>
 #include <drivers/target_error.h>
 #include <drivers/target_error_pilots.h>
 
@@ -206,8 +207,8 @@ namespace Contact
     // " m" after an error of the target quantity; nothing for a share.
     std::string unit_of_target(const Parameters &parameters)
     {
-      const std::string unit =
-        parameters.accuracy.target_quantity.unit(parameters.dimension);
+      const std::string unit = AccuracyParameters::of(parameters)
+                                 .target_quantity.unit(parameters.dimension);
       return unit == "1" ? std::string() : " " + unit;
     }
 
@@ -222,7 +223,7 @@ namespace Contact
                                     const double        target,
                                     std::ostream       &out)
     {
-      const bool measured = parameters.accuracy.cost_model ==
+      const bool measured = AccuracyParameters::of(parameters).cost_model ==
                             AccuracyParameters::CostModel::measured;
       const bool   timings = parameters.output.print_timings;
       const double K = parameters.time.end_time / parameters.time.n_steps();
@@ -233,17 +234,17 @@ namespace Contact
         {
           std::optional<Candidate> best;
           for (unsigned int m = 0; m <= max_halvings; ++m)
-            if (const auto c =
-                  candidate(model,
-                            results.time,
-                            results.cosine,
-                            m,
-                            dim,
-                            parameters.time.end_time,
-                            K,
-                            allowed,
-                            parameters.time.max_steps,
-                            parameters.accuracy.separate_space_and_time))
+            if (const auto c = candidate(
+                  model,
+                  results.time,
+                  results.cosine,
+                  m,
+                  dim,
+                  parameters.time.end_time,
+                  K,
+                  allowed,
+                  parameters.time.max_steps,
+                  AccuracyParameters::of(parameters).separate_space_and_time))
               if (!best || c->predicted_cost < best->predicted_cost)
                 best = c;
           out << "Degree " << model.degree
@@ -332,7 +333,7 @@ namespace Contact
                               const Parameters   &parameters,
                               const double        target)
     {
-      const auto       &accuracy = parameters.accuracy;
+      const auto       &accuracy = AccuracyParameters::of(parameters);
       const std::string quantity = accuracy.target_quantity.name();
       const double K = parameters.time.end_time / parameters.time.n_steps();
       const std::string  unit = unit_of_target(parameters);
@@ -353,7 +354,8 @@ namespace Contact
         out << "; space and time errors combine as |e_h + e_k|^2 = E_h^2 + "
             << "E_k^2 + 2 c E_h E_k with c = " << results.cosine;
       out << std::endl;
-      const MeshAdaptationParameters &adaptation = parameters.mesh_adaptation;
+      const MeshAdaptationParameters &adaptation =
+        MeshAdaptationParameters::of(parameters);
       if (has_adapted_family(parameters))
         {
           out << "The adapted pilots adapt their meshes every "
@@ -364,8 +366,9 @@ namespace Contact
               for (const DegreeModel &model : results.models)
                 if (model.adapted)
                   out << " "
-                      << scene_of(parameters, results, model.degree, true)
-                           .mesh_adaptation.target_unknowns
+                      << MeshAdaptationParameters::of(
+                           scene_of(parameters, results, model.degree, true))
+                           .target_unknowns
                       << " (Q" << model.degree << ")";
               out << " unknowns from H, and 1/" << (1u << parameters.dimension)
                   << " and 1/" << (1u << (2 * parameters.dimension))
@@ -390,8 +393,9 @@ namespace Contact
                               const RunResult  &result,
                               const double      target)
     {
-      const std::string quantity  = parameters.accuracy.target_quantity.name();
-      double            estimated = std::numeric_limits<double>::quiet_NaN();
+      const std::string quantity =
+        AccuracyParameters::of(parameters).target_quantity.name();
+      double estimated = std::numeric_limits<double>::quiet_NaN();
       for (const EstimateRow &row : result.rows)
         if (row.name == quantity)
           estimated = row.estimate.error;
@@ -477,28 +481,29 @@ namespace Contact
                         const PilotResults             &pilots,
                         const std::optional<Candidate> &chosen)
     {
-      bool some_degree_predicts = false;
+      const AccuracyParameters &accuracy = AccuracyParameters::of(parameters);
+      bool                      some_degree_predicts = false;
       for (const DegreeModel &model : pilots.models)
         some_degree_predicts =
           some_degree_predicts || std::isfinite(model.space.error);
       const bool predicts =
         std::isfinite(pilots.time.error) && some_degree_predicts;
       AssertThrow(chosen || predicts,
-                  ExcMessage(
-                    "Entry '" + Entry::target_error +
-                    "' = " + number_text(parameters.accuracy.target_error) +
-                    ": the pilots are not in the asymptotic range for "
-                    "'" +
-                    parameters.accuracy.target_quantity.name() +
-                    "' (see the lines above: an order below " +
-                    number_text(min_plausible_order) +
-                    " or differences that change sign), so they "
-                    "predict nothing. Start from a smaller '" +
-                    Entry::cell_size + "' and '" + Entry::time_step +
-                    "', or choose another '" + Entry::target_quantity + "'."));
+                  ExcMessage("Entry '" + Entry::target_error +
+                             "' = " + number_text(accuracy.target_error) +
+                             ": the pilots are not in the asymptotic range for "
+                             "'" +
+                             accuracy.target_quantity.name() +
+                             "' (see the lines above: an order below " +
+                             number_text(min_plausible_order) +
+                             " or differences that change sign), so they "
+                             "predict nothing. Start from a smaller '" +
+                             Entry::cell_size + "' and '" + Entry::time_step +
+                             "', or choose another '" + Entry::target_quantity +
+                             "'."));
       AssertThrow(chosen,
-                  ExcMessage("Entry '" + Entry::target_error + "' = " +
-                             number_text(parameters.accuracy.target_error) +
+                  ExcMessage("Entry '" + Entry::target_error +
+                             "' = " + number_text(accuracy.target_error) +
                              ": the pilots predict an error above the target "
                              "for every degree up to h = H/" +
                              std::to_string(1u << max_halvings) + " and '" +
@@ -517,7 +522,7 @@ namespace Contact
                          const Candidate  &chosen,
                          const std::function<void(const std::string &)> &print)
     {
-      const bool measured = parameters.accuracy.cost_model ==
+      const bool measured = AccuracyParameters::of(parameters).cost_model ==
                             AccuracyParameters::CostModel::measured;
       std::ostringstream choice_line;
       choice_line << std::setprecision(3)
@@ -531,7 +536,8 @@ namespace Contact
                     << " s";
       choice_line << ", with its error estimate" << std::endl;
       print(choice_line.str());
-      const double limit = parameters.accuracy.max_predicted_time;
+      const double limit =
+        AccuracyParameters::of(parameters).max_predicted_time;
       AssertThrow(limit == 0 || !measured || chosen.predicted_cost <= limit,
                   ExcMessage("Entry '" + Entry::max_predicted_time +
                              "' = " + number_text(limit) +
@@ -557,7 +563,8 @@ namespace Contact
         run_pilots<dim>(parameters, equipment, [&](const std::string &line) {
           print(line + "\n");
         });
-      const double target = target_of(parameters.accuracy, pilots);
+      const double target =
+        target_of(AccuracyParameters::of(parameters), pilots);
       print("\n" + pilots_report(pilots, parameters, target));
       std::ostringstream choice;
       choice << std::setprecision(3);
@@ -575,13 +582,14 @@ namespace Contact
          parameters.output.directory,
          false,
          chosen->adapted});
-      const RunResult result = chosen_run.run(
-        chosen_scene,
-        {MeshPlan(),
-         known_orders(pilots,
-                      *chosen,
-                      parameters.accuracy.target_quantity.name()),
-         {}});
+      const RunResult result =
+        chosen_run.run(chosen_scene,
+                       {MeshPlan(),
+                        known_orders(pilots,
+                                     *chosen,
+                                     AccuracyParameters::of(parameters)
+                                       .target_quantity.name()),
+                        {}});
       print("\n" + chosen_report(parameters, *chosen, result, target));
       if (parameters.output.print_timings)
         {

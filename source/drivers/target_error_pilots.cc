@@ -20,6 +20,7 @@
 #include <core/output_directory.h>
 #include <drivers/reference_interpolation.h>
 #include <drivers/richardson.h>
+#include <drivers/study_parameters.h>
 #include <drivers/target_error_pilots.h>
 
 #include <algorithm>
@@ -322,8 +323,9 @@ namespace Contact
         PilotResults                                   &results,
         const std::function<void(const std::string &)> &print)
       {
-        const std::string quantity = parameters.accuracy.target_quantity.name();
-        PilotFamily<dim>  family(
+        const std::string quantity =
+          AccuracyParameters::of(parameters).target_quantity.name();
+        PilotFamily<dim> family(
           parameters, degree, adapted, equip, results.pilots, print);
         family.run(1, 1);
         family.run(2, 1);
@@ -367,8 +369,9 @@ namespace Contact
     // needs the states over time on one mesh.
     bool has_adapted_family(const Parameters &parameters)
     {
-      return parameters.mesh_adaptation.interval > 0 &&
-             parameters.accuracy.target_quantity.name() != worst_V_error;
+      return MeshAdaptationParameters::of(parameters).interval > 0 &&
+             AccuracyParameters::of(parameters).target_quantity.name() !=
+               worst_V_error;
     }
 
     // The scene as the candidates of a degree and family run it. Meshes
@@ -382,7 +385,7 @@ namespace Contact
                         const bool          adapted)
     {
       Parameters own = scene;
-      if (!adapted || scene.mesh_adaptation.target_unknowns == 0)
+      if (!adapted || MeshAdaptationParameters::of(scene).target_unknowns == 0)
         return own;
       types::global_dof_index pilot_degree = 0, of_scene_degree = 0;
       for (const DegreeModel &model : results.models)
@@ -394,9 +397,10 @@ namespace Contact
               of_scene_degree = model.n_dofs;
           }
       Assert(pilot_degree > 0 && of_scene_degree > 0, ExcInternalError());
-      own.mesh_adaptation.target_unknowns = static_cast<unsigned int>(
-        std::lround(double(scene.mesh_adaptation.target_unknowns) *
-                    pilot_degree / of_scene_degree));
+      MeshAdaptationParameters::of(own).target_unknowns =
+        static_cast<unsigned int>(std::lround(
+          double(MeshAdaptationParameters::of(scene).target_unknowns) *
+          pilot_degree / of_scene_degree));
       return own;
     }
 
@@ -436,7 +440,7 @@ namespace Contact
       for (DegreeModel &model : results.models)
         fit_cost(model,
                  results.pilots,
-                 parameters.accuracy.cost_model ==
+                 AccuracyParameters::of(parameters).cost_model ==
                    AccuracyParameters::CostModel::measured);
       results.wall_time = timer.wall_time();
       return results;

@@ -350,7 +350,7 @@ namespace Contact
                   << energy.viscous_dissipation << ", friction "
                   << cancelling(energy.friction_dissipation) << ", numerical "
                   << cancelling(energy.numerical_dissipation);
-    if (this->parameters().mesh_adaptation.interval > 0)
+    if (this->problem().adapts_mesh_during_run())
       this->pcout() << ", mesh transfers " << cancelling(energy.mesh_transfer);
     this->pcout() << std::endl;
   }

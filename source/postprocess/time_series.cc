@@ -55,7 +55,7 @@ namespace Contact
     // runs that adapt during the run alone.
     bool adapts_during_run() const
     {
-      return this->parameters().mesh_adaptation.interval > 0;
+      return this->problem().adapts_mesh_during_run();
     }
 
     CsvFile file;

@@ -17,6 +17,7 @@
 
 #include <base/geometry_base.h>
 #include <base/parameters.h>
+#include <drivers/study_parameters.h>
 
 #include <iostream>
 #include <map>
@@ -157,7 +158,8 @@ int main()
               << std::endl;
 
   for (const Quantity &quantity : Quantity::of_scene(2, 3))
-    if (Quantity::parse(quantity.name()).name() != quantity.name())
+    if (Quantity::parse(quantity.name(), Entry::target_quantity).name() !=
+        quantity.name())
       std::cout << "'" << quantity.name() << "' does not parse back"
                 << std::endl;
   std::cout << Quantity::of_scene(2, 3).size()
@@ -165,7 +167,7 @@ int main()
   for (const std::string name : {"probe 0 u_x", "probe 1 u_w", "V-norm"})
     try
       {
-        Quantity::parse(name);
+        Quantity::parse(name, Entry::target_quantity);
         std::cout << "'" << name << "' is accepted" << std::endl;
       }
     catch (const ExceptionBase &exc)

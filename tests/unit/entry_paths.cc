@@ -1,15 +1,16 @@
-/* Every entry that code outside parameters.cc names (Contact::Entry, in
-   error messages, a convergence study's overrides and the checkpoint's
-   list of entries that must not change) is declared: a renamed entry
-   whose path in Entry was not renamed with it makes this test fail.
-   The check itself must be able to fail: a path that is not declared is
-   reported as such. The list Entry::all() (the core's entries, in
-   include/base/parameters.h) and the lists of the parts whose headers add
-   their own constants to the namespace (the shell's, below) must hold
-   every constant of the namespace, counted in every header of include/,
-   and no source file other than parameters.cc may spell an entry path as
-   a literal ('Subsection/Entry' of a declared subsection): such lines are
-   printed. */
+/* Every entry that code outside the files that declare the entries names
+   (a constant of a namespace Entry, in error messages, the scene variants'
+   overrides and the checkpoint's list of entries that must not change) is
+   declared: a renamed entry whose constant was not renamed with it makes
+   this test fail. The constants are read from the text of every header of
+   include/, from each of its namespaces Entry (the core's in
+   base/parameters.h, a part's in the part's own header), so that a
+   constant added in any of them is checked; one whose value is not a
+   single string literal is printed. The check itself must be able to
+   fail: a path that is not declared is reported as such. No source file
+   other than one that declares entries (a *parameters.cc) may spell an
+   entry path as a literal ('Subsection/Entry' of a declared subsection):
+   such lines are printed. */
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -19,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <regex>
 #include <string>
 #include <vector>
@@ -48,6 +50,43 @@ namespace
       prm.leave_subsection();
     return found;
   }
+
+
+  // The constants of the namespaces Entry in the headers under
+  // `directory`: their values, and the names of those whose value is not
+  // one string literal.
+  void read_entry_constants(const std::filesystem::path &directory,
+                            std::vector<std::string>    &paths,
+                            std::vector<std::string>    &not_literal)
+  {
+    const std::regex constant(
+      "inline const std::string\\s+(\\w+)\\s*=\\s*(\"([^\"]*)\"\\s*;)?");
+    for (const auto &file :
+         std::filesystem::recursive_directory_iterator(directory))
+      {
+        if (!file.is_regular_file() || file.path().extension() != ".h")
+          continue;
+        std::ifstream     in(file.path());
+        const std::string text((std::istreambuf_iterator<char>(in)),
+                               std::istreambuf_iterator<char>());
+        for (std::size_t begin = text.find("namespace Entry\n");
+             begin != std::string::npos;
+             begin = text.find("namespace Entry\n", begin + 1))
+          {
+            const std::size_t end   = text.find("} // namespace Entry", begin);
+            const std::string block = text.substr(begin, end - begin);
+            for (std::sregex_iterator match(block.begin(),
+                                            block.end(),
+                                            constant);
+                 match != std::sregex_iterator();
+                 ++match)
+              if ((*match)[2].matched)
+                paths.push_back((*match)[3].str());
+              else
+                not_literal.push_back((*match)[1].str());
+          }
+      }
+  }
 } // namespace
 
 int main()
@@ -55,14 +94,10 @@ int main()
   dealii::ParameterHandler prm;
   Contact::Parameters::declare_parameters(prm);
 
-  namespace Entry                = Contact::Entry;
-  std::vector<std::string> paths = Entry::all();
-  // The parts' own constants.
-  for (const std::string &path : {Entry::inner_radius,
-                                  Entry::outer_radius,
-                                  Entry::shell_length,
-                                  Entry::cells_around})
-    paths.push_back(path);
+  std::vector<std::string> paths, not_literal;
+  read_entry_constants(CONTACT_SOURCE_ROOT "/include", paths, not_literal);
+  for (const std::string &name : not_literal)
+    std::cout << "not a string literal: Entry::" << name << std::endl;
   unsigned int undeclared = 0;
   for (const std::string &path : paths)
     if (!is_declared(prm, path))
@@ -70,30 +105,9 @@ int main()
         std::cout << "not declared: " << path << std::endl;
         ++undeclared;
       }
-  std::cout << paths.size() << " entry paths named outside parameters.cc, "
-            << undeclared << " of them not declared" << std::endl;
-
-  // The constants of namespace Entry in the headers, against the lists.
-  unsigned int constants = 0;
-  for (const auto &file : std::filesystem::recursive_directory_iterator(
-         CONTACT_SOURCE_ROOT "/include"))
-    {
-      std::ifstream header(file.path());
-      bool          in_entry = false;
-      for (std::string line; std::getline(header, line);)
-        {
-          if (line.find("} // namespace Entry") != std::string::npos)
-            in_entry = false;
-          else if (line.find("namespace Entry") != std::string::npos)
-            in_entry = true;
-          else if (in_entry &&
-                   line.find("inline const std::string") != std::string::npos)
-            ++constants;
-        }
-    }
-  std::cout << constants << " constants in namespace Entry, "
-            << (constants == paths.size() ? "all" : "not all")
-            << " of them in Entry::all()" << std::endl;
+  std::cout << paths.size() + not_literal.size()
+            << " constants in the namespaces Entry of include/, " << undeclared
+            << " of them not declared" << std::endl;
 
   // Literal entry paths (inside a string literal) outside the files that
   // declare the entries.
@@ -107,8 +121,7 @@ int main()
     {
       const std::string name = file.path().filename().string();
       const bool        declares_entries =
-        file.path().parent_path().filename() == "base" && name.size() >= 13 &&
-        name.substr(name.size() - 13) == "parameters.cc";
+        name.size() >= 13 && name.substr(name.size() - 13) == "parameters.cc";
       if (!file.is_regular_file() || declares_entries)
         continue;
       std::ifstream in(file.path());
@@ -124,7 +137,7 @@ int main()
     }
   std::cout << literals
             << " literal entry paths in source files other than "
-               "base/*parameters.cc"
+               "*parameters.cc"
             << std::endl;
 
   std::cout << "a path that is not declared, 'Solver/Convexification "

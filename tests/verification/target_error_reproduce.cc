@@ -15,6 +15,7 @@
 
 #include <app/compose_study.h>
 #include <app/run.h>
+#include <drivers/study_parameters.h>
 
 #include "scene_files.h"
 
@@ -72,9 +73,10 @@ int main(int argc, char **argv)
   std::cout.rdbuf(console);
 
   std::cout << "the written parameters.prm has no target: "
-            << (again.accuracy.target_error == 0 ? "yes" : "no")
+            << (AccuracyParameters::of(again).target_error == 0 ? "yes" : "no")
             << "; runs with its error estimate: "
-            << (again.accuracy.estimate_error ? "yes" : "no") << std::endl;
+            << (AccuracyParameters::of(again).estimate_error ? "yes" : "no")
+            << std::endl;
   const std::string chosen = contents("run-target/time_series.csv");
   std::cout << "the chosen run keeps the pilots it was chosen by: "
             << (std::filesystem::exists(
