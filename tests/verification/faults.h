@@ -37,8 +37,9 @@ namespace Contact
    * wrong coefficient; 0 removes the friction there) while the checks use
    * the true law, and with `reversed_friction_force` it applies and
    * reports -eta instead of eta. The loads (ScaledLoads, made by the
-   * problem's create_loads()) are multiplied by `load_factor`. The errors in the solver's map of Gamma_3,
-   * which the checks do not share (Gamma3Map): a wrong compliance
+   * problem's create_loads()) are multiplied by `load_factor`. The errors in
+   * the solver's map of Gamma_3, which the checks do not share (Gamma3Map): a
+   * wrong compliance
    * (`compliance_factor` times D on the Delassus paths, times the step's
    * velocity on the constraints path), the Delassus operator of the old k
    * kept after a step cut, the nodes' weights times `weight_factor`, the
