@@ -17,11 +17,11 @@
 
 #include <app/run.h>
 #include <core/contact_problem.h>
-#include <drivers/adapt_during_run.h>
-#include <drivers/mesh_adaptation.h>
-#include <drivers/reference_interpolation.h>
-#include <drivers/study_parameters.h>
-#include <drivers/sub_run.h>
+#include <parts/adaptation/adapt_during_run.h>
+#include <parts/studies/mesh_adaptation.h>
+#include <parts/studies/reference_interpolation.h>
+#include <parts/studies/study_parameters.h>
+#include <parts/studies/sub_run.h>
 
 #include <iomanip>
 #include <iostream>

@@ -1,5 +1,5 @@
 /**
- * The study that a scene asks for, composed of the studies of drivers/
+ * The study that a scene asks for, composed of the studies of parts/studies/
  * (compose_study.cc): a convergence study, a run to a target error (whose
  * chosen run is a run with its error estimate), pilots that adapt the mesh
  * (wrapping a single run or a run with its error estimate), a run with its
@@ -10,8 +10,8 @@
 #ifndef contact_compose_study_h
 #define contact_compose_study_h
 
-#include <base/parameters.h>
-#include <drivers/study.h>
+#include <core/parameters.h>
+#include <parts/studies/study.h>
 
 #include <memory>
 

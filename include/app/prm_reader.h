@@ -8,7 +8,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <base/parameters.h>
+#include <core/parameters.h>
 
 #include <string>
 #include <utility>

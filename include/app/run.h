@@ -8,7 +8,7 @@
 #ifndef contact_run_h
 #define contact_run_h
 
-#include <base/parameters.h>
+#include <core/parameters.h>
 
 #include <string>
 #include <vector>

@@ -123,7 +123,7 @@ namespace Contact
 
     /** What the messages call a part of this kind: "part", unless the
      *  kind names itself by specialising this function (e.g. "friction
-     *  law", base/friction_laws.h). */
+     *  law", core/friction_laws.h). */
     static std::string noun();
 
     /** Adds a part; a name already registered for this kind is an error.

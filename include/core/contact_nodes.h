@@ -6,7 +6,7 @@
 #define contact_contact_nodes_h
 
 #include <core/discrete_space.h>
-#include <gamma3/friction_solver.h>
+#include <core/friction_solver.h>
 
 #include <vector>
 

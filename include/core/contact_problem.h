@@ -20,12 +20,12 @@
  * Checkpoint and restart are a class of their own (Checkpoint,
  * checkpoint.h) that the problem owns.
  * Everything that observes a run (output, self-checks, diagnostics) is a
- * Postprocessor (postprocessor.h, source/postprocess/): the time loop is
- * "advance; then each postprocessor". The friction problem on Gamma_3 (its
- * nodes, the path to the body, the Newton method and the convexification,
- * the nodal state) is a component of its own, FrictionSolver<dim>
- * (friction_solver.h): a step is "right-hand side, friction solver,
- * update".
+ * Postprocessor (postprocessor.h; the console and VTU in source/core/, the
+ * others in source/parts/): the time loop is "advance; then each
+ * postprocessor". The friction problem on Gamma_3 (its nodes, the path to the
+ * body, the Newton method and the convexification, the nodal state) is a
+ * component of its own, FrictionSolver<dim> (friction_solver.h): a step is
+ * "right-hand side, friction solver, update".
  */
 #ifndef contact_contact_problem_h
 #define contact_contact_problem_h
@@ -36,17 +36,17 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <base/parameters.h>
-#include <core/checkpoint.h>
+#include <core/parameters.h>
+#include <parts/checkpoint/checkpoint.h>
 #include <core/discrete_space.h>
 #include <core/loads.h>
-#include <core/manufactured_solution.h>
+#include <parts/manufactured/manufactured_solution.h>
 #include <core/mesh_plan.h>
 #include <core/step_state.h>
-#include <gamma3/factorization.h>
-#include <gamma3/friction.h>
-#include <gamma3/friction_solver.h>
-#include <geometry/geometry.h>
+#include <core/factorization.h>
+#include <core/friction.h>
+#include <core/friction_solver.h>
+#include <core/geometry.h>
 
 #include <array>
 #include <functional>
@@ -334,7 +334,7 @@ namespace Contact
 
     // Mesh, finite element space and constraints (setup.cc), the cycles of
     // a mesh adaptation that change the Geometry's mesh
-    // (drivers/mesh_adaptation.h) and those to come during the run
+    // (parts/studies/mesh_adaptation.h) and those to come during the run
     // (mesh_transfer.cc), and the loads on the space (loads.cc; with
     // 'Verification/Manufactured solution' they are the manufactured
     // solution's).

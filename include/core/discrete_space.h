@@ -22,7 +22,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <base/parameters.h>
+#include <core/parameters.h>
 
 #include <memory>
 

@@ -16,10 +16,10 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <base/parameters.h>
+#include <core/parameters.h>
 #include <core/discrete_space.h>
-#include <core/manufactured_solution.h>
-#include <gamma3/friction_solver.h>
+#include <parts/manufactured/manufactured_solution.h>
+#include <core/friction_solver.h>
 
 #include <functional>
 #include <map>

@@ -1,5 +1,5 @@
 /**
- * MeshPlan: how a mesh adaptation (drivers/mesh_adaptation.h) changed the
+ * MeshPlan: how a mesh adaptation (parts/studies/mesh_adaptation.h) changed the
  * scene's mesh, cycle by cycle: the cells it refined and those it
  * coarsened, by their CellId. The scene's mesh is built as always and the
  * cycles are then replayed (mesh_plan.cc), on one process or on several:

@@ -2,12 +2,12 @@
 
 #include <app/compose_study.h>
 #include <base/dimensions.h>
-#include <drivers/adapt_during_run.h>
-#include <drivers/convergence_study.h>
-#include <drivers/error_estimate.h>
-#include <drivers/mesh_adaptation.h>
-#include <drivers/study_parameters.h>
-#include <drivers/target_error.h>
+#include <parts/adaptation/adapt_during_run.h>
+#include <parts/studies/convergence_study.h>
+#include <parts/studies/error_estimate.h>
+#include <parts/studies/mesh_adaptation.h>
+#include <parts/studies/study_parameters.h>
+#include <parts/studies/target_error.h>
 
 namespace Contact
 {

@@ -2,7 +2,7 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <base/parameters.h>
+#include <core/parameters.h>
 #include <base/quantity.h>
 
 #include <regex>

@@ -10,7 +10,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <base/dimensions.h>
-#include <base/parameters.h>
+#include <core/parameters.h>
 #include <core/contact_nodes.h>
 
 #include <algorithm>

@@ -18,7 +18,7 @@
 #include <core/csv_file.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
-#include <geometry/geometry.h>
+#include <core/geometry.h>
 
 #include <algorithm>
 #include <cerrno>

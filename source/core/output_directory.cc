@@ -4,7 +4,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
-#include <base/parameters.h>
+#include <core/parameters.h>
 #include <core/output_directory.h>
 
 #include <fcntl.h>

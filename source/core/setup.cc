@@ -20,7 +20,7 @@
 #include <core/contact_nodes.h>
 #include <core/contact_problem.h>
 #include <core/postprocessor.h>
-#include <geometry/geometry.h>
+#include <core/geometry.h>
 
 #include <algorithm>
 #include <cmath>
@@ -35,11 +35,12 @@ namespace Contact
 {
   // @sect4{ContactProblem::make_grid}
 
-  // The geometry of the .prm builds the mesh (source/geometry/).
-  // Hypercubes go to p4est's distributed triangulation, which refines its
-  // own part. p4est does not take simplices: on several processes the
-  // whole simplex mesh is built on every process, partitioned by METIS, and
-  // each process keeps its part in a fully distributed triangulation.
+  // The geometry of the .prm builds the mesh (source/core/box.cc,
+  // source/parts/<geometry>/). Hypercubes go to p4est's distributed
+  // triangulation, which refines its own part. p4est does not take simplices:
+  // on several processes the whole simplex mesh is built on every process,
+  // partitioned by METIS, and each process keeps its part in a fully
+  // distributed triangulation.
   template <int dim>
   void ContactProblem<dim>::make_grid()
   {

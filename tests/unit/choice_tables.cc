@@ -15,9 +15,9 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
-#include <base/geometry_base.h>
-#include <base/parameters.h>
-#include <drivers/study_parameters.h>
+#include <core/geometry_base.h>
+#include <core/parameters.h>
+#include <parts/studies/study_parameters.h>
 
 #include <iostream>
 #include <map>

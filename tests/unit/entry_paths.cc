@@ -4,7 +4,7 @@
    declared: a renamed entry whose constant was not renamed with it makes
    this test fail. The constants are read from the text of every header of
    include/, from each of its namespaces Entry (the core's in
-   base/parameters.h, a part's in the part's own header), so that a
+   core/parameters.h, a part's in the part's own header), so that a
    constant added in any of them is checked; one whose value is not a
    single string literal is printed. The check itself must be able to
    fail: a path that is not declared is reported as such. No source file
@@ -14,8 +14,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <base/parameters.h>
-#include <geometry/shell.h>
+#include <core/parameters.h>
+#include <parts/shell/shell.h>
 
 #include <filesystem>
 #include <fstream>

@@ -3,7 +3,7 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <base/parameters.h>
+#include <core/parameters.h>
 
 #include <iostream>
 

@@ -1,7 +1,7 @@
 /* The friction law (6.1), its bound, its potential j of (3.8) and its
    one-sided Lipschitz constant; the constant and the frictionless law. */
 
-#include <gamma3/friction.h>
+#include <core/friction.h>
 
 #include <cmath>
 #include <iomanip>

@@ -18,9 +18,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <base/friction_laws.h>
-#include <base/parameters.h>
-#include <gamma3/friction.h>
+#include <core/friction_laws.h>
+#include <core/parameters.h>
+#include <core/friction.h>
 
 #include <cmath>
 #include <iomanip>

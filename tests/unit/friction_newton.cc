@@ -19,9 +19,9 @@
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
-#include <gamma3/delassus_operator.h>
-#include <gamma3/friction.h>
-#include <base/parameters.h>
+#include <core/delassus_operator.h>
+#include <core/friction.h>
+#include <core/parameters.h>
 
 #include "make_delassus.h"
 

@@ -5,7 +5,7 @@
    in the asymptotic range gives no estimate and says why. Every check of
    the estimate is made to fire here. */
 
-#include <drivers/richardson.h>
+#include <parts/studies/richardson.h>
 
 #include <array>
 #include <cmath>

@@ -18,8 +18,8 @@
 #include <core/contact_nodes.h>
 #include <core/contact_problem.h>
 #include <core/loads.h>
-#include <gamma3/delassus_operator.h>
-#include <gamma3/friction_solver.h>
+#include <core/delassus_operator.h>
+#include <core/friction_solver.h>
 
 #include <algorithm>
 #include <cmath>

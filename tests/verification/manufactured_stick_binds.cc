@@ -14,7 +14,7 @@
 
 #include <core/contact_problem.h>
 #include <core/postprocessor.h>
-#include <core/manufactured_solution.h>
+#include <parts/manufactured/manufactured_solution.h>
 #include <app/run.h>
 
 #include "faults.h"

@@ -19,7 +19,7 @@
 #include <app/run.h>
 #include <core/contact_problem.h>
 #include <core/mesh_plan.h>
-#include <geometry/geometry.h>
+#include <core/geometry.h>
 
 #include <cmath>
 #include <cstdint>

@@ -1,7 +1,7 @@
 /* A geometry added from outside the program, as doc/tutorial.md's
    checklist "Adding a geometry" describes: a class defined in this file
    alone, registered as a part with an entry of its own, with no file of
-   base/, core/ or geometry/ changed. The strip [0, 1] x [0, 1/4] (x
+   base/ or core/ changed. The strip [0, 1] x [0, 1/4] (x
    [0, 1/4] in 3D) of 'Strip cells' cells along x and a quarter of them
    across, with boundary ids of its own: 5 at x = 0, 7 at y = 0, 6 at
    y = 1/4 (0 elsewhere).
@@ -20,9 +20,9 @@
 #include <deal.II/grid/grid_generator.h>
 
 #include <app/run.h>
-#include <base/geometry_base.h>
+#include <core/geometry_base.h>
 #include <core/contact_problem.h>
-#include <geometry/geometry.h>
+#include <core/geometry.h>
 
 #include <iostream>
 #include <sstream>

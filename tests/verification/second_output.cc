@@ -1,7 +1,7 @@
 /* An output added from outside the program, as doc/tutorial.md's checklist
    "Adding an output" describes: a postprocessor defined in this file alone,
    registered as a part with an entry of its own, with no file of base/,
-   core/ or postprocess/ changed. It keeps the peak of the velocity's
+   core/ or parts/ changed. It keeps the peak of the velocity's
    Euclidean norm over the run ('Output/Velocity peak = true'), puts the peak so
    far into each row of time_series.csv, stores it with a checkpoint and prints
    it when the run ends.

@@ -2,8 +2,8 @@
    "Adding a study" describes: a class derived from Study<dim> that wraps
    another study (given at construction) and builds a run of its own as a
    scene variant, defined in this file alone, with no file of base/, core/
-   or drivers/ changed. It runs the scene (through the wrapped study, in the
-   scene's directory) and the scene with k halved (in a subdirectory), and
+   or parts/studies/ changed. It runs the scene (through the wrapped study, in
+   the scene's directory) and the scene with k halved (in a subdirectory), and
    gives back the scene's run with the differences of its quantities at T.
 
    Checked: the wrapped study's run and the study's own run both happen
@@ -17,8 +17,8 @@
 
 #include <app/run.h>
 #include <base/quantity.h>
-#include <drivers/scene_variant.h>
-#include <drivers/study.h>
+#include <parts/studies/scene_variant.h>
+#include <parts/studies/study.h>
 
 #include <cmath>
 #include <iomanip>

@@ -15,7 +15,7 @@
 
 #include <app/compose_study.h>
 #include <app/run.h>
-#include <drivers/study_parameters.h>
+#include <parts/studies/study_parameters.h>
 
 #include "scene_files.h"
 
