@@ -15,64 +15,26 @@
 namespace Contact
 {
   /**
-   * The self-checks of a run (doc/verification.md), each a
-   * relative violation that round-off keeps far below
-   * SelfChecks::tolerance:
-   *   - matrices: once, before the first step, M, A and B against the
-   *     integrals of their forms on two fields in V_h (x^T M x against
-   *     int rho |x_h|^2 with the assembly's quadrature, ...): wrong
-   *     matrices. They do not change during a run (a step cut forms K
-   *     from them anew).
-   *   - algebraic_energy: the step's part of the energy identity (5.7),
-   *     from the products of the step's matrices with w_n, relative to the
-   *     sum of the magnitudes of its terms (the energies before and after
-   *     the step among them). It holds whenever each step solves its
-   *     linear system with the eta it reports, whatever the matrices, the
-   *     loads or the friction law: it checks the solve and the bookkeeping.
-   *   - load_power: the step's load power F_n . w_n with the assembled load
-   *     vector against int f(t_n) . w_h from the loads' expressions
-   *     (Loads::power()), relative to |F_n| |w_n| plus the magnitudes of
-   *     the integral's products: a load vector that is not the loads'
-   *     integral (not where F . w vanishes, e.g. a pressure normal to the
-   *     motion).
-   *   - constraints: how far w_n is from V_h (the constraints of the clamp
-   *     and of the bilateral contact), relative to max |w_n|.
-   *   - equation_residual: (5.2) at t_n from the stored fields,
-   *     K w_n - (F_n + M w_{n-1} / k - B u_{n-1}) + C^T eta_n, with the
-   *     solver's nodal forces applied through the checks' own map of
-   *     Gamma_3 (Gamma3Map), relative to the largest of the three terms of
-   *     this step: it catches a velocity that is not the solution of the
-   *     step's system with the reported forces (a stale factorisation, a
-   *     wrong compliance of Gamma_3 on the constraints path, a force put on
-   *     the wrong dofs).
+   * The self-checks of a run, each a relative violation that round-off
+   * keeps far below SelfChecks::tolerance. What each compares, relative to
+   * what, and what it catches is the table of doc/verification.md; each is
+   * computed by the member of SelfChecks (self_checks.cc) named here:
+   *   - matrices: M, A and B against the integrals of their forms, once
+   *     before the first step (check_matrices()).
+   *   - algebraic_energy: the step's part of the energy identity (5.7);
+   *     load_power: the load vector against the loads' integral
+   *     (check_energy_and_loads()).
+   *   - constraints: how far w_n is from V_h (check_constraints()).
+   *   - equation_residual: (5.2) at t_n from the stored fields
+   *     (equation_residual()).
    *   - friction_law: the friction law (5.3)-(5.4) at the stored
-   *     velocities, with the checks' weights and normals (Gamma3Map) and
-   *     the true law: on a node the solver says slips, the distance of the
-   *     tangential part of its force from g_p(|v_p|) v_p / |v_p|; on one
-   *     that sticks, how far the force exceeds g_p(0); relative to
-   *     max_p g_p(0). It catches a wrong coefficient, sign, weight,
-   *     tangent or compliance in the solver. It fails where it exceeds the
-   *     tolerance and twice what the convexification's own tolerance
-   *     allows (friction_law_allowance,
-   *     FrictionSolver::law_residual_allowance).
-   *   - stick_motion: the speed of the nodes the solver says stick, at
-   *     the stored velocity, relative to the step's speed scale, the larger
-   *     of max |w_n| and max |v_free| (FrictionSolver::free_slip_speed(),
-   *     the size of the terms whose difference a sticking node's velocity
-   *     is, so that a body held by friction alone with little inertia, K
-   *     close to singular, does not fail by round-off): a sticking node
-   *     that moves.
-   *   - negative_friction_power: a step whose friction power on the
-   *     slipping nodes (the same forces and velocities) is negative,
-   *     relative to the energies (friction only dissipates).
-   *   - moment_balance: the balance of moments about the z-axis, (5.2)
-   *     tested with the rigid rotation r = e_z x x, relative to the
-   *     step's sum of the magnitudes of the products it adds up
-   *     (update_moments()). Checked where r lies in V_h, and on a round
-   *     body without a clamp whose mapping's degree is at most the
-   *     element's, where it must (MomentBalance): it catches wrong loads
-   *     or velocities in the balance law of the angular momentum, and on
-   *     such a body nodes' normals that are not radial.
+   *     velocities; it fails where it exceeds the tolerance and twice what
+   *     the convexification's own tolerance allows (friction_law_allowance,
+   *     FrictionSolver::law_residual_allowance). stick_motion: the speed of
+   *     the nodes the solver says stick; negative_friction_power: the
+   *     friction power on the slipping nodes (check_friction_law()).
+   *   - moment_balance: the balance of moments about the z-axis, where it
+   *     can be stated (update_moments(), MomentBalance).
    */
   struct SelfCheckValues
   {
@@ -128,7 +90,8 @@ namespace Contact
   };
 
 
-  /** * The moments about the z-axis through the origin (the axis normal to
+  /**
+   * The moments about the z-axis through the origin (the axis normal to
    * the plane in 2D) at t_n: the angular momentum L_n = int rho (x x w_n)_z
    * (with the mass matrix's quadrature), the moment of the loads F_n, that
    * of the friction forces -C^T eta_n on the body, and what is left of

@@ -1,7 +1,5 @@
 /**
- * 'Convergence study/Levels' > 0: the scene runs Levels + 1 times, halving
- * h, k or both from one level to the next, and the errors are printed with
- * their rates (convergence_study.cc).
+ * 'Convergence study/Levels' > 0 (convergence_study.cc).
  */
 #ifndef contact_convergence_study_h
 #define contact_convergence_study_h
@@ -11,10 +9,11 @@
 
 namespace Contact
 {
-  /** Runs the levels of the study of the scene (each in its own
-   *  subdirectory level-l, on the scene's own mesh refined), and prints and
-   *  writes the table of errors and rates (convergence.txt). Its result is
-   *  empty: no one run stands for the study. */
+  /** Runs the scene Levels + 1 times, halving h, k or both from one level
+   *  to the next (each level in its own subdirectory level-l, on the
+   *  scene's own mesh refined), and prints and writes the table of errors
+   *  and rates (convergence.txt). Its result is empty: no one run stands
+   *  for the study. */
   template <int dim>
   class ConvergenceStudy : public Study<dim>
   {

@@ -1,10 +1,6 @@
 /**
- * 'Accuracy/Estimate error': a run that also says how accurate it is. The
- * scene runs as given, then with h and k doubled, quadrupled and (where the
- * mesh allows) multiplied by 8; from the differences of consecutive runs
- * each quantity's error at T is estimated by Richardson extrapolation
- * (richardson.h) with the order the runs show, where they show one order
- * consistently (error_estimate.cc; the report: error_estimate_report.cc).
+ * 'Accuracy/Estimate error': a run that also says how accurate it is
+ * (error_estimate.cc; the report: error_estimate_report.cc).
  */
 #ifndef contact_error_estimate_h
 #define contact_error_estimate_h
@@ -18,13 +14,10 @@
 
 namespace Contact
 {
-  /** The coarse runs take ceil(N / 2^l) steps; a ratio of their time step
-   *  to the run's that differs from 2^l by more than this (relative) gets a
-   *  warning. */
-  constexpr double max_step_ratio_deviation = 0.05;
-
-  /** Runs the scene and its coarse versions, and prints and writes the
-   *  estimated errors (error_estimate.txt), each run equipped by
+  /** Runs the scene as given, then with h and k doubled, quadrupled and
+   *  (where the mesh allows) multiplied by 8, and prints and writes the
+   *  errors at T that Richardson extrapolation (richardson.h) estimates
+   *  from their differences (error_estimate.txt), each run equipped by
    *  `equipment`. A quantity with known orders in h and k
    *  (StudyInput::orders) is extrapolated with both. On a mesh adapted by
    *  pilots (StudyInput::plan: the cycles that changed the scene's mesh)

@@ -1,8 +1,5 @@
 /**
- * 'Mesh adaptation/Cycles' > 0: pilot runs of the whole scene, each on the
- * mesh its predecessor adapted from error indicators gathered over all of
- * its steps, and then the scene on the adapted mesh, run by the study that
- * this one wraps (mesh_adaptation.cc).
+ * 'Mesh adaptation/Cycles' > 0 (mesh_adaptation.cc).
  */
 #ifndef contact_mesh_adaptation_h
 #define contact_mesh_adaptation_h
@@ -16,13 +13,9 @@
 
 namespace Contact
 {
-  /** The pilots alone: runs them (each in its own subdirectory
-   *  adaptation-cycle-c) and returns the adapted mesh's cycles, and the
-   *  table of the cycles as text. */
-  template <int dim>
-  MeshPlan adapt_mesh_by_pilots(const Parameters &scene, std::string &table);
-
-  /** Runs the pilots of the scene, then the scene on the adapted mesh by
+  /** Runs the pilots of the scene, each on the mesh its predecessor adapted
+   *  from error indicators gathered over its steps (each in its own
+   *  subdirectory adaptation-cycle-c), then the scene on the adapted mesh by
    *  `run_on_adapted_mesh` (a single run, or a run with its error
    *  estimate, whose coarse runs are on that mesh coarsened); the run in
    *  the scene's directory writes the cycles' table (adaptation.txt) and

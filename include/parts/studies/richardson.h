@@ -15,6 +15,9 @@
 
 namespace Contact
 {
+  /** A value that is not there: not measured, not defined, no estimate. */
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
   /** An observed order outside this range means the runs are not in the
    *  asymptotic range: the scheme is first order for smooth solutions,
    *  about 2/3 with the corner singularity of the paper's scene, up to 2 in
@@ -42,9 +45,9 @@ namespace Contact
     std::vector<double> measured_orders;
     /** The order the estimate uses, the smallest measured one (which gives
      *  the larger estimate); NaN where there is no estimate. */
-    double order = std::numeric_limits<double>::quiet_NaN();
+    double order = nan;
     /** |d_0| / (2^order - 1); NaN where the runs give no estimate. */
-    double error = std::numeric_limits<double>::quiet_NaN();
+    double error = nan;
     /** Empty where the estimate rests on consistent runs; else a short
      *  verdict ("not asymptotic", "does not converge", ...), with the reason
      *  in `reason`. */

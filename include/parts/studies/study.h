@@ -37,14 +37,14 @@ namespace Contact
     /** With the separation: the parts of the error that halving only h
      *  and only k remove (signed for a quantity), each with the order its
      *  own runs show, and whether the estimate is their sum. */
-    double space_part  = std::numeric_limits<double>::quiet_NaN();
-    double time_part   = std::numeric_limits<double>::quiet_NaN();
-    double space_order = std::numeric_limits<double>::quiet_NaN();
-    double time_order  = std::numeric_limits<double>::quiet_NaN();
+    double space_part  = nan;
+    double time_part   = nan;
+    double space_order = nan;
+    double time_order  = nan;
     bool   from_parts  = false;
-    double exact_error = std::numeric_limits<double>::quiet_NaN();
+    double exact_error = nan;
     /** For worst_V_error: the time of the largest estimate. */
-    double time = std::numeric_limits<double>::quiet_NaN();
+    double time = nan;
   };
 
   /** What a study gives back: the summary of the run in the scene's own

@@ -9,6 +9,7 @@
 
 #include <core/contact_problem.h>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,13 @@ namespace Contact
    *  steps, and where its log is. */
   std::string sub_run_line(const RunSummary  &summary,
                            const std::string &log_file);
+
+  /** The console of a study: the first process's standard output (the
+   *  stream of the others is never opened, so it drops what it is given). */
+  std::ostream &study_console();
+
+  /** Writes `text` to `file` on the first process. */
+  void write_study_file(const std::string &file, const std::string &text);
 } // namespace Contact
 
 #endif

@@ -1,8 +1,5 @@
 /**
- * 'Accuracy/Target error': pilot runs measure how the error of the scene
- * falls with h and with k and what a run costs (target_error_pilots.h);
- * the cheapest run predicted to reach the target then runs with its error
- * estimate (target_error.cc).
+ * 'Accuracy/Target error' (target_error.cc).
  */
 #ifndef contact_target_error_h
 #define contact_target_error_h
@@ -14,10 +11,12 @@
 
 namespace Contact
 {
-  /** Runs the pilots (each equipped by `equipment`), chooses degree, h and
-   *  k, and runs the choice by `run_with_estimate`, with the orders that
-   *  the pilots measured; prints and writes target.txt. Its result is the
-   *  chosen run's. */
+  /** Runs the pilots (target_error_pilots.h, each equipped by `equipment`)
+   *  that measure how the error of the scene falls with h and with k and
+   *  what a run costs, chooses the degree, h and k of the cheapest run
+   *  predicted to reach the target, and runs it by `run_with_estimate`,
+   *  with the orders that the pilots measured; prints and writes
+   *  target.txt. Its result is the chosen run's. */
   template <int dim>
   class TargetError : public Study<dim>
   {

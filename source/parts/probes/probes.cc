@@ -65,8 +65,7 @@ namespace Contact
           point[d] = coordinates[d];
         // The cells of this process around the point (a point outside the
         // mesh gives none, or an exception, depending on the triangulation).
-        std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
-          probe;
+        Probe probe;
         try
           {
             for (const auto &candidate :
@@ -114,10 +113,8 @@ namespace Contact
   // the return value is that process, or the number of processes if no
   // cell is near.
   template <int dim>
-  unsigned int Probes<dim>::probe_near_curved_boundary(
-    const Point<dim> &point,
-    std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
-      &probe) const
+  unsigned int Probes<dim>::probe_near_curved_boundary(const Point<dim> &point,
+                                                       Probe &probe) const
   {
     const DiscreteSpace<dim> &space = this->space();
     const unsigned int        n_processes =
@@ -177,7 +174,6 @@ namespace Contact
       }
     return Utilities::MPI::sum(u, this->mpi_communicator());
   }
-
 
 
   // @sect4{Probes::add_columns}

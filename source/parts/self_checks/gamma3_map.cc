@@ -229,14 +229,11 @@ namespace Contact
       if (nodes[p].locally_owned)
         for (unsigned int d = 0; d < dim; ++d)
           values[p * dim + d] = field(nodes[p].dofs[d]);
-    std::vector<double> sums(values.size());
-    Utilities::MPI::sum(ArrayView<const double>(values.data(), values.size()),
-                        space.mpi_communicator,
-                        ArrayView<double>(sums.data(), sums.size()));
+    Utilities::MPI::sum(values, space.mpi_communicator, values);
     std::vector<Tensor<1, dim>> result(nodes.size());
     for (unsigned int p = 0; p < nodes.size(); ++p)
       for (unsigned int d = 0; d < dim; ++d)
-        result[p][d] = sums[p * dim + d];
+        result[p][d] = values[p * dim + d];
     return result;
   }
 

@@ -49,17 +49,14 @@ namespace Contact
       << "step's own scale; each must stay below " << tolerance
       << "):" << std::endl;
     const SelfCheckValues &c = largest_checks;
-    line("matrices against the integrals of their forms",
-         c.matrices,
-         c.matrices);
-    line("energy identity of each step (the solve)",
-         c.algebraic_energy,
-         c.algebraic_energy);
-    line("load vector against the loads' integral", c.load_power, c.load_power);
-    line("velocity in V_h (the constraints)", c.constraints, c.constraints);
-    line("equations (5.2) from the stored fields",
-         c.equation_residual,
-         c.equation_residual);
+    const auto check = [&](const std::string &name, const double value) {
+      line(name, value, value);
+    };
+    check("matrices against the integrals of their forms", c.matrices);
+    check("energy identity of each step (the solve)", c.algebraic_energy);
+    check("load vector against the loads' integral", c.load_power);
+    check("velocity in V_h (the constraints)", c.constraints);
+    check("equations (5.2) from the stored fields", c.equation_residual);
     line("friction law at the stored velocities",
          c.friction_law,
          c.friction_law_excess);
@@ -67,14 +64,11 @@ namespace Contact
       this->pcout() << "    (within what '" + Entry::convexification_tolerance +
                          "' allows, "
                     << "up to " << c.friction_law_allowance << ")" << std::endl;
-    line("sticking nodes at rest", c.stick_motion, c.stick_motion);
-    line("negative friction power on slipping nodes",
-         c.negative_friction_power,
-         c.negative_friction_power);
+    check("sticking nodes at rest", c.stick_motion);
+    check("negative friction power on slipping nodes",
+          c.negative_friction_power);
     if (moment_balance_is_checked)
-      line("balance of moments about the z-axis",
-           c.moment_balance,
-           c.moment_balance);
+      check("balance of moments about the z-axis", c.moment_balance);
     else if (this->problem().get_geometry().is_symmetric_about_z_axis())
       print_why_moments_are_not_checked();
   }
@@ -187,7 +181,6 @@ namespace Contact
     row.add("friction_moment", moments.friction);
     row.add("reaction_moment", moments.reaction);
   }
-
 
 
   // The members above, instantiated here as those of self_checks.cc are

@@ -181,7 +181,6 @@ namespace Contact
   }
 
 
-
   // @sect4{SlipDiagnostics::add_to_summary}
 
   // The quantities at T that an error estimate compares between runs of

@@ -28,11 +28,10 @@
 #include <parts/studies/reference_interpolation.h>
 #include <parts/studies/scene_variant.h>
 #include <parts/studies/study_parameters.h>
+#include <parts/studies/sub_run.h>
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
-#include <iostream>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -48,22 +47,8 @@ namespace Contact
     // and the runs of its levels.
     const ResultFiles       study_table("convergence\\.txt");
     const ResultDirectories level_runs("level-[0-9]+");
-  } // namespace
 
-
-  namespace
-  {
     using Refine = ConvergenceStudyParameters::Refine;
-
-    // The console of a convergence study: the first process's standard
-    // output (the stream of the others is never opened, so it drops what
-    // it is given).
-    std::ostream &console()
-    {
-      static std::ofstream dropped;
-      return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? std::cout :
-                                                                     dropped;
-    }
 
     // @sect4{The levels}
 
@@ -91,7 +76,7 @@ namespace Contact
       line << std::setprecision(17) << "Convergence study, level " << level
            << ": " << create_geometry(level_parameters)->mesh_size_text()
            << ", k = " << level_parameters.time.time_step;
-      console() << line.str() << std::endl;
+      study_console() << line.str() << std::endl;
     }
 
     // One level's run, and (without an exact solution) its displacements
@@ -256,41 +241,37 @@ namespace Contact
       const bool        exact  = scene.verification.manufactured();
       const Refine      refine = ConvergenceStudyParameters::of(scene).refine;
       const RunSummary &finest = results.back().run;
-      console() << std::endl
-                << "Convergence study (refining "
-                << (refine == Refine::space ? "h" :
-                    refine == Refine::time  ? "k" :
-                                              "h and k")
-                << "; rates log2(e_{l-1}/e_l); relative V-error: the first "
-                << "error column over ||eps(u_h(T))|| = "
-                << std::setprecision(4) << finest.displacement_V_norm
-                << " of the finest level";
+      study_console()
+        << std::endl
+        << "Convergence study (refining "
+        << (refine == Refine::space ? "h" :
+            refine == Refine::time  ? "k" :
+                                      "h and k")
+        << "; rates log2(e_{l-1}/e_l); relative V-error: the first "
+        << "error column over ||eps(u_h(T))|| = " << std::setprecision(4)
+        << finest.displacement_V_norm << " of the finest level";
       if (!exact)
-        console() << "; reference: level " << results.size() - 1
-                  << std::setprecision(6) << ", h = " << finest.cell_size
-                  << ", k = " << finest.time_step << ", " << finest.n_dofs
-                  << " unknowns";
-      console() << "):" << std::endl;
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        {
-          table.write_text(std::cout,
-                           TableHandler::TextOutputFormat::org_mode_table);
-          std::ofstream file(scene.output.directory + "/convergence.txt");
-          table.write_text(file,
-                           TableHandler::TextOutputFormat::org_mode_table);
-        }
+        study_console() << "; reference: level " << results.size() - 1
+                        << std::setprecision(6) << ", h = " << finest.cell_size
+                        << ", k = " << finest.time_step << ", " << finest.n_dofs
+                        << " unknowns";
+      std::ostringstream text;
+      table.write_text(text, TableHandler::TextOutputFormat::org_mode_table);
+      study_console() << "):" << std::endl << text.str();
+      write_study_file(scene.output.directory + "/convergence.txt", text.str());
       if (!exact || results.size() < 2)
         return;
       const ErrorNorms &coarse = results[results.size() - 2].run.max_errors;
       const ErrorNorms &fine   = finest.max_errors;
-      console() << "Rates between the two finest levels: V-norm " << std::fixed
-                << std::setprecision(2)
-                << std::log2(coarse.displacement_V / fine.displacement_V)
-                << ", velocity L2 "
-                << std::log2(coarse.velocity_L2 / fine.velocity_L2)
-                << ", displacement L2 "
-                << std::log2(coarse.displacement_L2 / fine.displacement_L2)
-                << std::defaultfloat << std::endl;
+      study_console() << "Rates between the two finest levels: V-norm "
+                      << std::fixed << std::setprecision(2)
+                      << std::log2(coarse.displacement_V / fine.displacement_V)
+                      << ", velocity L2 "
+                      << std::log2(coarse.velocity_L2 / fine.velocity_L2)
+                      << ", displacement L2 "
+                      << std::log2(coarse.displacement_L2 /
+                                   fine.displacement_L2)
+                      << std::defaultfloat << std::endl;
     }
   } // namespace
 
@@ -353,15 +334,8 @@ namespace Contact
     remove_results(scene.output.directory, false, MPI_COMM_WORLD);
     // The study's parameters run it again (each level's run is in its
     // directory's).
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      {
-        std::ofstream file(scene.output.directory + "/parameters.prm");
-        file << parameter_file_header() << scene.used_parameters;
-        file.flush();
-        AssertThrow(file,
-                    ExcMessage("Cannot write '" + scene.output.directory +
-                               "/parameters.prm'."));
-      }
+    write_study_file(scene.output.directory + "/parameters.prm",
+                     parameter_file_header() + scene.used_parameters);
 
     std::unique_ptr<ContactProblem<dim>> reference;
     const std::vector<LevelResult>  results = run_levels(levels, reference);

@@ -5,13 +5,9 @@
  * for smooth solutions and linear elements; less where the solution is
  * singular, about 2/3 on the paper's scene). Running the scene also with h
  * and k doubled, quadrupled and multiplied by 8 gives, for any quantity Q
- * at T, the differences d_0 = Q_h - Q_2h, d_1 = Q_2h - Q_4h and d_2 =
- * Q_4h - Q_8h. If the error behaves like C h^p on all runs, d_{i+1} / d_i
- * = 2^p for every i, and the error of the finest run is
- *
- *   Q - Q_h = d_0 / (2^p - 1)                  (Richardson extrapolation)
- *
- * with p measured, not assumed. Each quantity is judged on its own
+ * at T, the differences of consecutive runs, from which Richardson
+ * extrapolation (richardson.cc) estimates the error of the finest run
+ * with the order p measured, not assumed. Each quantity is judged on its own
  * differences: an estimate is given only where they have one sign, shrink
  * at a plausible order, and the two orders agree (the run with 8h checks
  * the order that the three finer runs show); otherwise the row says why
@@ -34,8 +30,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iostream>
 #include <limits>
 #include <optional>
 #include <string>
@@ -75,8 +69,8 @@ namespace Contact
           estimate.reason = "one measured order, " +
                             orders_text(estimate.measured_orders) +
                             ", which no run with 8h checks";
-          estimate.error = std::numeric_limits<double>::quiet_NaN();
-          estimate.order = std::numeric_limits<double>::quiet_NaN();
+          estimate.error = nan;
+          estimate.order = nan;
         }
       if (!known || !estimate.status.empty())
         return estimate;
@@ -85,7 +79,7 @@ namespace Contact
       if (error > estimate.error)
         {
           estimate.error = error;
-          estimate.order = std::numeric_limits<double>::quiet_NaN();
+          estimate.order = nan;
           estimate.reason =
             "the sum of a space and a time part with the pilots' orders, "
             "larger than the estimate of its own order";
@@ -138,8 +132,8 @@ namespace Contact
       // One time without an estimate leaves the largest unknown.
       if (!without_estimate.empty())
         {
-          worst.estimate.error  = std::numeric_limits<double>::quiet_NaN();
-          worst.estimate.order  = std::numeric_limits<double>::quiet_NaN();
+          worst.estimate.error  = nan;
+          worst.estimate.order  = nan;
           worst.estimate.status = "not asymptotic";
           worst.estimate.reason = without_estimate;
         }
@@ -149,13 +143,6 @@ namespace Contact
 
     // @sect3{The coarse runs}
 
-    // Whether the mesh allows the run with 8h, which checks the order the
-    // finer runs show (the runs with 2h and 4h are checked by
-    // Parameters::check_error_estimate()).
-    bool has_check_run(const Parameters &parameters)
-    {
-      return create_geometry(parameters)->coarsening_obstacle(3).empty();
-    }
     // The coarse runs of one estimate: what they share (the scene, the mesh
     // plan of the run, how far the histories go, the interpolation onto the
     // run's mesh, and what equips each run).
@@ -189,11 +176,9 @@ namespace Contact
         ContactProblem<dim> coarse(parameters);
         coarse.adapt_mesh(plan.coarser(-halvings));
         equip(coarse, parameters);
-        const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-        if (root)
-          std::cout << "Error estimate: the scene with h times " << space_factor
-                    << " and k times " << time_factor << " (" << name
-                    << "): " << std::flush;
+        study_console() << "Error estimate: the scene with h times "
+                        << space_factor << " and k times " << time_factor
+                        << " (" << name << "): " << std::flush;
         const std::string log_file =
           base.output.directory + "/" + name + "/console.log";
         RunAtTimes run = run_onto(coarse,
@@ -204,8 +189,7 @@ namespace Contact
                                     history_factor / time_factor :
                                     0,
                                   log_file);
-        if (root)
-          std::cout << sub_run_line(run.summary, log_file) << std::endl;
+        study_console() << sub_run_line(run.summary, log_file) << std::endl;
         return run;
       }
     };
@@ -236,33 +220,31 @@ namespace Contact
       return {d_0 < 0 ? -part.error : part.error, part.order};
     }
 
-    // With the separation, a row's estimate is the larger of the
-    // sequence's and |space part| + |time part| (the sum where the parts
-    // may add, which is what the sequence cannot tell).
+    // A row at T from the `difference`s of consecutive runs. With the
+    // separation, its estimate is the larger of the sequence's and
+    // |space part| + |time part| (the sum where the parts may add, which is
+    // what the sequence cannot tell).
     template <typename Difference>
-    void add_parts(EstimateRow        &row,
-                   const EstimateRuns &runs,
-                   const Difference   &difference,
-                   const bool          field,
-                   const TwoOrders    *known)
+    EstimateRow row_at_T(const std::string  &name,
+                         const double        value,
+                         const EstimateRuns &runs,
+                         const Difference   &difference,
+                         const bool          field,
+                         const TwoOrders    *known)
     {
+      const std::vector<RunAtTimes> &sequence = runs.sequence;
+      EstimateRow                    row{name, value, {}, {}};
+      for (unsigned int r = 0; r + 1 < sequence.size(); ++r)
+        row.differences.push_back(difference(sequence[r], sequence[r + 1]));
+      row.estimate = estimate_of(row.differences, field, known);
       if (runs.space.empty())
-        return;
+        return row;
       const bool apart =
         known && std::abs(known->space - known->time) >= min_order_separation;
-      const double nan = std::numeric_limits<double>::quiet_NaN();
-      std::tie(row.space_part, row.space_order) =
-        part_of_error(difference,
-                      runs.sequence[0],
-                      runs.space,
-                      field,
-                      apart ? known->space : nan);
-      std::tie(row.time_part, row.time_order) =
-        part_of_error(difference,
-                      runs.sequence[0],
-                      runs.time,
-                      field,
-                      apart ? known->time : nan);
+      std::tie(row.space_part, row.space_order) = part_of_error(
+        difference, sequence[0], runs.space, field, apart ? known->space : nan);
+      std::tie(row.time_part, row.time_order) = part_of_error(
+        difference, sequence[0], runs.time, field, apart ? known->time : nan);
       // The parts raise an estimate of the sequence, never replace its
       // verdict: each rests on one order that no run checks.
       const double sum = std::abs(row.space_part) + std::abs(row.time_part);
@@ -273,26 +255,7 @@ namespace Contact
           row.estimate.order = nan;
           row.from_parts     = true;
         }
-    }
-
-    // The V-norm at T: its differences are the norms of the differences
-    // of the displacements, on the run's mesh.
-    template <int dim>
-    EstimateRow v_norm_row(const ContactProblem<dim> &fine,
-                           const EstimateRuns        &runs,
-                           const TwoOrders           *known)
-    {
-      const std::vector<RunAtTimes> &sequence = runs.sequence;
-      const auto distance = [&](const RunAtTimes &a, const RunAtTimes &b) {
-        return strain_distance(fine, a.displacement, b.displacement);
-      };
-      EstimateRow v{V_norm, sequence[0].summary.displacement_V_norm, {}, {}};
-      for (unsigned int r = 0; r + 1 < sequence.size(); ++r)
-        v.differences.push_back(distance(sequence[r], sequence[r + 1]));
-      v.estimate    = estimate_of(v.differences, true, known);
-      v.exact_error = sequence[0].summary.final_errors.displacement_V;
-      add_parts(v, runs, distance, true, known);
-      return v;
+      return row;
     }
 
     // The largest V-error over the times that the runs with histories
@@ -328,44 +291,15 @@ namespace Contact
           (!at_T_own.status.empty() || (worst.estimate.status.empty() &&
                                         at_T_own.error > worst.estimate.error)))
         {
-          worst = {worst_V_error,
-                   at_T.value,
-                   at_T.differences,
-                   at_T_own,
-                   std::numeric_limits<double>::quiet_NaN(),
-                   std::numeric_limits<double>::quiet_NaN(),
-                   std::numeric_limits<double>::quiet_NaN(),
-                   std::numeric_limits<double>::quiet_NaN(),
-                   false,
-                   worst.exact_error,
-                   sequence[0].summary.n_steps * sequence[0].summary.time_step};
+          const double exact_error = worst.exact_error;
+          worst = {worst_V_error, at_T.value, at_T.differences, at_T_own};
+          worst.exact_error = exact_error;
+          worst.time =
+            sequence[0].summary.n_steps * sequence[0].summary.time_step;
           if (!worst.estimate.reason.empty())
             worst.estimate.reason = "at T: " + worst.estimate.reason;
         }
       return worst;
-    }
-
-    // A quantity at T, from its values on the runs.
-    EstimateRow quantity_row(const EstimateRuns &runs,
-                             const std::string  &name,
-                             const double        value,
-                             const TwoOrders    *known)
-    {
-      const std::vector<RunAtTimes> &sequence = runs.sequence;
-      EstimateRow                    row{name, value, {}, {}};
-      for (unsigned int r = 0; r + 1 < sequence.size(); ++r)
-        row.differences.push_back(quantity_of(sequence[r].summary, name) -
-                                  quantity_of(sequence[r + 1].summary, name));
-      row.estimate = estimate_of(row.differences, false, known);
-      add_parts(
-        row,
-        runs,
-        [&](const RunAtTimes &a, const RunAtTimes &b) {
-          return quantity_of(a.summary, name) - quantity_of(b.summary, name);
-        },
-        false,
-        known);
-      return row;
     }
 
     template <int dim>
@@ -377,13 +311,34 @@ namespace Contact
         const auto found = orders.find(name);
         return found == orders.end() ? nullptr : &found->second;
       };
-      std::vector<EstimateRow> rows = {v_norm_row(fine, runs, known(V_norm))};
+      // The V-norm at T: its differences are the norms of the differences
+      // of the displacements, on the run's mesh.
+      const RunSummary        &run = runs.sequence[0].summary;
+      std::vector<EstimateRow> rows{row_at_T(
+        V_norm,
+        run.displacement_V_norm,
+        runs,
+        [&](const RunAtTimes &a, const RunAtTimes &b) {
+          return strain_distance(fine, a.displacement, b.displacement);
+        },
+        true,
+        known(V_norm))};
+      rows[0].exact_error = run.final_errors.displacement_V;
       if (const std::optional<EstimateRow> worst =
             worst_row(fine, runs, rows.front(), known(worst_V_error)))
         rows.push_back(*worst);
-      for (const auto &[name, value] :
-           runs.sequence[0].summary.final_quantities)
-        rows.push_back(quantity_row(runs, name, value, known(name)));
+      // A quantity at T, from its values on the runs.
+      for (const auto &quantity : run.final_quantities)
+        rows.push_back(row_at_T(
+          quantity.first,
+          quantity.second,
+          runs,
+          [&](const RunAtTimes &a, const RunAtTimes &b) {
+            return quantity_of(a.summary, quantity.first) -
+                   quantity_of(b.summary, quantity.first);
+          },
+          false,
+          known(quantity.first)));
       return rows;
     }
   } // namespace
@@ -401,9 +356,10 @@ namespace Contact
   RunResult ErrorEstimate<dim>::run(const Parameters      &parameters,
                                     const StudyInput<dim> &input)
   {
-    // The run itself first; it stays, since the other runs' displacements
-    // are interpolated onto its mesh.
-    const unsigned int coarsest = has_check_run(parameters) ? 8 : 4;
+    // The run with 8h, where the mesh allows it, checks the order that the
+    // finer runs show.
+    const unsigned int coarsest =
+      create_geometry(parameters)->coarsening_obstacle(3).empty() ? 8 : 4;
     // The largest V-error over time compares the runs at the times of the
     // coarsest run with a history: that of all runs where N = T/k is a
     // multiple of `coarsest`, else that of the run with 4h and 4k where N
@@ -413,10 +369,12 @@ namespace Contact
     const unsigned int n_steps = parameters.time.n_steps();
     const bool         mesh_changes =
       MeshAdaptationParameters::of(parameters).interval > 0;
-    const unsigned int  history_factor = mesh_changes            ? 0 :
-                                         n_steps % coarsest == 0 ? coarsest :
-                                         n_steps % 4 == 0        ? 4 :
-                                                                   0;
+    const unsigned int history_factor = mesh_changes            ? 0 :
+                                        n_steps % coarsest == 0 ? coarsest :
+                                        n_steps % 4 == 0        ? 4 :
+                                                                  0;
+    // The run itself first; it stays, since the other runs' displacements
+    // are interpolated onto its mesh.
     ContactProblem<dim> fine(parameters);
     fine.adapt_mesh(input.plan);
     equip(fine, parameters);
@@ -442,15 +400,8 @@ namespace Contact
                      estimate_rows(fine, runs, input.orders)};
     const std::string text =
       estimate_report(parameters, runs, result.rows, input.orders);
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      {
-        std::cout << std::endl << text;
-        std::ofstream file(parameters.output.directory + "/error_estimate.txt");
-        file << text;
-        AssertThrow(file.good(),
-                    ExcMessage("Cannot write '" + parameters.output.directory +
-                               "/error_estimate.txt'."));
-      }
+    study_console() << std::endl << text;
+    write_study_file(parameters.output.directory + "/error_estimate.txt", text);
     return result;
   }
 

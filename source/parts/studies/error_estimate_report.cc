@@ -21,6 +21,11 @@ namespace Contact
 {
   namespace
   {
+    // The coarse runs take ceil(N / 2^l) steps; a ratio of their time step
+    // to the run's that differs from 2^l by more than this (relative) gets a
+    // warning.
+    constexpr double max_step_ratio_deviation = 0.05;
+
     // @sect3{The report}
 
     // A number of the table, or "-" where there is none.
@@ -166,7 +171,7 @@ namespace Contact
             << "1/16). '" << Entry::separate_space_and_time
             << "' = true estimates the two parts with their own orders."
             << std::endl;
-      // What the pilots' orders do (estimate_of, add_parts): raise an
+      // What the pilots' orders do (estimate_of, row_at_T): raise an
       // estimate that the row's own runs give, never make one.
       for (const auto &[name, known] : orders)
         out << name << ": the target's pilots measured the orders "

@@ -30,8 +30,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iostream>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -51,13 +49,6 @@ namespace Contact
     // step cost a pilot on the paper's scene more than the run on the adapted
     // mesh.
     constexpr unsigned int indicator_samples = 20;
-
-    std::ostream &console()
-    {
-      static std::ofstream dropped;
-      return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? std::cout :
-                                                                     dropped;
-    }
 
 
     // @sect3{The indicators of a pilot}
@@ -148,7 +139,6 @@ namespace Contact
     };
 
 
-
     // @sect3{The files of the run on the adapted mesh}
 
     // Written when the run on the adapted mesh starts (after it has
@@ -165,67 +155,70 @@ namespace Contact
 
       void start(const bool resumed) override
       {
-        if (resumed || Utilities::MPI::this_mpi_process(
-                         this->space().mpi_communicator) != 0)
+        if (resumed)
           return;
         const std::string &directory = this->parameters().output.directory;
-        std::ofstream(directory + "/adapted_mesh.txt") << plan.text();
-        std::ofstream(directory + "/adaptation.txt") << table;
+        write_study_file(directory + "/adapted_mesh.txt", plan.text());
+        write_study_file(directory + "/adaptation.txt", table);
       }
 
     private:
       const MeshPlan    plan;
       const std::string table;
     };
+
+
+    // @sect3{adapt_mesh_by_pilots}
+
+    // Runs the pilots (each in its own subdirectory adaptation-cycle-c) and
+    // returns the adapted mesh's cycles, and the table of the cycles as
+    // text.
+    template <int dim>
+    MeshPlan adapt_mesh_by_pilots(const Parameters &scene, std::string &table)
+    {
+      const MeshAdaptationParameters &adaptation =
+        MeshAdaptationParameters::of(scene);
+      const std::string &directory = scene.output.directory;
+      MeshPlan           plan;
+      TableHandler       cycles;
+      unsigned int       base_level = 0;
+      for (unsigned int cycle = 0; cycle < adaptation.cycles; ++cycle)
+        {
+          const std::string name = "adaptation-cycle-" + std::to_string(cycle);
+          ContactProblem<dim> pilot(parameters_of(scene,
+                                                  {0,
+                                                   scene.time.n_steps(),
+                                                   scene.geometry.fe_degree,
+                                                   directory + "/" + name,
+                                                   true}));
+          pilot.adapt_mesh(plan);
+          pilot.add_postprocessor(std::make_unique<PilotIndicators<dim>>(
+            adaptation, adaptation.cycles - cycle, base_level, plan));
+          const std::string log = directory + "/" + name + "/console.log";
+          const RunSummary  summary =
+            run_onto<dim>(pilot, nullptr, 0, log).summary;
+          const auto cells =
+            pilot.get_dof_handler().get_triangulation().n_global_active_cells();
+          study_console() << "Mesh adaptation: cycle " << cycle << ": " << cells
+                          << " cells, " << sub_run_line(summary, log)
+                          << "; refines " << plan.refined.back().size()
+                          << " cells, coarsens " << plan.coarsened.back().size()
+                          << std::endl;
+          cycles.add_value("cycle", cycle);
+          cycles.add_value("cells", static_cast<unsigned long long>(cells));
+          cycles.add_value("unknowns",
+                           static_cast<unsigned long long>(summary.n_dofs));
+          cycles.add_value("wall time [s]", summary.wall_time);
+          cycles.set_precision("wall time [s]", 2);
+          cycles.add_value("refined", plan.refined.back().size());
+          cycles.add_value("coarsened", plan.coarsened.back().size());
+        }
+      std::ostringstream text;
+      cycles.write_text(text, TableHandler::org_mode_table);
+      table = text.str();
+      return plan;
+    }
   } // namespace
-
-
-  // @sect3{adapt_mesh_by_pilots}
-
-  template <int dim>
-  MeshPlan adapt_mesh_by_pilots(const Parameters &scene, std::string &table)
-  {
-    const MeshAdaptationParameters &adaptation =
-      MeshAdaptationParameters::of(scene);
-    const std::string &directory = scene.output.directory;
-    MeshPlan           plan;
-    TableHandler       cycles;
-    unsigned int       base_level = 0;
-    for (unsigned int cycle = 0; cycle < adaptation.cycles; ++cycle)
-      {
-        const std::string   name = "adaptation-cycle-" + std::to_string(cycle);
-        ContactProblem<dim> pilot(parameters_of(scene,
-                                                {0,
-                                                 scene.time.n_steps(),
-                                                 scene.geometry.fe_degree,
-                                                 directory + "/" + name,
-                                                 true}));
-        pilot.adapt_mesh(plan);
-        pilot.add_postprocessor(std::make_unique<PilotIndicators<dim>>(
-          adaptation, adaptation.cycles - cycle, base_level, plan));
-        const std::string log = directory + "/" + name + "/console.log";
-        const RunSummary  summary =
-          run_onto<dim>(pilot, nullptr, 0, log).summary;
-        const auto cells =
-          pilot.get_dof_handler().get_triangulation().n_global_active_cells();
-        console() << "Mesh adaptation: cycle " << cycle << ": " << cells
-                  << " cells, " << sub_run_line(summary, log) << "; refines "
-                  << plan.refined.back().size() << " cells, coarsens "
-                  << plan.coarsened.back().size() << std::endl;
-        cycles.add_value("cycle", cycle);
-        cycles.add_value("cells", static_cast<unsigned long long>(cells));
-        cycles.add_value("unknowns",
-                         static_cast<unsigned long long>(summary.n_dofs));
-        cycles.add_value("wall time [s]", summary.wall_time);
-        cycles.set_precision("wall time [s]", 2);
-        cycles.add_value("refined", plan.refined.back().size());
-        cycles.add_value("coarsened", plan.coarsened.back().size());
-      }
-    std::ostringstream text;
-    cycles.write_text(text, TableHandler::org_mode_table);
-    table = text.str();
-    return plan;
-  }
 
 
   // @sect3{The study}
@@ -273,10 +266,7 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim)                                          \
-  template MeshPlan adapt_mesh_by_pilots<dim>(const Parameters &, \
-                                              std::string &);     \
-  template class PilotAdaptation<dim>;
+#define INSTANTIATE(dim) template class PilotAdaptation<dim>;
   CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
 } // namespace Contact

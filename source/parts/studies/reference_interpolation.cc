@@ -74,12 +74,7 @@ namespace Contact
       std::vector<unsigned int> found(n_nodes, 0);
       for (const auto &node : located)
         found[node.node] = 1;
-      MPI_Allreduce(MPI_IN_PLACE,
-                    found.data(),
-                    found.size(),
-                    MPI_UNSIGNED,
-                    MPI_MAX,
-                    MPI_COMM_WORLD);
+      Utilities::MPI::max(found, MPI_COMM_WORLD, found);
       return found;
     }
 
@@ -91,23 +86,13 @@ namespace Contact
     nearest_process(const std::vector<double> &distance)
     {
       std::vector<double> smallest(distance.size());
-      MPI_Allreduce(distance.data(),
-                    smallest.data(),
-                    distance.size(),
-                    MPI_DOUBLE,
-                    MPI_MIN,
-                    MPI_COMM_WORLD);
+      Utilities::MPI::min(distance, MPI_COMM_WORLD, smallest);
       std::vector<unsigned int> taker(distance.size());
       for (unsigned int m = 0; m < distance.size(); ++m)
         taker[m] = (distance[m] < 0.1 && distance[m] == smallest[m]) ?
                      Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) :
                      numbers::invalid_unsigned_int;
-      MPI_Allreduce(MPI_IN_PLACE,
-                    taker.data(),
-                    taker.size(),
-                    MPI_UNSIGNED,
-                    MPI_MIN,
-                    MPI_COMM_WORLD);
+      Utilities::MPI::min(taker, MPI_COMM_WORLD, taker);
       return taker;
     }
 

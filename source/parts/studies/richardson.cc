@@ -60,7 +60,7 @@ namespace Contact
     for (unsigned int i = 0; i + 1 < differences.size(); ++i)
       estimate.measured_orders.push_back(
         differences[i] == 0 || differences[i + 1] == 0 ?
-          std::numeric_limits<double>::quiet_NaN() :
+          nan :
           std::log2(std::abs(differences[i + 1]) / std::abs(differences[i])));
     bool all_zero = true, some_zero = false, signs_differ = false;
     for (const double d : differences)
@@ -132,7 +132,7 @@ namespace Contact
   {
     if (!(std::abs(orders.space - orders.time) >= min_order_separation) ||
         !std::isfinite(d_fine) || !std::isfinite(d_coarse))
-      return std::numeric_limits<double>::quiet_NaN();
+      return nan;
     const double a1 = std::pow(2., orders.space) - 1;
     const double a2 = std::pow(2., orders.space) * a1;
     const double b1 = std::pow(2., orders.time) - 1;

@@ -74,6 +74,24 @@ namespace Contact
   }
 
 
+  std::ostream &study_console()
+  {
+    static std::ofstream dropped;
+    return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? std::cout :
+                                                                   dropped;
+  }
+
+
+  void write_study_file(const std::string &file, const std::string &text)
+  {
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return;
+    std::ofstream stream(file);
+    stream << text << std::flush;
+    AssertThrow(stream.good(), ExcMessage("Cannot write '" + file + "'."));
+  }
+
+
   template <int dim>
   RunAtTimes run_onto(ContactProblem<dim>               &problem,
                       const ReferenceInterpolation<dim> *onto,

@@ -32,7 +32,6 @@
 #include <parts/studies/target_error_pilots.h>
 
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <iomanip>
 #include <limits>
@@ -79,16 +78,16 @@ namespace Contact
     // whose predicted error stays within the allowed one; the cost is that
     // of the run and of its estimate's coarse runs.
     std::optional<Candidate> candidate(const DegreeModel  &model,
-                                       const DirectionFit &time,
-                                       const double        cosine,
+                                       const PilotResults &results,
+                                       const Parameters   &parameters,
                                        const unsigned int  m,
-                                       const unsigned int  dim,
-                                       const double        end_time,
-                                       const double        K,
-                                       const double        allowed,
-                                       const unsigned int  max_steps,
-                                       const bool          separate)
+                                       const double        allowed)
     {
+      const DirectionFit &time     = results.time;
+      const double        cosine   = results.cosine;
+      const unsigned int  dim      = parameters.dimension;
+      const double        end_time = parameters.time.end_time;
+      const double        K        = end_time / parameters.time.n_steps();
       // (A direction without error has no order.)
       const double space_error =
         model.space.error == 0 ?
@@ -108,7 +107,7 @@ namespace Contact
                      K * std::pow(time_error_allowed / time.error,
                                   1. / time.order));
       const double steps = 8 * std::ceil(end_time / k / 8 - 1e-9);
-      if (!(steps <= max_steps))
+      if (!(steps <= parameters.time.max_steps))
         return std::nullopt;
       const unsigned int n_steps =
         std::max(static_cast<unsigned int>(steps), 8u);
@@ -123,7 +122,7 @@ namespace Contact
       };
       for (const double factor : {1., 2., 4., 8.})
         add(factor, factor);
-      if (separate)
+      if (AccuracyParameters::of(parameters).separate_space_and_time)
         for (const double factor : {2., 4.})
           add(factor, 1.), add(1., factor);
       const double time_error =
@@ -219,32 +218,21 @@ namespace Contact
     // say; the cheapest of them.
     std::optional<Candidate> choose(const PilotResults &results,
                                     const Parameters   &parameters,
-                                    const unsigned int  dim,
                                     const double        target,
                                     std::ostream       &out)
     {
       const bool measured = AccuracyParameters::of(parameters).cost_model ==
                             AccuracyParameters::CostModel::measured;
-      const bool   timings = parameters.output.print_timings;
-      const double K = parameters.time.end_time / parameters.time.n_steps();
-      const double allowed          = target_safety * target;
-      const std::string        unit = unit_of_target(parameters);
+      const bool               timings = parameters.output.print_timings;
+      const double             allowed = target_safety * target;
+      const std::string        unit    = unit_of_target(parameters);
       std::optional<Candidate> chosen;
       for (const DegreeModel &model : results.models)
         {
           std::optional<Candidate> best;
           for (unsigned int m = 0; m <= max_halvings; ++m)
-            if (const auto c = candidate(
-                  model,
-                  results.time,
-                  results.cosine,
-                  m,
-                  dim,
-                  parameters.time.end_time,
-                  K,
-                  allowed,
-                  parameters.time.max_steps,
-                  AccuracyParameters::of(parameters).separate_space_and_time))
+            if (const auto c =
+                  candidate(model, results, parameters, m, allowed))
               if (!best || c->predicted_cost < best->predicted_cost)
                 best = c;
           out << "Degree " << model.degree
@@ -395,7 +383,7 @@ namespace Contact
     {
       const std::string quantity =
         AccuracyParameters::of(parameters).target_quantity.name();
-      double estimated = std::numeric_limits<double>::quiet_NaN();
+      double estimated = nan;
       for (const EstimateRow &row : result.rows)
         if (row.name == quantity)
           estimated = row.estimate.error;
@@ -569,7 +557,7 @@ namespace Contact
       std::ostringstream choice;
       choice << std::setprecision(3);
       const std::optional<Candidate> chosen =
-        choose(pilots, parameters, dim, target, choice);
+        choose(pilots, parameters, target, choice);
       print(choice.str());
       require_choice(parameters, pilots, chosen);
       announce_choice(parameters, *chosen, print);
@@ -621,12 +609,10 @@ namespace Contact
   {
     Timer              timer;
     const std::string &directory = parameters.output.directory;
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     std::ostringstream text;
     const auto         print = [&](const std::string &lines) {
       text << lines;
-      if (root)
-        std::cout << lines << std::flush;
+      study_console() << lines << std::flush;
     };
     // The lock of the whole target run; the chosen run shares it.
     const auto lock = lock_output_directory(directory, MPI_COMM_WORLD);
@@ -637,12 +623,7 @@ namespace Contact
     // What the target prints also goes to target.txt, however the target
     // ends: a target stopped by an error records why.
     const auto write_record = [&]() {
-      if (!root)
-        return;
-      std::ofstream file(directory + "/target.txt");
-      file << text.str();
-      AssertThrow(file.good(),
-                  ExcMessage("Cannot write '" + directory + "/target.txt'."));
+      write_study_file(directory + "/target.txt", text.str());
     };
     RunResult result;
     try

@@ -91,20 +91,17 @@ namespace Contact
           richardson_estimate({d_fine, d_coarse}, !field);
         // The order measured, never another quantity's (none where the
         // differences change sign).
-        const double order = !field && d_fine * d_coarse < 0 ?
-                               std::numeric_limits<double>::quiet_NaN() :
-                               estimate.measured_orders[0];
+        const double order =
+          !field && d_fine * d_coarse < 0 ? nan : estimate.measured_orders[0];
         // No error seen in this direction: it limits nothing, and has no
         // order.
         if (d_fine == 0 && d_coarse == 0)
-          return {0.,
-                  std::numeric_limits<double>::quiet_NaN(),
-                  "the same on the three pilots"};
+          return {0., nan, "the same on the three pilots"};
         // An order below what the scheme shows in the asymptotic range (or
         // none) is never raised: it would make the predicted error fall
         // faster than measured. This direction predicts nothing.
         if (!(order >= min_plausible_order))
-          return {std::numeric_limits<double>::quiet_NaN(),
+          return {nan,
                   order,
                   (std::isnan(order) ?
                      estimate.reason :
@@ -120,10 +117,6 @@ namespace Contact
                     " (the scheme gives at most that)"};
         return {estimate.error, order, ""};
       }
-
-      // What a degree's pilots say, of uniform meshes or of meshes adapted
-      // during the run: the space part of the V-norm and of the target
-      // quantity, and the fit a + b x of their wall times against x =
 
       void fit_cost(DegreeModel              &model,
                     const std::vector<Pilot> &pilots,
@@ -156,65 +149,15 @@ namespace Contact
       }
 
 
-
       // @sect3{Running the pilots}
 
-      // From the pilots of the first degree (H at K, 2H, 4H, 2K and 4K, from
-      // `first` on): the size of the quantity on the first (the scale of a
-      // relative target), and how the space and the time error of the V-norm
-      // combine, from the angle between what doubling h and what doubling k
-      // changes. A quantity's two errors add (they may cancel on the pilots
-      // and not later).
+      // The pilots of one degree and mesh family as they run, from `first`
+      // on in `pilots`: each keeps its state at each of its steps on the
+      // mesh of the first (N0 is a multiple of 4, parameters.cc), whose
+      // problem stays for the comparisons.
       template <int dim>
-      void measure_size_and_cosine(const ContactProblem<dim> &base,
-                                   const std::vector<Pilot>  &pilots,
-                                   const std::size_t          first,
-                                   const std::string         &quantity,
-                                   PilotResults              &results)
+      struct PilotFamily
       {
-        const RunAtTimes &own = pilots[first].run;
-        results.size          = std::abs(quantity_of(own.summary, quantity));
-        if (quantity == worst_V_error)
-          {
-            results.size = own.summary.displacement_V_norm;
-            for (const VectorType &u : own.history)
-              results.size = std::max(results.size, base.strain_norm(u));
-          }
-        const auto norm = [&](const std::size_t a, const std::size_t b) {
-          return strain_distance(base,
-                                 pilots[first + a].run.displacement,
-                                 pilots[first + b].run.displacement);
-        };
-        const double s = norm(0, 1), t = norm(0, 3), across = norm(3, 1);
-        if ((quantity == V_norm || quantity == worst_V_error) && s > 0 && t > 0)
-          results.cosine =
-            std::clamp((s * s + t * t - across * across) / (2 * s * t), 0., 1.);
-      }
-
-
-      // The pilots of one degree and mesh family as they run: each keeps
-      // its state at each of its steps on the mesh of the first (N0 is a
-      // multiple of 4, parameters.cc), whose problem stays for the
-      // comparisons.
-      template <int dim>
-      class PilotFamily
-      {
-      public:
-        PilotFamily(const Parameters     &scene,
-                    const unsigned int    pilot_degree,
-                    const bool            adapted_meshes,
-                    const Equipment<dim> &equipment,
-                    std::vector<Pilot>   &all_pilots,
-                    const std::function<void(const std::string &)> &print_line)
-          : parameters(scene)
-          , degree(pilot_degree)
-          , adapted(adapted_meshes)
-          , equip(equipment)
-          , pilots(all_pilots)
-          , print(print_line)
-          , first(all_pilots.size())
-        {}
-
         void run(const unsigned int space_factor,
                  const unsigned int time_factor)
         {
@@ -273,6 +216,37 @@ namespace Contact
                                max_order);
         }
 
+        // From the pilots of the first degree (H at K, 2H, 4H, 2K and 4K):
+        // the size of the quantity on the first (the scale of a relative
+        // target), and how the space and the time error of the V-norm
+        // combine, from the angle between what doubling h and what doubling
+        // k changes. A quantity's two errors add (they may cancel on the
+        // pilots and not later).
+        void measure_size_and_cosine(const std::string &quantity,
+                                     PilotResults      &results) const
+        {
+          const RunAtTimes &own = pilots[first].run;
+          results.size          = std::abs(quantity_of(own.summary, quantity));
+          if (quantity == worst_V_error)
+            {
+              results.size = own.summary.displacement_V_norm;
+              for (const VectorType &u : own.history)
+                results.size = std::max(results.size, base->strain_norm(u));
+            }
+          const auto norm = [&](const std::size_t a, const std::size_t b) {
+            return strain_distance(*base,
+                                   pilots[first + a].run.displacement,
+                                   pilots[first + b].run.displacement);
+          };
+          const double s = norm(0, 1), t = norm(0, 3), across = norm(3, 1);
+          if ((quantity == V_norm || quantity == worst_V_error) && s > 0 &&
+              t > 0)
+            results.cosine =
+              std::clamp((s * s + t * t - across * across) / (2 * s * t),
+                         0.,
+                         1.);
+        }
+
         // Whether a pilot's mesh changed during its run.
         bool some_mesh_changed() const
         {
@@ -282,13 +256,6 @@ namespace Contact
           return changed;
         }
 
-        // The first pilot's run, onto whose mesh the others' states are
-        // interpolated.
-        const ContactProblem<dim> &base_run() const
-        {
-          return *base;
-        }
-
         const Parameters                               &parameters;
         const unsigned int                              degree;
         const bool                                      adapted;
@@ -296,13 +263,13 @@ namespace Contact
         std::vector<Pilot>                             &pilots;
         const std::function<void(const std::string &)> &print;
         const std::size_t                               first;
-
-      private:
         // The pilots' parameters outlive the problems, whose adaptation
         // keeps a reference to them.
-        std::list<Parameters>                        own_parameters;
-        std::unique_ptr<ContactProblem<dim>>         base;
-        std::unique_ptr<ReferenceInterpolation<dim>> interpolate;
+        std::list<Parameters> own_parameters = {};
+        // The first pilot's run, onto whose mesh the others' states are
+        // interpolated.
+        std::unique_ptr<ContactProblem<dim>>         base        = nullptr;
+        std::unique_ptr<ReferenceInterpolation<dim>> interpolate = nullptr;
       };
 
 
@@ -325,8 +292,13 @@ namespace Contact
       {
         const std::string quantity =
           AccuracyParameters::of(parameters).target_quantity.name();
-        PilotFamily<dim> family(
-          parameters, degree, adapted, equip, results.pilots, print);
+        PilotFamily<dim> family{parameters,
+                                degree,
+                                adapted,
+                                equip,
+                                results.pilots,
+                                print,
+                                results.pilots.size()};
         family.run(1, 1);
         family.run(2, 1);
         family.run(4, 1);
@@ -347,8 +319,8 @@ namespace Contact
           for (DirectionFit *space_fit :
                {&results.models.back().space_V, &results.models.back().space})
             *space_fit = {
-              std::numeric_limits<double>::quiet_NaN(),
-              std::numeric_limits<double>::quiet_NaN(),
+              nan,
+              nan,
               "its pilots' meshes did not change during the run, no cell met '" +
                 Entry::refine_fraction + "' towards '" +
                 Entry::target_unknowns + "': no adapted family, no prediction"};
@@ -358,8 +330,7 @@ namespace Contact
         family.run(1, 4);
         results.time_V = family.fit(3, 4, V_norm, 1.);
         results.time   = family.fit(3, 4, quantity, 1.);
-        measure_size_and_cosine(
-          family.base_run(), results.pilots, family.first, quantity, results);
+        family.measure_size_and_cosine(quantity, results);
       }
     } // namespace
 
