@@ -1,13 +1,6 @@
-/* The checks every run makes of its own results (doc/verification.md):
-   once, the matrices against the integrals of their forms; at every step,
-   each relative to a scale of that step, the step's energy identity from
-   the matrices, its load vector against the loads' integral, the
-   constraints of V_h, the equations (5.2) from the stored fields, the
-   friction law and the sticking nodes' rest at the stored velocities
-   (through the checks' own map of Gamma_3), the sign of the friction
-   power, and the balance of moments about the z-axis where it can be
-   stated. Their report at the end of the run is in
-   self_check_summary.cc. */
+/* The checks every run makes of its own results (doc/verification.md;
+   the list: include/parts/self_checks/self_checks.h). Their report at the
+   end of the run is in self_check_summary.cc. */
 
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/exceptions.h>
@@ -77,7 +70,7 @@ namespace Contact
     for (unsigned int i = 0; i < n_dofs; ++i)
       component[i] = space.fe.system_to_component_index(i).first;
 
-    std::array<double, 4> sums{};
+    std::vector<double> sums(4, 0.);
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -110,9 +103,7 @@ namespace Contact
               sums[3] += form(lambda, two_G, eps_w) * JxW;
             }
         }
-    Utilities::MPI::sum(ArrayView<const double>(sums.data(), sums.size()),
-                        this->mpi_communicator(),
-                        ArrayView<double>(sums.data(), sums.size()));
+    Utilities::MPI::sum(sums, this->mpi_communicator(), sums);
     return {sums[0], sums[1], sums[2], sums[3]};
   }
 
@@ -395,11 +386,9 @@ namespace Contact
   // @sect4{SelfChecks::check_step}
 
   // After each step (each half of a cut step), each check relative to a
-  // scale of that step (doc/verification.md): the step's part of the
-  // energy identity and its load power, w_n in V_h, (5.2) from the stored
-  // fields, the friction law and the sticking nodes' rest at the stored
-  // velocities and the sign of the friction power (through the map of
-  // Gamma_3), and the balance of moments.
+  // scale of that step. The friction law fails where it exceeds twice what
+  // the convexification's own tolerance allows, up to
+  // largest_friction_law_allowance.
   template <int dim>
   void SelfChecks<dim>::check_step()
   {
