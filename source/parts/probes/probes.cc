@@ -34,10 +34,9 @@ namespace Contact
     void locate_probes();
     using Probe =
       std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>;
-    unsigned int   probe_near_curved_boundary(const Point<dim> &point,
-                                              Probe            &probe) const;
-    Tensor<1, dim> probe_displacement(const unsigned int probe,
-                                      const VectorType  &u_ghosted) const;
+    unsigned int probe_near_curved_boundary(const Point<dim> &point,
+                                            Probe            &probe) const;
+    std::vector<Tensor<1, dim>> probe_displacements() const;
 
     // A probe is the cell around an 'Output/Probe points' entry and the
     // point in its reference cell; of the processes that own a cell around
@@ -150,29 +149,34 @@ namespace Contact
   }
 
 
-  // @sect4{Probes::probe_displacement}
+  // @sect4{Probes::probe_displacements}
 
+  // The displacement at each probe, on every process (collective).
   template <int dim>
-  Tensor<1, dim>
-  Probes<dim>::probe_displacement(const unsigned int probe,
-                                  const VectorType  &u_ghosted) const
+  std::vector<Tensor<1, dim>> Probes<dim>::probe_displacements() const
   {
-    const DiscreteSpace<dim> &space     = this->space();
-    const auto &[cell, reference_point] = probes[probe];
-    Tensor<1, dim> u;
-    if (cell.state() == IteratorState::valid)
+    const DiscreteSpace<dim> &space = this->space();
+    const VectorType u_ghosted      = space.ghosted(this->state().displacement);
+    std::vector<Tensor<1, dim>> displacements;
+    for (const auto &[cell, reference_point] : probes)
       {
-        FEValues<dim>               fe_values(*space.mapping,
-                                space.fe,
-                                Quadrature<dim>(reference_point),
-                                update_values);
-        std::vector<Vector<double>> values(1, Vector<double>(dim));
-        fe_values.reinit(cell);
-        fe_values.get_function_values(u_ghosted, values);
-        for (unsigned int d = 0; d < dim; ++d)
-          u[d] = values[0][d];
+        Tensor<1, dim> u;
+        if (cell.state() == IteratorState::valid)
+          {
+            FEValues<dim>               fe_values(*space.mapping,
+                                    space.fe,
+                                    Quadrature<dim>(reference_point),
+                                    update_values);
+            std::vector<Vector<double>> values(1, Vector<double>(dim));
+            fe_values.reinit(cell);
+            fe_values.get_function_values(u_ghosted, values);
+            for (unsigned int d = 0; d < dim; ++d)
+              u[d] = values[0][d];
+          }
+        displacements.push_back(
+          Utilities::MPI::sum(u, this->mpi_communicator()));
       }
-    return Utilities::MPI::sum(u, this->mpi_communicator());
+    return displacements;
   }
 
 
@@ -184,13 +188,11 @@ namespace Contact
   {
     if (probes.empty())
       return;
-    const VectorType u = this->space().ghosted(this->state().displacement);
+    const std::vector<Tensor<1, dim>> values = probe_displacements();
     for (unsigned int i = 0; i < probes.size(); ++i)
-      {
-        const Tensor<1, dim> value = probe_displacement(i, u);
-        for (unsigned int d = 0; d < dim; ++d)
-          row.add("probe" + std::to_string(i + 1) + "_u_" + "xyz"[d], value[d]);
-      }
+      for (unsigned int d = 0; d < dim; ++d)
+        row.add("probe" + std::to_string(i + 1) + "_u_" + "xyz"[d],
+                values[i][d]);
   }
 
 
@@ -202,15 +204,12 @@ namespace Contact
   void Probes<dim>::finish(RunSummary &summary)
   {
     std::vector<std::pair<std::string, double>> quantities;
-    const VectorType u = this->space().ghosted(this->state().displacement);
+    const std::vector<Tensor<1, dim>>           values = probe_displacements();
     for (unsigned int i = 0; i < probes.size(); ++i)
-      {
-        const Tensor<1, dim> value = probe_displacement(i, u);
-        for (unsigned int d = 0; d < dim; ++d)
-          quantities.emplace_back(
-            Quantity{Quantity::Kind::probe_displacement, i, d}.name(),
-            value[d]);
-      }
+      for (unsigned int d = 0; d < dim; ++d)
+        quantities.emplace_back(
+          Quantity{Quantity::Kind::probe_displacement, i, d}.name(),
+          values[i][d]);
     summary.final_quantities.insert(summary.final_quantities.begin(),
                                     quantities.begin(),
                                     quantities.end());
