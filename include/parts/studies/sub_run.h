@@ -2,7 +2,7 @@
  * A run inside a study (a coarse run of an error estimate, a pilot): run
  * with its console output in a log file, its displacement kept at T and
  * at the steps of a coarser time grid, interpolated onto another run's
- * mesh (sub_run.cc).
+ * mesh; and where a study itself prints and writes (sub_run.cc).
  */
 #ifndef contact_sub_run_h
 #define contact_sub_run_h
