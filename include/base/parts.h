@@ -104,11 +104,13 @@ namespace Contact
      * CMake writes what a build without a part must know of it from the
      * part's `source/parts/<part>/part.txt` (CMakeLists.txt,
      * CONTACT_PARTS): the values it adds to an entry that chooses among
-     * parts, and its own entries with their defaults. A .prm written for a
-     * full build keeps its meaning: such an entry is declared, and a value
-     * other than its default, or a value of a part that is missing, is
-     * refused with a message that names the entry, the part and the CMake
-     * option. A full build has none.
+     * parts, and its own entries, each with the value with which the part
+     * would do nothing (its default, or `false` for an output that is on
+     * by default). A .prm written for a full build reads in every build:
+     * such an entry is declared with that value, and another value, or a
+     * value of a part that is missing, is refused with a message that
+     * names the entry, the part and the CMake option. A full build has
+     * none.
      */
     /** @{ */
     /** Declares the entries of the parts not compiled (at the end of their

@@ -78,6 +78,9 @@ namespace Contact
                                 "', which this build did not compile (CMake "
                                 "option CONTACT_PARTS); a value other than "
                                 "its default is refused.");
+            // The entries of compiled parts that follow it (PartEntries).
+            const std::string path(line.entry);
+            declare_entries_after(prm, path.substr(0, path.rfind('/')), name);
             for (; depth > 0; --depth)
               prm.leave_subsection();
           }
