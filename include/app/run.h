@@ -1,9 +1,9 @@
 /**
  * The command line of the program: `contact [--set Section/Entry=value]...
- * scene.prm`. The scene is read and checked (prm_reader.h), and the study
- * it asks for (compose_study.h) runs in its dimension: a convergence
- * study, a run to a target error, pilots that adapt the mesh, a run with
- * its error estimate, or a single run.
+ * scene.prm`. The scene is read and checked (prm_reader.h) and runs in its
+ * dimension, by the part that runs scenes (core/scene_runner.h: the study
+ * it asks for, parts/studies/compose_study.h), or as one run in a build
+ * without that part.
  */
 #ifndef contact_run_h
 #define contact_run_h

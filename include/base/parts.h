@@ -97,6 +97,39 @@ namespace Contact
     /** Refuses a part name that a Selection cannot hold: empty, or with
      *  '|' or ',' (its separators). */
     void check_name(const std::string &name);
+
+    /**
+     * @name The parts that this build did not compile
+     *
+     * CMake writes what a build without a part must know of it from the
+     * part's `source/parts/<part>/part.txt` (CMakeLists.txt,
+     * CONTACT_PARTS): the values it adds to an entry that chooses among
+     * parts, and its own entries, each with the value with which the part
+     * would do nothing (its default, or `false` for an output that is on
+     * by default). A .prm written for a full build reads in every build:
+     * such an entry is declared with that value, and another value, or a
+     * value of a part that is missing, is refused with a message that
+     * names the entry, the part and the CMake option. A full build has
+     * none.
+     */
+    /** @{ */
+    /** Declares the entries of the parts not compiled (at the end of their
+     *  subsections), which accept any value. */
+    void declare_unbuilt_entries(ParameterHandler &prm);
+
+    /** Refuses a value other than the default of an entry of a part not
+     *  compiled. */
+    void refuse_unbuilt_entries(ParameterHandler &prm);
+
+    /** "|a|b": the values of `entry` ("Subsection/Entry") that parts not
+     *  compiled would add to its Selection. */
+    std::string unbuilt_values(const std::string &entry);
+
+    /** If a part not compiled provides the value `value` of `entry`: "asks
+     *  for the part '...', which this build did not compile (...)", the
+     *  reason a message gives; else "". */
+    std::string not_built(const std::string &entry, const std::string &value);
+    /** @} */
   } // namespace Parts
 
 
@@ -171,6 +204,15 @@ namespace Contact
       return text;
     }
 
+    /** The pattern of the Selection of the entry `entry`
+     *  ("Subsection/Entry") that chooses among the parts: the registered
+     *  ones and those that this build did not compile, which parse
+     *  refuses with a message that names the CMake option. */
+    static std::string selection(const std::string &entry)
+    {
+      return selection() + Parts::unbuilt_values(entry);
+    }
+
     /** "a: ...; b: ...": the parts as the help text lists them. */
     static std::string help_text()
     {
@@ -190,9 +232,12 @@ namespace Contact
       for (const Part &part : registered())
         if (part.name == name)
           return part.create(std::forward<Arguments>(arguments)...);
+      const std::string missing = Parts::not_built(entry, name);
       AssertThrow(false,
-                  ExcMessage("Entry '" + entry + "' = '" + name +
-                             "' is not a registered " + noun() +
+                  ExcMessage("Entry '" + entry + "' = '" + name + "' " +
+                             (missing.empty() ?
+                                "is not a registered " + noun() :
+                                missing) +
                              "; allowed: " + quoted_names() + "."));
       return nullptr;
     }

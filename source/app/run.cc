@@ -5,11 +5,12 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
-#include <app/compose_study.h>
 #include <app/prm_reader.h>
 #include <app/run.h>
 #include <base/dimensions.h>
 #include <base/version.h>
+#include <core/contact_problem.h>
+#include <core/scene_runner.h>
 
 #include <iostream>
 #include <string>
@@ -94,11 +95,20 @@ namespace Contact
       return command_line;
     }
 
-    // The study that the scene asks for (compose_study.h).
-    template <int dim>
-    void run_study(const Parameters &parameters)
+    // The scene, run by the part that runs scenes (core/scene_runner.h),
+    // or, in a build without one, as one run.
+    void run_scene(const Parameters &parameters)
     {
-      compose_study<dim>(parameters)->run(parameters, {});
+      if (!SceneRunners::parts().empty())
+        {
+          SceneRunners::parts().front().create()->run(parameters);
+          return;
+        }
+#define INSTANTIATE(dim)           \
+  if (parameters.dimension == dim) \
+    ContactProblem<dim>(parameters).run();
+      CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
     }
   } // namespace
 
@@ -128,11 +138,7 @@ namespace Contact
       }
     const Parameters parameters =
       read_scene(prm, command_line.parameter_file, command_line.overrides);
-#define INSTANTIATE(dim)           \
-  if (parameters.dimension == dim) \
-    run_study<dim>(parameters);
-    CONTACT_INSTANTIATE(INSTANTIATE)
-#undef INSTANTIATE
+    run_scene(parameters);
   }
 
 

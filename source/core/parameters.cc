@@ -98,6 +98,7 @@ namespace Contact
     VerificationParameters::declare_parameters(prm);
     Parts::declare_entries_after(prm, "", "Verification");
     OutputParameters::declare_parameters(prm);
+    Parts::declare_unbuilt_entries(prm);
   }
 
 
@@ -116,6 +117,7 @@ namespace Contact
                            compiled_dimensions() +
                            ", or a build configured with "
                            "-DCONTACT_DIMENSIONS=\"2;3\" (the default)."));
+    Parts::refuse_unbuilt_entries(prm);
     geometry.parse_parameters(prm, dimension);
     prm.enter_subsection("Geometry");
     part_values.merge(Parts::parse_entries(prm, "Geometry", *this));

@@ -78,12 +78,12 @@ namespace Contact
       // The registered geometries (source/core/box.cc,
       // source/parts/<geometry>/), the box first.
       const unsigned int n_geometries = GeometryBaseRegistry::parts().size();
-      declare_entry("Domain",
-                    "box",
-                    Patterns::Selection(GeometryBaseRegistry::selection()),
-                    GeometryBaseRegistry::help_text() + ". A Mesh file " +
-                      (n_geometries == 2 ? "replaces both." :
-                                           "replaces each of them."));
+      declare_entry(
+        "Domain",
+        "box",
+        Patterns::Selection(GeometryBaseRegistry::selection(Entry::domain)),
+        GeometryBaseRegistry::help_text() + ". A Mesh file " +
+          (n_geometries == 2 ? "replaces both." : "replaces each of them."));
       declare_entry(
         "Mapping degree",
         "1",
@@ -449,12 +449,14 @@ namespace Contact
     prm.enter_subsection(FrictionLaws::subsection);
     {
       // 'Friction law' (its names and help text) and the entries of each
-      // law come from the registered laws (source/base/friction_laws/). The
-      // laws' entries follow S, so that the used parameters of a run,
-      // printed in the order of declaration, list S next to the law.
+      // law come from the registered laws (source/core/slip_rate_weakening.cc,
+      // source/parts/friction_laws/). The laws' entries follow S, so that the
+      // used parameters of a run, printed in the order of declaration, list S
+      // next to the law.
       prm.declare_entry(FrictionLaws::law_entry,
                         "slip rate weakening",
-                        Patterns::Selection(LawRegistry::selection()),
+                        Patterns::Selection(LawRegistry::selection(
+                          FrictionLaws::entry_path(FrictionLaws::law_entry))),
                         LawRegistry::help_text() + ".");
       prm.declare_entry("Friction bound S",
                         "100",

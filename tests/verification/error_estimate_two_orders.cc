@@ -11,7 +11,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <app/compose_study.h>
+#include <parts/studies/compose_study.h>
 #include <app/run.h>
 
 #include <iomanip>

@@ -13,7 +13,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
-#include <app/compose_study.h>
+#include <parts/studies/compose_study.h>
 #include <app/run.h>
 #include <parts/studies/study_parameters.h>
 

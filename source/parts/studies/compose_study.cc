@@ -1,7 +1,9 @@
-/* The study a scene asks for, composed (include/app/compose_study.h). */
+/* The study a scene asks for, composed (include/parts/studies/compose_study.h).
+ */
 
-#include <app/compose_study.h>
+#include <parts/studies/compose_study.h>
 #include <base/dimensions.h>
+#include <core/scene_runner.h>
 #include <parts/adaptation/adapt_during_run.h>
 #include <parts/studies/convergence_study.h>
 #include <parts/studies/error_estimate.h>
@@ -38,4 +40,30 @@ namespace Contact
   template std::unique_ptr<Study<dim>> compose_study<dim>(const Parameters &);
   CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
+
+
+  // @sect3{The studies run every scene}
+
+  // The program runs a scene with the study it asks for; without this part
+  // it runs every scene once (core/scene_runner.h).
+  namespace
+  {
+    class StudyRunner : public SceneRunner
+    {
+    public:
+      void run(const Parameters &scene) override
+      {
+#define INSTANTIATE(dim)      \
+  if (scene.dimension == dim) \
+    compose_study<dim>(scene)->run(scene, {});
+        CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+      }
+    };
+
+    const bool registered = SceneRunners::add(
+      {"studies", "the study that the scene asks for", 10, {}, []() {
+         return std::make_unique<StudyRunner>();
+       }});
+  } // namespace
 } // namespace Contact
