@@ -64,37 +64,6 @@ namespace Contact
     }
 
 
-    // @sect4{The Tresca problem of an iteration}
-
-    // What the Tresca method needs of the body: v = v_free - D eta for
-    // given forces, and one Newton step, both on the step's path.
-    template <int dim>
-    TrescaResult solve_tresca_problem(const FrictionStep<dim> &step,
-                                      const Vector<double>    &bound,
-                                      Vector<double>          &eta,
-                                      Vector<double>          &v,
-                                      std::vector<NodeState>  &state)
-    {
-      ContactPath<dim> &path = step.path;
-      return solve_tresca(
-        [&path](const Vector<double> &force, Vector<double> &velocity) {
-          path.velocity_of_force(force, velocity);
-        },
-        [&path](const std::vector<NodeLinearisation> &linearisation,
-                Vector<double>                       &force,
-                Vector<double>                       &velocity) {
-          path.newton_step(linearisation, force, velocity);
-        },
-        dim - 1,
-        bound,
-        step.active_set_parameter,
-        step.parameters.solver.max_active_set_iterations,
-        eta,
-        v,
-        state);
-    }
-
-
     // @sect4{The failures}
 
     // What a user needs when the active set method of a Tresca problem
@@ -124,6 +93,54 @@ namespace Contact
              std::to_string(solver.active_set_parameter) + ").";
     }
 
+
+    // @sect4{The Tresca problem of an iteration}
+
+    // The Tresca problem with the bounds g_p = m_p S mu(s_p) of the slip
+    // rates s, on the step's path: v = v_free - D eta for given forces and
+    // one Newton step are what the Tresca method needs of the body. Its
+    // iterations are counted; where it does not converge, the step is not
+    // solved.
+    template <int dim>
+    void solve_tresca_problem(const FrictionStep<dim> &step,
+                              const Vector<double>    &rate,
+                              const unsigned int       iteration,
+                              Vector<double>          &eta,
+                              Vector<double>          &v,
+                              std::vector<NodeState>  &state,
+                              StepStatistics          &statistics)
+    {
+      const FrictionLaw &law = step.law;
+      Vector<double>     bound(rate.size());
+      for (unsigned int p = 0; p < rate.size(); ++p)
+        bound[p] =
+          law.is_frictionless() ? 0. : step.law_weights[p] * law.bound(rate[p]);
+      ContactPath<dim>  &path   = step.path;
+      const TrescaResult tresca = solve_tresca(
+        [&path](const Vector<double> &force, Vector<double> &velocity) {
+          path.velocity_of_force(force, velocity);
+        },
+        [&path](const std::vector<NodeLinearisation> &linearisation,
+                Vector<double>                       &force,
+                Vector<double>                       &velocity) {
+          path.newton_step(linearisation, force, velocity);
+        },
+        dim - 1,
+        bound,
+        step.active_set_parameter,
+        step.parameters.solver.max_active_set_iterations,
+        eta,
+        v,
+        state);
+      statistics.active_set_iterations += tresca.iterations;
+      statistics.cycles_cured += tresca.cycles_cured;
+      AssertThrow(step.all_processes(tresca.converged),
+                  ExcStepNotConverged(
+                    tresca_failure(step, iteration, tresca.cycles_cured)));
+    }
+
+
+    // @sect4{When the convexification does not converge}
 
     // What a user needs when the convexification stops without
     // converging: where, how far from converged, and which data drive it.
@@ -197,7 +214,7 @@ namespace Contact
     const unsigned int    n                  = nodes.size();
     const Vector<double> &free_slip_velocity = step.path.free_slip_velocity();
 
-    Vector<double> rate(n), bound(n), eta(current.friction_force),
+    Vector<double> rate(n), eta(current.friction_force),
       v(free_slip_velocity.size());
     const auto slip_rates = [&](const Vector<double> &velocities) {
       for (unsigned int p = 0; p < n; ++p)
@@ -219,18 +236,7 @@ namespace Contact
       {
         ++iterations;
         ++statistics.convexification_iterations;
-        for (unsigned int p = 0; p < n; ++p)
-          bound[p] = law.is_frictionless() ?
-                       0. :
-                       step.law_weights[p] * law.bound(rate[p]);
-
-        const TrescaResult tresca =
-          solve_tresca_problem(step, bound, eta, v, state);
-        statistics.active_set_iterations += tresca.iterations;
-        statistics.cycles_cured += tresca.cycles_cured;
-        AssertThrow(step.all_processes(tresca.converged),
-                    ExcStepNotConverged(
-                      tresca_failure(step, iterations, tresca.cycles_cured)));
+        solve_tresca_problem(step, rate, iterations, eta, v, state, statistics);
 
         const double energy_now =
           energy_on_gamma3(step, free_slip_velocity, eta, v);
