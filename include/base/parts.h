@@ -232,17 +232,30 @@ namespace Contact
       for (const Part &part : registered())
         if (part.name == name)
           return part.create(std::forward<Arguments>(arguments)...);
-      const std::string missing = Parts::not_built(entry, name);
-      AssertThrow(false,
-                  ExcMessage("Entry '" + entry + "' = '" + name + "' " +
-                             (missing.empty() ?
-                                "is not a registered " + noun() :
-                                missing) +
-                             "; allowed: " + quoted_names() + "."));
+      AssertThrow(false, not_registered(entry, name));
       return nullptr;
     }
 
+    /** `name`, the value of the entry `entry` that chooses a part of this
+     *  kind, once it is checked to be registered (the error of create()
+     *  otherwise): how such an entry is parsed. */
+    static std::string parse(const std::string &entry, const std::string &name)
+    {
+      AssertThrow(is_registered(name), not_registered(entry, name));
+      return name;
+    }
+
   private:
+    static ExcMessage not_registered(const std::string &entry,
+                                     const std::string &name)
+    {
+      const std::string missing = Parts::not_built(entry, name);
+      return ExcMessage("Entry '" + entry + "' = '" + name + "' " +
+                        (missing.empty() ? "is not a registered " + noun() :
+                                           missing) +
+                        "; allowed: " + quoted_names() + ".");
+    }
+
     /** "'a', 'b', 'c'": the names as a message lists them. */
     static std::string quoted_names()
     {

@@ -1,16 +1,18 @@
 /**
- * The factorisation of K = (1/k) M + A_h + k B_h, computed once per run,
- * and its forward/back substitutions (doc/algorithm.md). Two
- * implementations behind one interface, chosen by 'Solver/Linear solver':
+ * The solver of K = (1/k) M + A_h + k B_h, set up once per run, and its
+ * forward/back substitutions (doc/algorithm.md): one interface, whose
+ * implementations are the linear solvers registered as the choices of
+ * 'Solver/Linear solver' (base/parts.h):
  *
- * - CHOLMOD (SuiteSparse): supernodal sparse Cholesky with BLAS-3 kernels,
- *   for one process. K is symmetric positive definite (the constraints are
- *   condensed symmetrically), so Cholesky applies. It exposes the halves
- *   of a solve with its factor L, and the forward one runs on blocks of
- *   right-hand sides, which is how Y = L^{-1} P C^T is computed.
- * - Trilinos Amesos (KLU, MUMPS, LAPACK) through deal.II's SolverDirect,
- *   for distributed matrices.
- * - CG preconditioned by Trilinos ML's algebraic multigrid (CG-AMG): not a
+ * - CHOLMOD (SuiteSparse), the core's: supernodal sparse Cholesky with
+ *   BLAS-3 kernels, for one process. K is symmetric positive definite (the
+ *   constraints are condensed symmetrically), so Cholesky applies. It
+ *   exposes the halves of a solve with its factor L, and the forward one
+ *   runs on blocks of right-hand sides, which is how Y = L^{-1} P C^T is
+ *   computed.
+ * - the part parts/linear_solvers: Trilinos Amesos (KLU, MUMPS, LAPACK)
+ *   through deal.II's SolverDirect, for distributed matrices, and CG
+ *   preconditioned by Trilinos ML's algebraic multigrid (CG-AMG): not a
  *   factorisation but the same interface, for meshes whose factor does not
  *   fit; the AMG hierarchy of K is built once per run.
  */
@@ -23,6 +25,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <base/parts.h>
 #include <core/parameters.h>
 
 #include <memory>
@@ -110,15 +113,33 @@ namespace Contact
     }
 
     /**
-     * CHOLMOD, an Amesos solver or CG-AMG ('auto' resolved); the constant
-     * modes (one per displacement component) tell AMG the near null space
-     * of elasticity.
+     * The registered linear solver `solver` ('auto' resolved) for K; the
+     * constant modes (one per displacement component) tell an algebraic
+     * multigrid the near null space of elasticity.
      */
     static std::unique_ptr<Factorization>
-    create(const SolverParameters::LinearSolver  solver,
+    create(const std::string                    &solver,
            const TrilinosWrappers::SparseMatrix &K,
            const std::vector<std::vector<bool>> &constant_modes = {});
   };
+
+
+  /** The kind of the linear solvers (base/parts.h): a solver for K made
+   *  from K and its constant modes. */
+  using LinearSolverRegistry =
+    PartRegistry<Factorization,
+                 const TrilinosWrappers::SparseMatrix &,
+                 const std::vector<std::vector<bool>> &>;
+
+  /** The core's linear solver, and 'auto''s on one process. */
+  inline const std::string cholmod_name = "CHOLMOD";
+
+  /** The messages name a part of this kind a linear solver. */
+  template <>
+  inline std::string LinearSolverRegistry::noun()
+  {
+    return "linear solver";
+  }
 } // namespace Contact
 
 #endif

@@ -10,14 +10,16 @@
  *     (one forward and one backward substitution per step),
  *   - D from the columns Z = K^{-1} C^T (one solve per step),
  *   - the active set imposed as constraints on the whole body (a solve with
- *     a variant of K per Newton step; no dense matrix).
- * The methods on Gamma_3 (Newton on the full law, the convexification
- * around Tresca problems, friction.h) only see a path's three operations:
- * v = v_free - D eta, one Newton step, and y = D x.
+ *     a variant of K per Newton step; no dense matrix; parts/constraints_path).
+ * The methods on Gamma_3 (FrictionMethod, chosen by 'Solver/Friction
+ * method': the convexification around Tresca problems, or a method of a
+ * part) only see a path's three operations: v = v_free - D eta, one Newton
+ * step, and y = D x.
  *
- *   friction_solver.cc  the step, the Newton method and the convexification
- *   contact_paths.cc    the maps C and C^T, the constraints path
- *   delassus_paths.cc   the two Delassus paths
+ *   friction_solver.cc   the step, the path and the convexity limit
+ *   convexification.cc   the convexification (friction_method.h)
+ *   contact_paths.cc     the maps C and C^T
+ *   delassus_paths.cc    the two Delassus paths
  */
 #ifndef contact_friction_solver_h
 #define contact_friction_solver_h
@@ -33,6 +35,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <base/parts.h>
 #include <core/factorization.h>
 #include <core/friction.h>
 #include <core/parameters.h>
@@ -198,7 +201,7 @@ namespace Contact
 
   /**
    * The linear algebra of one path between the body and Gamma_3
-   * (contact_paths.cc, delassus_paths.cc). A step calls begin_step()
+   * (delassus_paths.cc, parts/constraints_path). A step calls begin_step()
    * first, then the methods on Gamma_3 call newton_step() (the
    * convexification also free_slip_velocity() and velocity_of_force()), and
    * velocity() gives w_n for the final forces.
@@ -267,6 +270,10 @@ namespace Contact
 
 
   template <int dim>
+  class FrictionMethod;
+
+
+  template <int dim>
   class FrictionSolver
   {
   public:
@@ -279,7 +286,7 @@ namespace Contact
       std::vector<ContactNode<dim>>                    nodes,
       const std::function<double(const Point<dim> &)> &bound_scale = {});
 
-    virtual ~FrictionSolver() = default;
+    virtual ~FrictionSolver();
 
     /** K or its factorisation changed (the start, a step cut): the active
      *  set parameters, the path and the convexity limit. */
@@ -298,12 +305,11 @@ namespace Contact
     /**
      * How far from the law the last step's solution may be by the
      * solver's own tolerance, relative to max_p g_p(0) like the self-check
-     * of the law (self_checks.cc): 0 after
-     * Newton's method (which solves the law itself to 1e-12); after the
-     * convexification, whose Tresca problem has the bounds of the slip
-     * rates s of its last iterate, the largest change of the bound that the
-     * remaining change of s allows, S (a - b) alpha max_p |s_p - |v_p||
-     * / (S mu(0)).
+     * of the law (self_checks.cc): 0 after a method that solves the law
+     * itself (to 1e-12); after the convexification, whose Tresca problem
+     * has the bounds of the slip rates s of its last iterate, the largest
+     * change of the bound that the remaining change of s allows,
+     * S (a - b) alpha max_p |s_p - |v_p|| / (S mu(0)).
      */
     double law_residual_allowance() const;
 
@@ -323,42 +329,24 @@ namespace Contact
     double free_slip_speed() const;
 
   protected:
-    /** The path for K (choose_path): make_contact_path()'s; a solver
-     *  derived from this one may return a path of its own instead, e.g. one
-     *  that wraps this path. */
+    /** The registered path `name` for K (choose_path); a solver derived
+     *  from this one may return a path of its own instead, e.g. one that
+     *  wraps this path. */
     virtual std::unique_ptr<ContactPath<dim>>
-    make_path(const MatrixType &system_matrix,
-              Factorization    &factorization,
-              const bool        delassus);
+    make_path(const MatrixType  &system_matrix,
+              Factorization     &factorization,
+              const std::string &name);
 
   private:
     void choose_path(const MatrixType &system_matrix,
                      Factorization    &factorization);
     bool delassus_operator_pays(const Factorization &factorization) const;
     std::pair<double, bool>
-                largest_weighted_delassus_eigenvalue(const double tolerance);
-    void        solve_friction_problem(const StepLabel &label,
-                                       const double     velocity_scale,
-                                       StepStatistics  &statistics);
-    std::string solve_by_newton(const double    velocity_scale,
-                                StepStatistics &statistics);
-    void        solve_by_convexification(const StepLabel &label,
-                                         StepStatistics  &statistics);
-    std::pair<TrescaVelocity, TrescaNewtonStep> path_operators();
-    TrescaResult solve_tresca_problem(const Vector<double>   &bound,
-                                      Vector<double>         &eta,
-                                      Vector<double>         &v,
-                                      std::vector<NodeState> &state);
-    std::string  convexification_failure(const double     residual,
-                                         const StepLabel &label) const;
-    double       energy_on_gamma3(const Vector<double> &free_slip_velocity,
-                                  const Vector<double> &eta,
-                                  const Vector<double> &v) const;
-    std::string  tresca_failure(const StepLabel   &label,
-                                const unsigned int iteration,
-                                const unsigned int cycles_cured) const;
-    bool         all_processes(const bool condition) const;
-    void         add_contact_state(StepStatistics &statistics) const;
+         largest_weighted_delassus_eigenvalue(const double tolerance);
+    void solve_friction_problem(const StepLabel &label,
+                                const double     velocity_scale,
+                                StepStatistics  &statistics);
+    void add_contact_state(StepStatistics &statistics) const;
 
     const Parameters         &parameters;
     const FrictionLaw         friction_law;
@@ -370,6 +358,11 @@ namespace Contact
     Vector<double> law_weights;
 
     std::unique_ptr<ContactPath<dim>> path;
+    // The method of 'Solver/Friction method', and the core's own, the
+    // convexification: the fallback of the other methods, and the method
+    // for a rate independent law (one Tresca problem).
+    std::unique_ptr<FrictionMethod<dim>> chosen_method;
+    std::unique_ptr<FrictionMethod<dim>> convexification;
     // c_p of the active set method for every node.
     Vector<double> active_set_parameter;
     // A step's friction problem is convex while S (a - b) alpha is below
@@ -386,23 +379,22 @@ namespace Contact
   };
 
 
-  /** The path of the Delassus operator (from the triangular factor of K
-   *  if it has one, else from the columns of K^{-1} C^T) or of the active
-   *  set as constraints (contact_paths.cc). */
+  /**
+   * The kind of the paths between the body and Gamma_3 (base/parts.h), the
+   * choices of 'Solver/Contact solver' besides 'auto', registered once per
+   * compiled dimension: a path made for Gamma_3, K and its factorisation
+   * (the time of its setup reported to the timer). The core's is the
+   * Delassus path (delassus_paths.cc).
+   */
   template <int dim>
-  std::unique_ptr<ContactPath<dim>>
-  make_contact_path(const ContactBoundary<dim> &gamma3,
-                    const MatrixType           &system_matrix,
-                    Factorization              &factorization,
-                    const bool                  delassus,
-                    TimerOutput                &computing_timer);
+  using ContactPathRegistry = PartRegistry<ContactPath<dim>,
+                                           const ContactBoundary<dim> &,
+                                           const MatrixType &,
+                                           Factorization &,
+                                           TimerOutput &>;
 
-  /** The Delassus path (delassus_paths.cc): D from the triangular factor of
-   *  K if it has one, else from the columns of K^{-1} C^T. */
-  template <int dim>
-  std::unique_ptr<ContactPath<dim>>
-  make_delassus_path(const ContactBoundary<dim> &gamma3,
-                     Factorization              &factorization);
+  /** The core's path, and 'auto''s while the Delassus operator pays. */
+  inline const std::string delassus_path_name = "Delassus";
 } // namespace Contact
 
 #endif

@@ -100,13 +100,11 @@ namespace Contact
       "Solver/Max active set iterations";
     inline const std::string active_set_parameter =
       "Solver/Active set parameter";
-    inline const std::string anderson_depth  = "Solver/Anderson depth";
-    inline const std::string linear_solver   = "Solver/Linear solver";
-    inline const std::string step_cuts       = "Solver/Step cuts";
-    inline const std::string contact_solver  = "Solver/Contact solver";
-    inline const std::string friction_method = "Solver/Friction method";
-    inline const std::string max_newton_iterations =
-      "Solver/Max Newton iterations";
+    inline const std::string anderson_depth      = "Solver/Anderson depth";
+    inline const std::string linear_solver       = "Solver/Linear solver";
+    inline const std::string step_cuts           = "Solver/Step cuts";
+    inline const std::string contact_solver      = "Solver/Contact solver";
+    inline const std::string friction_method     = "Solver/Friction method";
     inline const std::string output_directory    = "Output/Output directory";
     inline const std::string time_series         = "Output/Time series";
     inline const std::string vtu_interval        = "Output/VTU interval";
@@ -261,42 +259,16 @@ namespace Contact
     unsigned int max_active_set_iterations;
     double       active_set_parameter;
     unsigned int anderson_depth;
-    /** How systems with K are solved (Factorization::create()). */
-    enum class LinearSolver
-    {
-      automatic,
-      cholmod,
-      amesos_klu,
-      amesos_mumps,
-      amesos_lapack,
-      cg_amg
-    };
-    /** 'Linear solver' with 'auto' resolved. */
-    LinearSolver linear_solver;
-    /** CG-AMG: every solve with K is iterative (and costs CG iterations). */
-    bool iterative_linear_solver = false;
+    /** How systems with K are solved: the name of a registered linear
+     *  solver (Factorization::create()), 'auto' resolved. */
+    std::string linear_solver;
     /** Halvings of k allowed for a step that does not converge. */
     unsigned int step_cuts;
-    enum class ContactSolver
-    {
-      automatic,
-      delassus,
-      constraints
-    };
-    ContactSolver contact_solver = ContactSolver::automatic;
-    enum class FrictionMethod
-    {
-      newton,
-      convexification
-    };
-    FrictionMethod friction_method = FrictionMethod::newton;
-    unsigned int   max_newton_iterations;
-
-    /** The names of the choices of 'Linear solver' (Amesos takes its
-     *  solvers by these names), 'Contact solver' and 'Friction method'. */
-    static const ChoiceTable<LinearSolver>   &linear_solvers();
-    static const ChoiceTable<ContactSolver>  &contact_solvers();
-    static const ChoiceTable<FrictionMethod> &friction_methods();
+    /** The path between the body and Gamma_3: 'auto' or the name of a
+     *  registered path (FrictionSolver::choose_path()). */
+    std::string contact_solver = "auto";
+    /** The name of a registered friction method (friction_method.h). */
+    std::string friction_method;
 
     /** 'Contact solver = auto' takes the Delassus path up to this many
      *  tangential unknowns n of Gamma_3 (D and W = D^{-1} are dense: 16 n^2
@@ -306,8 +278,6 @@ namespace Contact
      *  both. */
     static constexpr unsigned int max_delassus_unknowns = 7900;
     static constexpr double       max_delassus_bytes    = 1e9;
-    /** The relative residual to which CG-AMG solves with K. */
-    static constexpr double cg_relative_residual = 1e-12;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);

@@ -231,12 +231,13 @@ namespace Contact
     system.add(1., viscosity);
     system.add(k, elasticity);
 
-    TimerOutput::Scope             t(timer, "Factorization");
+    TimerOutput::Scope t(timer, "Factorization");
+    // The near null space for a solver that needs it (an algebraic
+    // multigrid); a direct solver ignores it.
     std::vector<std::vector<bool>> constant_modes;
-    if (solver.iterative_linear_solver)
-      DoFTools::extract_constant_modes(space.dof_handler,
-                                       ComponentMask(),
-                                       constant_modes);
+    DoFTools::extract_constant_modes(space.dof_handler,
+                                     ComponentMask(),
+                                     constant_modes);
     factorization =
       Factorization::create(solver.linear_solver, system, constant_modes);
   }

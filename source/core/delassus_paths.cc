@@ -303,21 +303,41 @@ namespace Contact
   } // namespace
 
 
-  template <int dim>
-  std::unique_ptr<ContactPath<dim>>
-  make_delassus_path(const ContactBoundary<dim> &gamma3,
-                     Factorization              &factorization)
+  namespace
   {
-    if (factorization.has_triangular_factor())
-      return std::make_unique<DelassusFromFactor<dim>>(gamma3, factorization);
-    return std::make_unique<DelassusFromSolves<dim>>(gamma3, factorization);
-  }
+    // The path 'Delassus', the core's: D from the triangular factor of K
+    // if it has one, else from the columns of K^{-1} C^T. Rank 10: before
+    // the other paths in the Selection and the help text.
+    template <int dim>
+    bool register_delassus_path()
+    {
+      return ContactPathRegistry<dim>::add(
+        {delassus_path_name,
+         "on the tangential unknowns of Gamma_3 alone, with the dense "
+         "Delassus operator D = C K^{-1} C^T built once per run: from "
+         "Y = L^{-1} P C^T (sparse; K = P^T L L^T P by CHOLMOD), a step then "
+         "costs one forward and one backward substitution and dense work on "
+         "Gamma_3; with the other linear solvers from Z = K^{-1} C^T (dense, "
+         "one solve per tangential unknown of Gamma_3), a step then costs one "
+         "solve and a product with Z.",
+         10,
+         {},
+         [](const ContactBoundary<dim> &gamma3,
+            const MatrixType &,
+            Factorization &factorization,
+            TimerOutput &computing_timer) -> std::unique_ptr<ContactPath<dim>> {
+           TimerOutput::Scope t(computing_timer, "Delassus operator");
+           if (factorization.has_triangular_factor())
+             return std::make_unique<DelassusFromFactor<dim>>(gamma3,
+                                                              factorization);
+           return std::make_unique<DelassusFromSolves<dim>>(gamma3,
+                                                            factorization);
+         }});
+    }
 
-
-#define INSTANTIATE(dim)                                         \
-  template std::unique_ptr<ContactPath<dim>> make_delassus_path( \
-    const ContactBoundary<dim> &, Factorization &);
-
-  CONTACT_INSTANTIATE(INSTANTIATE)
-#undef INSTANTIATE
+#define REGISTER(dim) \
+  const bool delassus_path_registered_##dim = register_delassus_path<dim>();
+    CONTACT_INSTANTIATE(REGISTER)
+#undef REGISTER
+  } // namespace
 } // namespace Contact

@@ -1,6 +1,6 @@
 /* The friction problem on Gamma_3 of every time step: the choice of the
-   path, the convexity limit, Newton's method on the full law and the
-   convexification of the paper around Tresca problems. */
+   path, the convexity limit, and the method of 'Solver/Friction method'
+   (friction_method.h) for the friction problem of the step. */
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -9,14 +9,13 @@
 
 
 #include <base/dimensions.h>
+#include <core/friction_method.h>
 #include <core/friction_solver.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
-#include <sstream>
-#include <tuple>
 
 namespace Contact
 {
@@ -37,6 +36,10 @@ namespace Contact
              environment.constraints,
              environment.locally_owned_dofs,
              environment.mpi_communicator}
+    , chosen_method(
+        FrictionMethodRegistry<dim>::create(Entry::friction_method,
+                                            parameters.solver.friction_method))
+    , convexification(std::make_unique<Convexification<dim>>())
   {
     current.friction_force.reinit(gamma3.n_unknowns());
     current.slip_velocity.reinit(gamma3.n_unknowns());
@@ -50,6 +53,10 @@ namespace Contact
         gamma3.nodes[p].weight *
         (bound_scale ? bound_scale(gamma3.nodes[p].location) : 1.);
   }
+
+
+  template <int dim>
+  FrictionSolver<dim>::~FrictionSolver() = default;
 
 
   template <int dim>
@@ -95,7 +102,7 @@ namespace Contact
     if (!friction_law.is_rate_independent() &&
         !friction_law.is_frictionless() && !gamma3.nodes.empty())
       {
-        const bool rough = parameters.solver.iterative_linear_solver;
+        const bool rough = factorization.relative_residual() > 0;
         const auto [eigenvalue, converged] =
           largest_weighted_delassus_eigenvalue(
             rough ? lanczos_tolerance_iterative : lanczos_tolerance);
@@ -117,30 +124,37 @@ namespace Contact
   // @sect4{FrictionSolver::choose_path}
 
   // The Delassus paths only pay with friction on a nonempty Gamma_3; the
-  // constraints path is also the plain solve without friction.
+  // other path, the active set as constraints where the build has it
+  // (parts/constraints_path), is also the plain solve without friction.
   template <int dim>
   void FrictionSolver<dim>::choose_path(const MatrixType &system_matrix,
                                         Factorization    &factorization)
   {
-    using ContactSolver          = SolverParameters::ContactSolver;
-    const ContactSolver choice   = parameters.solver.contact_solver;
-    const bool          delassus = !friction_law.is_frictionless() &&
-                          !gamma3.nodes.empty() &&
-                          (choice == ContactSolver::delassus ||
-                           (choice == ContactSolver::automatic &&
-                            delassus_operator_pays(factorization)));
-    path = make_path(system_matrix, factorization, delassus);
+    const std::string other =
+      ContactPathRegistry<dim>::is_registered("constraints") ?
+        "constraints" :
+        delassus_path_name;
+    std::string name = parameters.solver.contact_solver;
+    if (friction_law.is_frictionless() || gamma3.nodes.empty())
+      name = other;
+    else if (name == "auto")
+      name = delassus_operator_pays(factorization) ? delassus_path_name : other;
+    path = make_path(system_matrix, factorization, name);
   }
 
 
   template <int dim>
   std::unique_ptr<ContactPath<dim>>
-  FrictionSolver<dim>::make_path(const MatrixType &system_matrix,
-                                 Factorization    &factorization,
-                                 const bool        delassus)
+  FrictionSolver<dim>::make_path(const MatrixType  &system_matrix,
+                                 Factorization     &factorization,
+                                 const std::string &name)
   {
-    return make_contact_path(
-      gamma3, system_matrix, factorization, delassus, computing_timer);
+    return ContactPathRegistry<dim>::create(Entry::contact_solver,
+                                            name,
+                                            gamma3,
+                                            system_matrix,
+                                            factorization,
+                                            computing_timer);
   }
 
 
@@ -251,7 +265,7 @@ namespace Contact
       Utilities::MPI::max(static_cast<double>(
                             gamma3.locally_owned_dofs.n_elements()),
                           gamma3.mpi_communicator);
-    return !parameters.solver.iterative_linear_solver &&
+    return factorization.relative_residual() == 0 &&
            largest_part * n_columns * sizeof(double) <=
              SolverParameters::max_delassus_bytes;
   }
@@ -284,397 +298,29 @@ namespace Contact
 
   // @sect4{FrictionSolver::solve_friction_problem}
 
-  // The friction problem of a step on Gamma_3: Newton's method on the full
-  // law (friction.h) with 'Solver/Friction method = Newton', with the
-  // convexification of the paper as the fallback where Newton does not
-  // converge; the convexification alone otherwise. A rate independent law
-  // is one Tresca problem either way.
+  // The friction problem of a step on Gamma_3 by the method of 'Solver/
+  // Friction method', with the convexification of the paper as the
+  // fallback of the other methods. A rate independent law is one Tresca
+  // problem, which the convexification solves in one iteration.
   template <int dim>
   void FrictionSolver<dim>::solve_friction_problem(const StepLabel &label,
                                                    const double velocity_scale,
                                                    StepStatistics &statistics)
   {
-    const bool newton = parameters.solver.friction_method ==
-                          SolverParameters::FrictionMethod::newton &&
-                        !friction_law.is_rate_independent();
-    if (!newton)
-      {
-        solve_by_convexification(label, statistics);
-        return;
-      }
-    const std::string newton_failure =
-      solve_by_newton(velocity_scale, statistics);
-    if (newton_failure.empty())
-      return;
-    try
-      {
-        solve_by_convexification(label, statistics);
-      }
-    catch (const ExcStepNotConverged &failure)
-      {
-        // The user chose (or kept) Newton: say that it failed first, and
-        // why, before what stopped its fallback.
-        std::ostringstream fallback;
-        failure.print_info(fallback);
-        std::string reason = fallback.str();
-        reason.erase(0, reason.find_first_not_of(" \n"));
-        reason.erase(reason.find_last_not_of(" \n") + 1);
-        AssertThrow(false,
-                    ExcStepNotConverged(
-                      "Newton's method ('" + Entry::friction_method +
-                      "' = Newton) did not solve step " +
-                      std::to_string(label.step_number) + ": " +
-                      newton_failure +
-                      ". The convexification that took over did not "
-                      "solve it either. " +
-                      reason));
-      }
-  }
-
-
-  // @sect4{FrictionSolver::solve_by_newton}
-
-  // Newton's method on the full law from the previous step's forces, slip
-  // velocities and sets. It returns why it failed (empty where it did not),
-  // with the state of the step untouched, if it does not converge or ends
-  // on a point that its curvature test does not certify as a local minimum
-  // of E (friction.h).
-  // Far from the solution its model caps the weakening at 0.9 times the
-  // convexity limit, where the model is still convex.
-  template <int dim>
-  std::string FrictionSolver<dim>::solve_by_newton(const double velocity_scale,
-                                                   StepStatistics &statistics)
-  {
-    Vector<double> eta(current.friction_force), v(current.slip_velocity);
-    std::vector<NodeState> state;
-    const auto             newton_step = path_operators().second;
-    NodalLaw               law{friction_law,
-                 law_weights,
-                 weakening_cap_fraction * convexity_limit};
-    law.convexity_limit               = convexity_limit;
-    law.energy_accuracy               = path->energy_accuracy();
-    law.velocity_scale                = velocity_scale;
-    const FrictionNewtonResult result = solve_friction_newton(
-      newton_step,
-      [this](const std::vector<NodeLinearisation> &linearisation) {
-        return path->curvature_on_slip_set(linearisation);
-      },
-      dim - 1,
-      law,
-      active_set_parameter,
-      parameters.solver.max_newton_iterations,
-      parameters.solver.max_active_set_iterations,
-      eta,
-      v,
-      state);
-    statistics.convexification_iterations += result.convexification_steps;
-    statistics.active_set_iterations += result.active_set_iterations;
-    statistics.newton_iterations += result.iterations;
-    statistics.beyond_convexity_limit += result.beyond_convexity_limit;
-    statistics.saddle_exits += result.saddle_exits;
-    if (!all_processes(result.converged))
-      {
-        ++statistics.newton_fallbacks;
-        statistics.minima_not_certified += result.minimum_not_certified;
-        // The same reason on every process.
-        if (!all_processes(!result.minimum_not_certified))
-          return "its end point was not certified a local minimum of the "
-                 "step's energy";
-        if (!all_processes(!result.tresca_failed))
-          return "a Tresca problem inside it did not converge within '" +
-                 Entry::max_active_set_iterations + "' = " +
-                 std::to_string(parameters.solver.max_active_set_iterations) +
-                 " iterations";
-        return "it did not converge within '" + Entry::max_newton_iterations +
-               "' = " +
-               std::to_string(parameters.solver.max_newton_iterations) +
-               " iterations";
-      }
-    current.friction_force = eta;
-    current.slip_velocity  = v;
-    current.node_state     = state;
-    return "";
-  }
-
-
-  namespace
-  {
-    // The slip rates |v_p| of an iterate (`new_rate`), and the largest
-    // change from `rate` relative to the largest slip or free slip rate,
-    // which it returns too.
-    template <int dim>
-    std::pair<double, double>
-    slip_rate_change(const std::vector<ContactNode<dim>> &nodes,
-                     const Vector<double>                &rate,
-                     const Vector<double>                &v,
-                     const Vector<double>                &free_slip_velocity,
-                     Vector<double>                      &new_rate)
-    {
-      double scale = std::numeric_limits<double>::min(), residual = 0;
-      for (unsigned int p = 0; p < nodes.size(); ++p)
-        {
-          const ContactNode<dim> &node = nodes[p];
-          new_rate[p]                  = node.tangential_vector(v, p).norm();
-          residual = std::max(residual, std::abs(new_rate[p] - rate[p]));
-          scale =
-            std::max({scale,
-                      new_rate[p],
-                      node.tangential_vector(free_slip_velocity, p).norm()});
-        }
-      return {residual / scale, scale};
-    }
-  } // namespace
-
-
-  // @sect4{FrictionSolver::solve_by_convexification}
-
-  // The convexification of the paper's section 6 (refs [3, 4] there):
-  // freeze the coefficient at slip rates s, g_p = m_p S mu(s_p), solve the
-  // convex Tresca problem with these bounds, and repeat with s = |v| until
-  // the slip rates and the slip set stop changing. The first s is the
-  // previous step's slip rate: when (3.22) fails the discrete problem may
-  // have several solutions, and starting from the past selects the one that
-  // continues the motion.
-  //
-  // Why it converges, and what to watch: on Gamma_3 the step minimises
-  //   E(v) = 1/2 (v - v_free)^T D^{-1} (v - v_free) + sum_p m_p j(v_p),
-  // j of (3.8), and j(v) = S int_0^|v| mu is concave in |v| because mu
-  // decreases. So the Tresca energy with g_p = m_p S mu(s_p) majorises E and
-  // touches it where |v| = s: the plain iteration decreases E at every step
-  // (a majorisation-minimisation, or DC, algorithm) and cannot cycle, but
-  // it may crawl where (3.22) fails. Anderson acceleration of the map
-  // s -> |v(s)| ('Solver/Anderson depth') speeds it up; an accelerated
-  // iterate that does not decrease E is rejected and the plain step taken
-  // instead, so the safeguard keeps the descent.
-  template <int dim>
-  void FrictionSolver<dim>::solve_by_convexification(const StepLabel &label,
-                                                     StepStatistics &statistics)
-  {
-    const auto           &solver             = parameters.solver;
-    const unsigned int    n                  = gamma3.nodes.size();
-    const Vector<double> &free_slip_velocity = path->free_slip_velocity();
-
-    Vector<double> rate(n), bound(n), eta(current.friction_force),
-      v(free_slip_velocity.size());
-    const auto slip_rates = [&](const Vector<double> &velocities) {
-      for (unsigned int p = 0; p < n; ++p)
-        rate[p] = gamma3.nodes[p].tangential_vector(velocities, p).norm();
-    };
-    slip_rates(current.slip_velocity);
-    // The stick/slip states of the iterate and of the last accepted one.
-    std::vector<NodeState> state, previous_state;
-    AndersonAcceleration   anderson(solver.anderson_depth);
-    double                 accepted_energy = std::numeric_limits<double>::max();
-    double                 residual        = 0;
-    double                 rate_scale      = 0;
-    bool                   converged       = false;
-    // Its own count: where it takes over from Newton, the Tresca steps
-    // Newton took do not use up its 'Max convexification iterations'.
-    unsigned int iterations = 0;
-
-    while (!converged && iterations < solver.max_convexification_iterations)
-      {
-        ++iterations;
-        ++statistics.convexification_iterations;
-        for (unsigned int p = 0; p < n; ++p)
-          bound[p] = friction_law.is_frictionless() ?
-                       0. :
-                       law_weights[p] * friction_law.bound(rate[p]);
-
-        const TrescaResult tresca = solve_tresca_problem(bound, eta, v, state);
-        statistics.active_set_iterations += tresca.iterations;
-        statistics.cycles_cured += tresca.cycles_cured;
-        AssertThrow(all_processes(tresca.converged),
-                    ExcStepNotConverged(
-                      tresca_failure(label, iterations, tresca.cycles_cured)));
-
-        const double energy_now = energy_on_gamma3(free_slip_velocity, eta, v);
-        if (!all_processes(
-              !(anderson.last_step_was_accelerated() &&
-                energy_now > accepted_energy +
-                               energy_round_off * std::abs(accepted_energy))))
-          {
-            // Safeguard: back to the plain step from the accepted iterate.
-            ++statistics.rejected_accelerations;
-            anderson.restart();
-            slip_rates(current.slip_velocity);
-            eta = current.friction_force;
-            continue;
-          }
-        accepted_energy        = energy_now;
-        current.friction_force = eta;
-        current.slip_velocity  = v;
-        current.node_state     = state;
-
-        Vector<double> new_rate(n);
-        std::tie(residual, rate_scale) =
-          slip_rate_change(gamma3.nodes, rate, v, free_slip_velocity, new_rate);
-        converged =
-          all_processes(friction_law.is_rate_independent() ||
-                        (residual <= solver.convexification_tolerance &&
-                         state == previous_state));
-        previous_state = state;
-        anderson.next_iterate(rate, new_rate);
-        for (double &r : rate)
-          r = std::max(r, 0.);
-      }
-
-    AssertThrow(converged,
-                ExcStepNotConverged(convexification_failure(residual, label)));
-    if (!friction_law.is_rate_independent())
-      last_law_residual_allowance =
-        friction_law.one_sided_lipschitz_constant() /
-        friction_law.coefficient(0.) * residual * rate_scale;
-  }
-
-
-  // @sect4{FrictionSolver::energy_on_gamma3}
-
-  // E(v) with v = v_free - D eta: the quadratic term is
-  // eta^T D eta / 2 = eta . (v_free - v) / 2.
-  template <int dim>
-  double FrictionSolver<dim>::energy_on_gamma3(
-    const Vector<double> &free_slip_velocity,
-    const Vector<double> &eta,
-    const Vector<double> &v) const
-  {
-    Vector<double> velocity_change(free_slip_velocity);
-    velocity_change -= v;
-    double value = 0.5 * (eta * velocity_change);
-    for (unsigned int p = 0; p < gamma3.nodes.size(); ++p)
-      value +=
-        gamma3.nodes[p].weight *
-        friction_law.potential(gamma3.nodes[p].tangential_vector(v, p).norm());
-    return value;
-  }
-
-
-  // @sect4{FrictionSolver::tresca_failure}
-
-  // What a user needs when the active set method of a Tresca problem
-  // does not converge: where, and what makes the sets cycle.
-  template <int dim>
-  std::string
-  FrictionSolver<dim>::tresca_failure(const StepLabel   &label,
-                                      const unsigned int iteration,
-                                      const unsigned int cycles_cured) const
-  {
-    const auto &solver = parameters.solver;
-    return "The active set method for the Tresca problem did not converge "
-           "in step " +
-           std::to_string(label.step_number) +
-           " (t = " + number_text(label.time) + ", convexification iteration " +
-           std::to_string(iteration) + ") within " +
-           std::to_string(solver.max_active_set_iterations) + " iterations ('" +
-           Entry::max_active_set_iterations +
-           "'); its parameter c was halved " + std::to_string(cycles_cured) +
-           " times against cycling. The sets cycle when D = C K^{-1} C^T "
-           "is ill-conditioned, e.g. for a nearly incompressible material "
-           "('" +
-           Entry::poisson_ratio +
-           "' = " + std::to_string(parameters.material.poisson_ratio) +
-           "). More iterations help (each halving damps the cycling), as "
-           "may a different '" +
-           Entry::active_set_parameter + "' (here " +
-           std::to_string(solver.active_set_parameter) + ").";
-  }
-
-
-  // @sect4{FrictionSolver::path_operators}
-
-  // What the Tresca and the Newton method need of the body:
-  // v = v_free - D eta for given forces, and one Newton step.
-  template <int dim>
-  std::pair<TrescaVelocity, TrescaNewtonStep>
-  FrictionSolver<dim>::path_operators()
-  {
-    return {[this](const Vector<double> &eta, Vector<double> &v) {
-              path->velocity_of_force(eta, v);
-            },
-            [this](const std::vector<NodeLinearisation> &linearisation,
-                   Vector<double>                       &eta,
-                   Vector<double>                       &v) {
-              path->newton_step(linearisation, eta, v);
-            }};
-  }
-
-
-  // @sect4{FrictionSolver::solve_tresca_problem}
-
-  // The Tresca problem of one convexification iteration.
-  template <int dim>
-  TrescaResult
-  FrictionSolver<dim>::solve_tresca_problem(const Vector<double>   &bound,
-                                            Vector<double>         &eta,
-                                            Vector<double>         &v,
-                                            std::vector<NodeState> &state)
-  {
-    const auto [velocity_of_force, newton_step] = path_operators();
-    return solve_tresca(velocity_of_force,
-                        newton_step,
-                        dim - 1,
-                        bound,
-                        active_set_parameter,
-                        parameters.solver.max_active_set_iterations,
-                        eta,
-                        v,
-                        state);
-  }
-
-
-  // @sect4{FrictionSolver::all_processes}
-
-  // Every process solves the same problem on Gamma_3 from the same summed
-  // data, so its decisions agree; they are reduced anyway, so that no
-  // process can leave a loop that another one stays in.
-  template <int dim>
-  bool FrictionSolver<dim>::all_processes(const bool condition) const
-  {
-    return Utilities::MPI::min(condition ? 1 : 0, gamma3.mpi_communicator) == 1;
-  }
-
-
-  // @sect4{FrictionSolver::convexification_failure}
-
-  // What a user needs when the convexification stops without converging:
-  // where, how far from converged, and which data drive it.
-  template <int dim>
-  std::string
-  FrictionSolver<dim>::convexification_failure(const double     residual,
-                                               const StepLabel &label) const
-  {
-    const auto        &solver   = parameters.solver;
-    const auto        &friction = parameters.friction;
-    std::ostringstream message;
-    message
-      << "The convexification did not converge in step " << label.step_number
-      << " (t = " << label.time << ") within "
-      << solver.max_convexification_iterations
-      << " iterations ('" + Entry::max_convexification_iterations + "'): the "
-      << "slip rates still change by " << residual
-      << " relative to the velocity (tolerance "
-      << solver.convexification_tolerance
-      << ", '" + Entry::convexification_tolerance + "'); the last iterate has "
-      << std::count(current.node_state.begin(),
-                    current.node_state.end(),
-                    NodeState::stick)
-      << " stick and "
-      << std::count(current.node_state.begin(),
-                    current.node_state.end(),
-                    NodeState::slip)
-      << " slip nodes on Gamma_3. It contracts fast when "
-      << "S (a - b) alpha is small against the stiffness of K on "
-      << "Gamma_3; here S = " << friction.bound_S
-      << ", (a - b) alpha = " << friction_law.one_sided_lipschitz_constant()
-      << ", k = " << label.time_step
-      << " (a step's problem is convex while S (a - b) alpha < "
-      << convexity_limit << ")"
-      << ". More iterations or a larger '" + Entry::anderson_depth + "' help "
-      << "most (doc/stability.md); a smaller '" + Entry::time_step + "' (or "
-      << "'" + Entry::step_cuts + "') and a smaller '" +
-           Entry::friction_bound_S + "' "
-      << "make the step's problem more convex.";
-    return message.str();
+    FrictionStep<dim>    step{parameters,
+                           friction_law,
+                           gamma3,
+                           law_weights,
+                           active_set_parameter,
+                           convexity_limit,
+                           *path,
+                           current,
+                           label,
+                           velocity_scale,
+                           last_law_residual_allowance};
+    FrictionMethod<dim> &method =
+      friction_law.is_rate_independent() ? *convexification : *chosen_method;
+    method.solve(step, *convexification, statistics);
   }
 
 

@@ -129,6 +129,9 @@ namespace Contact
     friction.parse_parameters(prm);
     time.parse_parameters(prm);
     solver.parse_parameters(prm);
+    prm.enter_subsection("Solver");
+    part_values.merge(Parts::parse_entries(prm, "Solver", *this));
+    prm.leave_subsection();
     verification.parse_parameters(prm);
     part_values.merge(Parts::parse_entries(prm, "", *this));
     output.parse_parameters(prm, dimension);

@@ -6,6 +6,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <base/dimensions.h>
+#include <core/factorization.h>
+#include <core/friction_method.h>
+#include <core/friction_solver.h>
 #include <core/parameters.h>
 
 #include <algorithm>
@@ -17,43 +21,37 @@ namespace Contact
 {
   // @sect3{Solver}
 
-  const ChoiceTable<SolverParameters::LinearSolver> &
-  SolverParameters::linear_solvers()
-  {
-    static const ChoiceTable<LinearSolver> table(
-      Entry::linear_solver,
-      {{"auto", LinearSolver::automatic},
-       {"CHOLMOD", LinearSolver::cholmod},
-       {"Amesos_Klu", LinearSolver::amesos_klu},
-       {"Amesos_Mumps", LinearSolver::amesos_mumps},
-       {"Amesos_Lapack", LinearSolver::amesos_lapack},
-       {"CG-AMG", LinearSolver::cg_amg}});
-    return table;
-  }
-
-  const ChoiceTable<SolverParameters::ContactSolver> &
-  SolverParameters::contact_solvers()
-  {
-    static const ChoiceTable<ContactSolver> table(
-      Entry::contact_solver,
-      {{"auto", ContactSolver::automatic},
-       {"Delassus", ContactSolver::delassus},
-       {"constraints", ContactSolver::constraints}});
-    return table;
-  }
-
-  const ChoiceTable<SolverParameters::FrictionMethod> &
-  SolverParameters::friction_methods()
-  {
-    static const ChoiceTable<FrictionMethod> table(
-      Entry::friction_method,
-      {{"Newton", FrictionMethod::newton},
-       {"convexification", FrictionMethod::convexification}});
-    return table;
-  }
-
   namespace
   {
+    // The parts that an entry of Solver chooses: each is registered in
+    // every compiled dimension, and the entry lists those of one.
+    constexpr int names_dimension = is_compiled_dimension(2) ? 2 : 3;
+    using LinearSolvers           = LinearSolverRegistry;
+    using ContactPaths            = ContactPathRegistry<names_dimension>;
+    using FrictionMethods         = FrictionMethodRegistry<names_dimension>;
+
+    // The help texts list the parts as they always did: the parts' words
+    // in the order of their ranks, and 'auto' last.
+    template <class Registry>
+    std::string descriptions(const bool with_names)
+    {
+      std::string text;
+      for (const auto &part : Registry::parts())
+        if (!part.description.empty())
+          text += (text.empty() ? "" : " ") +
+                  (with_names ? part.name + ": " : std::string()) +
+                  part.description;
+      return text;
+    }
+
+    // The value of an entry that chooses a part or 'auto'.
+    template <class Registry>
+    std::string part_or_auto(const std::string &entry, const std::string &name)
+    {
+      return name == "auto" ? name : Registry::parse(entry, name);
+    }
+
+
     // The entries of the friction problem's solver, in the subsection
     // Solver.
     void declare_friction_method_entries(ParameterHandler &prm)
@@ -65,38 +63,13 @@ namespace Contact
         "The convexification stops when the slip rates on Gamma_3 change by "
         "less than this, relative to the largest tangential velocity, and the "
         "slip set does not change.");
-      prm.declare_entry(
-        "Friction method",
-        SolverParameters::friction_methods().name(
-          SolverParameters::FrictionMethod::newton),
-        SolverParameters::friction_methods().pattern(),
-        "How the nonmonotone friction problem of a step is solved. Newton: "
-        "a semismooth Newton method on the full law, with the derivative of "
-        "the friction coefficient in its Jacobian (on the constraints path "
-        "the solver gets the matrix with the weakening capped below the "
-        "convexity limit, positive definite, and the true slopes enter by a "
-        "low-rank correction), a line search with sufficient decrease of "
-        "the step's energy from the previous step's forces, and a "
-        "convexification step (a Tresca problem) where the Newton step does "
-        "not lower it. An end point beyond the convexity limit must pass a "
-        "test of the energy's curvature (a local minimum, not a saddle); "
-        "where it does not, or where Newton does not converge within 'Max "
-        "Newton iterations', the convexification solves the step. "
-        "convexification: the paper's fixed point, one Tresca "
-        "problem per iteration (with Anderson acceleration), solved by the "
-        "primal-dual active set method; it is the fallback of Newton. Both "
-        "find the same solution where the step problem has one; where it "
-        "has several (S (a - b) alpha above the convexity limit printed at "
-        "start-up) both start with the same Tresca step from the previous "
-        "step's state and may then end on different local minima: Newton "
-        "returns the one its descent on the step's energy reaches "
-        "(doc/algorithm.md), and its summary line counts the steps beyond "
-        "the convexity limit and the steps the convexification took over.");
-      prm.declare_entry("Max Newton iterations",
-                        "50",
-                        Patterns::Integer(1),
-                        "Iteration limit of the Newton method per step; "
-                        "then the convexification takes over.");
+      prm.declare_entry("Friction method",
+                        FrictionMethods::parts().front().name,
+                        Patterns::Selection(FrictionMethods::selection()),
+                        "How the nonmonotone friction problem of a step is "
+                        "solved. " +
+                          descriptions<FrictionMethods>(true));
+      Parts::declare_entries_after(prm, "Solver", "Friction method");
       prm.declare_entry("Max convexification iterations",
                         "200",
                         Patterns::Integer(2),
@@ -132,17 +105,11 @@ namespace Contact
     {
       prm.declare_entry(
         "Linear solver",
-        SolverParameters::linear_solvers().name(
-          SolverParameters::LinearSolver::automatic),
-        SolverParameters::linear_solvers().pattern(),
-        "How systems with K = (rho/k) M + A + k B are solved. CHOLMOD "
-        "(SuiteSparse's supernodal Cholesky, one process) or a Trilinos "
-        "Amesos solver (Amesos_Mumps: MUMPS, distributed over the processes) "
-        "factorise K once per run; CG-AMG: conjugate gradients with Trilinos "
-        "ML's algebraic multigrid (built once per run), for meshes whose "
-        "factor does not fit, relative residual " +
-          number_text(SolverParameters::cg_relative_residual) +
-          ". auto: CHOLMOD on one process, Amesos_Mumps on more.");
+        "auto",
+        Patterns::Selection("auto|" + LinearSolvers::selection()),
+        "How systems with K = (rho/k) M + A + k B are solved. " +
+          descriptions<LinearSolvers>(false) +
+          " auto: CHOLMOD on one process, Amesos_Mumps on more.");
       prm.declare_entry(
         "Step cuts",
         "0",
@@ -155,20 +122,11 @@ namespace Contact
         "time_series.csv counts them (column step_cuts).");
       prm.declare_entry(
         "Contact solver",
-        SolverParameters::contact_solvers().name(
-          SolverParameters::ContactSolver::automatic),
-        SolverParameters::contact_solvers().pattern(),
-        "How the friction problem of a step is solved. Delassus: on the "
-        "tangential unknowns of Gamma_3 alone, with the dense Delassus "
-        "operator D = C K^{-1} C^T built once per run: from "
-        "Y = L^{-1} P C^T (sparse; K = P^T L L^T P by CHOLMOD), a step then "
-        "costs one forward and one backward substitution and dense work on "
-        "Gamma_3; with the other linear solvers from Z = K^{-1} C^T (dense, "
-        "one solve per tangential unknown of Gamma_3), a step then costs one "
-        "solve and a product with Z. constraints: the straightforward path; "
-        "every Newton step of the active set method solves on the whole "
-        "body with the sticking nodes held fixed as constraints, and "
-        "refactorises; no D. auto: Delassus while Gamma_3 has at most " +
+        "auto",
+        Patterns::Selection("auto|" + ContactPaths::selection()),
+        "How the friction problem of a step is solved. " +
+          descriptions<ContactPaths>(true) +
+          " auto: Delassus while Gamma_3 has at most " +
           std::to_string(SolverParameters::max_delassus_unknowns) +
           " tangential unknowns (the dense Newton steps cost O(n^3) in their "
           "number n) and, without CHOLMOD, the linear solver is direct and Z "
@@ -198,21 +156,25 @@ namespace Contact
       max_active_set_iterations = prm.get_integer("Max active set iterations");
       active_set_parameter      = prm.get_double("Active set parameter");
       anderson_depth            = prm.get_integer("Anderson depth");
-      linear_solver   = linear_solvers().parse(prm.get("Linear solver"));
-      contact_solver  = contact_solvers().parse(prm.get("Contact solver"));
-      friction_method = friction_methods().parse(prm.get("Friction method"));
-      max_newton_iterations = prm.get_integer("Max Newton iterations");
-      step_cuts             = prm.get_integer("Step cuts");
+      linear_solver   = part_or_auto<LinearSolvers>(Entry::linear_solver,
+                                                  prm.get("Linear solver"));
+      contact_solver  = part_or_auto<ContactPaths>(Entry::contact_solver,
+                                                  prm.get("Contact solver"));
+      friction_method = FrictionMethods::parse(Entry::friction_method,
+                                               prm.get("Friction method"));
+      step_cuts       = prm.get_integer("Step cuts");
     }
     prm.leave_subsection();
 
     const unsigned int n_processes =
       Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-    if (linear_solver == LinearSolver::automatic)
+    // 'auto': CHOLMOD on one process, on more the distributed MUMPS where
+    // the build has it.
+    if (linear_solver == "auto")
       linear_solver =
-        (n_processes == 1 ? LinearSolver::cholmod : LinearSolver::amesos_mumps);
-    iterative_linear_solver = (linear_solver == LinearSolver::cg_amg);
-
+        (n_processes == 1 || !LinearSolvers::is_registered("Amesos_Mumps") ?
+           cholmod_name :
+           "Amesos_Mumps");
     check_entry(convexification_tolerance > 0,
                 "Solver/Convexification tolerance",
                 convexification_tolerance,
@@ -221,7 +183,7 @@ namespace Contact
                 "Solver/Active set parameter",
                 active_set_parameter,
                 "a value > 0");
-    AssertThrow(linear_solver != LinearSolver::cholmod || n_processes == 1,
+    AssertThrow(linear_solver != cholmod_name || n_processes == 1,
                 ExcMessage("'Solver/Linear solver = CHOLMOD' runs on one MPI "
                            "process; on " +
                            std::to_string(n_processes) +

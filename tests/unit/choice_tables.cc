@@ -15,6 +15,9 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
+#include <core/factorization.h>
+#include <core/friction_method.h>
+#include <core/friction_solver.h>
 #include <core/geometry_base.h>
 #include <core/parameters.h>
 #include <parts/studies/study_parameters.h>
@@ -126,6 +129,39 @@ namespace
         exc.print_info(std::cout);
       }
   }
+
+  // The same for an entry whose Selection is 'auto' (resolved by the core)
+  // before the registered names, and whose parts are made with arguments
+  // that a unit test lacks: the unknown name is refused by parse(), with
+  // the words of create().
+  template <class Registry>
+  void check_parts_after_auto(const std::string                  &entry,
+                              std::map<std::string, std::string> &selections,
+                              const std::string                  &before)
+  {
+    const auto        declared = selections.find(entry);
+    const std::string pattern =
+      Patterns::Selection(before + Registry::selection()).description();
+    std::cout << entry << ": "
+              << (declared == selections.end() ?
+                    "not a declared Selection" :
+                  declared->second == pattern ?
+                    "the pattern lists the registered names" :
+                    "the pattern " + declared->second + " differs from " +
+                      pattern)
+              << std::endl;
+    if (declared != selections.end())
+      selections.erase(declared);
+    try
+      {
+        Registry::parse(entry, "no such choice");
+        std::cout << "  an unknown name is accepted" << std::endl;
+      }
+    catch (const ExceptionBase &exc)
+      {
+        exc.print_info(std::cout);
+      }
+  }
 } // namespace
 
 int main()
@@ -144,9 +180,15 @@ int main()
   check(GeometryParameters::cell_shapes(), selections);
   check(GeometryParameters::mass_matrices(), selections);
   check(MaterialParameters::plane_models(), selections);
-  check(SolverParameters::linear_solvers(), selections);
-  check(SolverParameters::contact_solvers(), selections);
-  check(SolverParameters::friction_methods(), selections);
+  check_parts_after_auto<LinearSolverRegistry>(Entry::linear_solver,
+                                               selections,
+                                               "auto|");
+  check_parts_after_auto<ContactPathRegistry<2>>(Entry::contact_solver,
+                                                 selections,
+                                                 "auto|");
+  check_parts_after_auto<FrictionMethodRegistry<2>>(Entry::friction_method,
+                                                    selections,
+                                                    "");
   check(VerificationParameters::solutions(), selections);
   check(ConvergenceStudyParameters::refinements(), selections);
   check(AccuracyParameters::target_error_types(), selections);

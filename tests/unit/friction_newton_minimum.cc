@@ -25,6 +25,7 @@
 #include <core/delassus_operator.h>
 #include <core/friction.h>
 #include <core/parameters.h>
+#include <parts/newton/friction_newton.h>
 
 #include "make_delassus.h"
 

@@ -26,6 +26,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -332,12 +333,14 @@ namespace Contact
     }
 
   protected:
-    std::unique_ptr<ContactPath<dim>> make_path(const MatrixType &system_matrix,
-                                                Factorization    &factorization,
-                                                const bool delassus) override
+    std::unique_ptr<ContactPath<dim>>
+    make_path(const MatrixType  &system_matrix,
+              Factorization     &factorization,
+              const std::string &name) override
     {
+      const bool                        delassus = (name == delassus_path_name);
       std::unique_ptr<ContactPath<dim>> path =
-        FrictionSolver<dim>::make_path(system_matrix, factorization, delassus);
+        FrictionSolver<dim>::make_path(system_matrix, factorization, name);
       const double c = faults.compliance_factor;
       if (c != 1. && delassus)
         path = std::make_unique<ScaledDelassusPath<dim>>(std::move(path), c);

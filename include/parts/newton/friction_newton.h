@@ -1,8 +1,13 @@
 /**
  * Newton's method on the full nonmonotone friction law of a step on
- * Gamma_3 (solve_friction_newton() of friction.h): its tuned constants and
- * the method as a class whose members are the state of the iteration.
+ * Gamma_3: solve_friction_newton(), the nodal law and the energy of a step
+ * that it descends on, its tuned constants and the method as a class whose
+ * members are the state of the iteration. The friction method 'Newton'
+ * (newton_method.cc) solves a step with it.
  *
+ *   newton_method.cc                 the friction method 'Newton' and its
+ *                                    entry
+ *   nodal_law.cc                     NodalLaw
  *   friction_newton.cc               the iteration: start, Newton steps with
  *                                    their line search, convexification
  *                                    steps, extrapolation, stick proposals
@@ -17,17 +22,143 @@
 
 #include <core/friction.h>
 
+#include <limits>
+#include <string>
 #include <vector>
 
 namespace Contact
 {
   using namespace dealii;
 
+  namespace Entry
+  {
+    inline const std::string max_newton_iterations =
+      "Solver/Max Newton iterations";
+  } // namespace Entry
+
+  /** While the stick/slip sets still change, Newton's model caps the
+   *  weakening at this fraction of the convexity limit, where the model is
+   *  convex; below the same fraction a solution is a local minimum without
+   *  a test (the 10 % cover the error of the limit's Lanczos estimate). */
+  constexpr double weakening_cap_fraction = 0.9;
+
+  /**
+   * The nodal friction law with the coefficient not frozen: node p's bound
+   * g_p(s) = m_p S mu(s) at slip rate s, its derivative, and the energy of
+   * a step on Gamma_3 (the discrete counterpart of (3.8)),
+   *   E(v) = 1/2 (v - v_free)^T D^{-1} (v - v_free) + sum_p m_p j(|v_p|),
+   * which is 1/2 eta^T D eta + sum_p m_p j(|v_p|) for v = v_free - D eta.
+   */
+  struct NodalLaw
+  {
+    const FrictionLaw    &law;
+    const Vector<double> &weights;
+    /** The steepest weakening per unit weight, |g_p'| / m_p, that the
+     *  Newton model takes while it is far from the solution (infinite: the
+     *  true slope throughout). Below the convexity limit of the step's
+     *  problem it keeps the model convex. */
+    double weakening_cap = std::numeric_limits<double>::infinity();
+    /** 1 / lambda_max(M^{1/2} D M^{1/2}): E is convex while the weakening
+     *  per unit weight stays below it (friction_solver.cc); 0 where it is
+     *  not known, and nothing is then certified without the curvature
+     *  test. */
+    double convexity_limit = 0;
+    /** The relative accuracy of E (ContactPath::energy_accuracy()): a
+     *  line search accepts a step whose E is above the last one by less
+     *  than this times the size of E's error (energy()). */
+    double energy_accuracy = energy_round_off;
+    /** The size of the body's velocities in the step (max |w_{n-1}|): the
+     *  solves' error in v, and so in E, is relative to it. */
+    double velocity_scale = 0;
+
+    /** Whether E may be nonconvex: the steepest weakening of the law is not
+     *  below weakening_cap_fraction times the convexity limit. */
+    bool   may_be_nonconvex() const;
+    double bound(const unsigned int p, const double s) const;
+    double slope(const unsigned int p, const double s) const;
+    /** E at (eta, v) minus 1/2 eta_0^T D eta_0 of a reference iterate
+     *  (eta_0, v_0): 1/2 (eta + eta_0) . (v_0 - v) + sum_p m_p j(|v_p|),
+     *  for iterates with v = v_free - D eta (no v_free needed). In scale
+     *  the size of its error (round-off and the solves' accuracy). */
+    double energy(const Vector<double> &reference_eta,
+                  const Vector<double> &reference_v,
+                  const Vector<double> &eta,
+                  const Vector<double> &v,
+                  double               &scale) const;
+  };
+
+  /** What the Newton method on the full law did. */
+  struct FrictionNewtonResult
+  {
+    unsigned int iterations = 0;
+    /** Newton steps shortened by the line search. */
+    unsigned int damped_steps = 0;
+    /** Convexification steps (a Tresca problem with the bounds of the
+     *  current slip rates): the start where E may be nonconvex and those
+     *  tried where no Newton step lowered E or the solver refused the
+     *  Newton matrix (one each, also where its Tresca problem was solved
+     *  twice or did not converge), and the active set iterations they
+     *  took. */
+    unsigned int convexification_steps = 0;
+    unsigned int active_set_iterations = 0;
+    /** Converged to a solution of the law that is a local minimum of E:
+     *  below the convexity limit, or certified by the curvature test. */
+    bool converged = false;
+    /** At the solution some slip node weakens faster than
+     *  weakening_cap_fraction times the convexity limit: E is not convex
+     *  there, and the curvature test decided. */
+    bool beyond_convexity_limit = false;
+    /** The law holds, but the curvature test did not find a local minimum
+     *  (a saddle, or a path that cannot tell): converged is false, and the
+     *  caller takes another method. */
+    bool minimum_not_certified = false;
+    /** Saddles of E (solutions of the law with negative curvature on the
+     *  slip set) that the method left along their negative curvature. */
+    unsigned int saddle_exits = 0;
+    /** A Tresca problem (the start, or a convexification step) did not
+     *  converge within its active set iterations. */
+    bool tresca_failed = false;
+  };
+
+  /**
+   * The friction problem of a step with the full nonmonotone law (5.3),
+   *
+   *   v = v_free - D eta,
+   *   |eta_p| <= g_p(0) if v_p = 0,  eta_p = g_p(|v_p|) v_p / |v_p| else,
+   *
+   * by a semismooth Newton method on the complementarity function
+   * F_p = eta_p - P_{B(g_p(|v_p|))}(eta_p + c_p v_p): the linearisation of
+   * solve_tresca() plus, on slip nodes, the derivative of the bound,
+   * g_p' (zhat . dv), so that slip rates and forces are found together
+   * instead of by a fixed point around Tresca problems. The Jacobian stays
+   * symmetric; it is indefinite where the step problem is not convex
+   * (g_p' < 0 is the weakening). The solutions of the law are the
+   * stationary points of the step's energy E (NodalLaw), and the
+   * globalisation (line search, convexification steps, a test of the end
+   * point and the exit from saddles) makes the method a descent method on
+   * E that ends on a local minimum: FrictionNewton (below) describes it
+   * step by step and holds its tuned constants.
+   * (eta, v, state) are the solution where the result converged and are
+   * unspecified otherwise.
+   */
+  FrictionNewtonResult
+  solve_friction_newton(const TrescaNewtonStep &newton_step,
+                        const CurvatureTest    &curvature,
+                        const unsigned int      n_components,
+                        const NodalLaw         &law,
+                        const Vector<double>   &c,
+                        const unsigned int      max_iterations,
+                        const unsigned int      max_active_set_iterations,
+                        Vector<double>         &eta,
+                        Vector<double>         &v,
+                        std::vector<NodeState> &state);
+
+
   /**
    * The tuned constants of Newton's method on the full law, each with what
    * it controls and why it has its value. (The tolerances that it shares
-   * with the rest of the friction solver, friction_residual_tolerance,
-   * energy_round_off and weakening_cap_fraction, are in friction.h.)
+   * with the rest of the friction solver, friction_residual_tolerance and
+   * energy_round_off, are in friction.h.)
    */
   struct FrictionNewtonConstants
   {
@@ -112,7 +243,7 @@ namespace Contact
 
   /**
    * The globalised semismooth Newton method on the full law of
-   * solve_friction_newton() (friction.h), one object per solve: the
+   * solve_friction_newton() (above), one object per solve: the
    * constructor takes the problem and the iterate (eta, v) on entry, and
    * solve() runs the method on it. The solutions of the law are the
    * stationary points of the step's energy E (NodalLaw), and the
