@@ -17,8 +17,8 @@
  *                       products with them (SystemMatrices)
  *   time_stepping.cc    the step, its energy balance and its cuts
  *   mesh_transfer.cc    the move to a mesh adapted during the run
- * Checkpoint and restart are a class of their own (Checkpoint,
- * checkpoint.h) that the problem owns.
+ * What stores the run so that it can be resumed is a part
+ * (RunStorage, run_storage.h) that the problem calls at fixed points.
  * Everything that observes a run (output, self-checks, diagnostics) is a
  * Postprocessor (postprocessor.h; the console and VTU in source/core/, the
  * others in source/parts/): the time loop is "advance; then each
@@ -37,11 +37,10 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <core/parameters.h>
-#include <parts/checkpoint/checkpoint.h>
 #include <core/discrete_space.h>
 #include <core/loads.h>
-#include <parts/manufactured/manufactured_solution.h>
 #include <core/mesh_plan.h>
+#include <core/run_storage.h>
 #include <core/step_state.h>
 #include <core/factorization.h>
 #include <core/friction.h>
@@ -160,7 +159,7 @@ namespace Contact
   };
 
 
-  /** What a whole run gives a convergence study. */
+  /** What a whole run gives a driver (a study). */
   struct RunSummary
   {
     /** 'Geometry/Cell size' of a box; the largest cell diameter of a mesh
@@ -170,11 +169,11 @@ namespace Contact
     unsigned int            n_steps   = 0;
     types::global_dof_index n_dofs    = 0;
     double                  wall_time = 0;
-    /** Largest error over the steps 1..N, with a manufactured solution. */
+    /** Largest error over the steps 1..N, with an exact solution. */
     ErrorNorms max_errors;
     /** ||eps(u_h(T))||: the scale of the V-errors. */
     double displacement_V_norm = 0;
-    /** The errors at t = T, with a manufactured solution. */
+    /** The errors at t = T, with an exact solution. */
     ErrorNorms final_errors;
     /** What a contact engineer reads of the state at T, by name: the
      *  probe displacements, the friction dissipation, the slipping share
@@ -333,11 +332,9 @@ namespace Contact
     const std::unique_ptr<const Geometry<dim>> geometry;
 
     // Mesh, finite element space and constraints (setup.cc), the cycles of
-    // a mesh adaptation that change the Geometry's mesh
-    // (parts/studies/mesh_adaptation.h) and those to come during the run
-    // (mesh_transfer.cc), and the loads on the space (loads.cc; with
-    // 'Verification/Manufactured solution' they are the manufactured
-    // solution's).
+    // a mesh adaptation that change the Geometry's mesh (adapt_mesh()) and
+    // those to come during the run (mesh_transfer.cc), and the loads on the
+    // space (loads.cc; those of an exact solution where a part gives one).
     DiscreteSpace<dim>          space;
     MeshAdaptation              adaptation;
     std::unique_ptr<Loads<dim>> loads;
@@ -358,9 +355,10 @@ namespace Contact
     // output directory (contact_problem.cc).
     RunRecord run_record;
 
-    // Checkpoint and restart ('Output/Checkpoint interval', --resume;
-    // checkpoint.cc) of the members above and of the postprocessors.
-    Checkpoint<dim> checkpoint;
+    // What stores the members above and the postprocessors so that the
+    // run can be resumed (--resume; a part, run_storage.h), if the program
+    // has one.
+    std::unique_ptr<RunStorage<dim>> storage;
 
     // What the postprocessors read of the members above (the
     // constructor).

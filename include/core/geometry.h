@@ -9,7 +9,9 @@
  * entries of the subsection Geometry that describe it alone (PartEntries,
  * base/parts.h). The box and the shell are parts of the program
  * (GeometryRegistration): 'Geometry/Domain' is the Selection of their
- * names; a 'Geometry/Mesh file' replaces the Domain (create_geometry()).
+ * names. A geometry that an entry of its own asks for (a mesh file)
+ * replaces the Domain: a part of the kind ReplacingGeometryRegistry
+ * (create_geometry()).
  * No code outside the geometries' own files asks which geometry it is.
  *
  * A new geometry (doc/tutorial.md, "Adding a geometry") is one file: its
@@ -89,8 +91,29 @@ namespace Contact
   };
 
 
-  /** The geometry of 'Geometry/Mesh file' if it is set, else that of
-   *  'Geometry/Domain': made once by the problem of a run, which keeps it
+  /**
+   * A geometry that an entry of its own chooses in place of
+   * 'Geometry/Domain' (a mesh file): a part of the kind
+   * ReplacingGeometryRegistry, whose create() gives nullptr where the
+   * parameters do not ask for it.
+   */
+  template <int dim>
+  class ReplacingGeometry : public Geometry<dim>
+  {
+  public:
+    using Geometry<dim>::Geometry;
+  };
+
+  /** The kind of the geometries that replace the Domain (base/parts.h),
+   *  registered for every compiled dimension; the first whose create()
+   *  gives one is the run's. */
+  template <int dim>
+  using ReplacingGeometryRegistry =
+    PartRegistry<const ReplacingGeometry<dim>, const Parameters &, MPI_Comm>;
+
+  /** The geometry that replaces the Domain if a part of
+   *  ReplacingGeometryRegistry makes one, else that of 'Geometry/Domain':
+   *  made once by the problem of a run, which keeps it
    *  (ContactProblem::get_geometry()). */
   template <int dim>
   std::unique_ptr<const Geometry<dim>>

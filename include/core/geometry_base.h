@@ -74,10 +74,11 @@ namespace Contact
      *  needs to be at least 3"; empty where nothing does. */
     virtual std::string coarsening_obstacle(const unsigned int doublings) const;
 
-    /** Refuses a scene on which the manufactured solution
-     *  (parts/manufactured/manufactured_solution.h) does not solve the
-     * continuous problem or is not resolved. By default every scene: the
-     * solution is defined on the box. */
+    /** Refuses a scene on which the manufactured solution (the exact
+     *  solution of 'Verification/Manufactured solution') does not solve
+     *  the continuous problem or is not resolved; the manufactured
+     *  solution asks it (ExactSolution::check_scene()). By default every
+     *  scene: the solution is defined on the box. */
     virtual void check_manufactured_scene() const;
 
   protected:

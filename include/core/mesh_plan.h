@@ -1,9 +1,9 @@
 /**
- * MeshPlan: how a mesh adaptation (parts/studies/mesh_adaptation.h) changed the
- * scene's mesh, cycle by cycle: the cells it refined and those it
- * coarsened, by their CellId. The scene's mesh is built as always and the
- * cycles are then replayed (mesh_plan.cc), on one process or on several:
- * a CellId names the same cell of p4est's forest on any number of
+ * MeshPlan: how a mesh adaptation (ContactProblem::adapt_mesh() and
+ * adapt_mesh_during_run()) changed the scene's mesh, cycle by cycle: the cells
+ * it refined and those it coarsened, by their CellId. The scene's mesh is built
+ * as always and the cycles are then replayed (mesh_plan.cc), on one process or
+ * on several: a CellId names the same cell of p4est's forest on any number of
  * processes, so every run of the plan has the same mesh.
  */
 #ifndef contact_mesh_plan_h

@@ -7,9 +7,9 @@
  * involve entries of several subsections, and Geometry::create_mesh()
  * those that need the mesh. A Selection entry is an enum class with its
  * ChoiceTable. The entries of one geometry alone are declared and parsed
- * by that geometry (source/core/box.cc, source/parts/<geometry>/), those of the
- * studies by the studies (parts/studies/study_parameters.h): a part declares,
- * parses and checks its own entries (PartEntries, base/parts.h).
+ * by that geometry (source/core/box.cc, source/parts/<geometry>/), those of a
+ * part by the part: a part declares, parses and checks its own entries
+ * (PartEntries, base/parts.h).
  */
 #ifndef contact_parameters_h
 #define contact_parameters_h
@@ -21,7 +21,6 @@
 #include <base/choice_table.h>
 #include <core/friction_laws.h>
 #include <base/parts.h>
-#include <base/quantity.h>
 
 #include <any>
 #include <array>

@@ -3,7 +3,7 @@
  * changing it (the split of ASPECT's Postprocess::Interface). The core
  * solves; everything a user sees of a run (the VTU/PVD output, the time
  * series, the Gamma_3 history, the probes, the console reports, the
- * self-checks, the slip diagnostics, the errors against a manufactured
+ * self-checks, the slip diagnostics, the errors against an exact
  * solution) is a postprocessor that owns its state, stores it with a
  * checkpoint, and reads the problem through the accessors of this base
  * class: the const view of the run (RunView, contact_problem.h) that the
@@ -230,7 +230,8 @@ namespace Contact
     {
       return *run->loads;
     }
-    const ManufacturedSolution<dim> *exact_solution() const
+    /** The run's exact solution (ExactSolution, loads.h), or nullptr. */
+    const ExactSolution<dim> *exact_solution() const
     {
       return run->loads->exact_solution();
     }

@@ -146,7 +146,7 @@ namespace Contact
 
     // @sect4{set_initial_state}
 
-    // u_0 and w_0 = u_1 (of the .prm or of the manufactured solution)
+    // u_0 and w_0 = u_1 (of the .prm or of an exact solution)
     // interpolated at the nodes, then made to satisfy the constraints of
     // V_h (the clamp and w.n = 0 on Gamma_3); M w_0 and B u_0 and the
     // initial energy.
@@ -167,7 +167,7 @@ namespace Contact
                                space.dof_handler,
                                loads.initial_velocity(),
                                state.velocity);
-      if (!parameters.verification.manufactured())
+      if (!loads.exact_solution())
         {
           warn_of_normal_component(state.displacement,
                                    "Initial displacement",
@@ -324,6 +324,23 @@ namespace Contact
                              "/parameters.prm': " + std::strerror(errno) +
                              "."));
     }
+
+
+    // @sect4{create_run_storage}
+
+    // The part that stores the run, the first of its kind if the program
+    // has one; a resumed run needs it.
+    template <int dim>
+    std::unique_ptr<RunStorage<dim>>
+    create_run_storage(const RunStorageView<dim> &run)
+    {
+      const auto &parts = RunStorageParts<dim>::parts();
+      AssertThrow(!parts.empty() || !run.parameters.output.resume,
+                  ExcMessage("Entry '" + Entry::resume +
+                             "' = true: this program has no part that stores "
+                             "runs, so none can be resumed."));
+      return parts.empty() ? nullptr : parts.front().create(run);
+    }
   } // namespace
 
 
@@ -336,14 +353,14 @@ namespace Contact
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , geometry(create_geometry<dim>(parameters, MPI_COMM_WORLD))
     , space(parameters.geometry, MPI_COMM_WORLD)
-    , checkpoint(parameters,
-                 space,
-                 adaptation,
-                 state,
-                 friction_solver,
-                 postprocessors,
-                 pcout,
-                 computing_timer)
+    , storage(create_run_storage<dim>({parameters,
+                                       space,
+                                       adaptation,
+                                       state,
+                                       friction_solver,
+                                       postprocessors,
+                                       pcout,
+                                       computing_timer}))
     , run_view{*this,
                parameters,
                state,
@@ -420,10 +437,10 @@ namespace Contact
                             space.mpi_communicator);
     const bool resumed = parameters.output.resume;
     if (resumed)
-      checkpoint.restore_mesh_plan();
+      storage->restore_mesh_plan();
     make_grid();
-    if (parameters.verification.manufactured())
-      geometry->check_manufactured_scene();
+    if (loads->exact_solution())
+      loads->exact_solution()->check_scene(*geometry);
     setup_system();
     // The postprocessors' set-up may refuse an entry of theirs (a probe
     // outside the body): before anything is reported of the mesh.
@@ -448,7 +465,7 @@ namespace Contact
     state.step_number = 0;
     if (resumed)
       {
-        checkpoint.load();
+        storage->load();
         check_step_tables(parameters.output.directory, state.step_number);
       }
     prepare_output_directory(parameters, space.mpi_communicator);
@@ -524,8 +541,8 @@ namespace Contact
             state.step_number % adaptation.interval == 0 &&
             state.step_number < n_steps)
           transfer_to_adapted_mesh();
-        if (checkpoint.due())
-          checkpoint.save();
+        if (storage && storage->due())
+          storage->save();
       }
   }
 

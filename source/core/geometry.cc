@@ -11,7 +11,6 @@
 
 #include <base/dimensions.h>
 #include <core/geometry.h>
-#include <parts/mesh_file/mesh_file.h>
 
 #include <algorithm>
 #include <cmath>
@@ -259,14 +258,15 @@ namespace Contact
 
   // @sect4{create_geometry}
 
-  // A mesh file replaces the Domain (the shell's parsing refuses a shell
-  // with a mesh file); else the registered geometry of that name.
+  // A geometry that an entry of its own asks for (a mesh file) replaces
+  // the Domain; else the registered geometry of that name.
   template <int dim>
   std::unique_ptr<const Geometry<dim>>
   create_geometry(const Parameters &parameters, const MPI_Comm communicator)
   {
-    if (!parameters.geometry.mesh_file.empty())
-      return std::make_unique<MeshFile<dim>>(parameters, communicator);
+    for (const auto &part : ReplacingGeometryRegistry<dim>::parts())
+      if (auto geometry = part.create(parameters, communicator))
+        return geometry;
     return GeometryRegistry<dim>::create(Entry::domain,
                                          parameters.geometry.domain,
                                          parameters,

@@ -1,6 +1,5 @@
 /* The loads of the scheme (5.2): the body force, the tractions and the
-   initial values from the .prm's expressions or the manufactured
-   solution. */
+   initial values from the .prm's expressions or an exact solution. */
 
 #include <deal.II/base/exceptions.h>
 
@@ -14,6 +13,22 @@
 
 namespace Contact
 {
+  namespace
+  {
+    // The exact solution of the first part that gives one for the
+    // parameters, or nullptr.
+    template <int dim>
+    std::unique_ptr<const ExactSolution<dim>>
+    create_exact_solution(const Parameters &parameters)
+    {
+      for (const auto &part : ExactSolutionParts<dim>::parts())
+        if (auto exact = part.create(parameters))
+          return exact;
+      return nullptr;
+    }
+  } // namespace
+
+
   // @sect4{Loads::Loads}
 
   template <int dim>
@@ -21,9 +36,7 @@ namespace Contact
                     const DiscreteSpace<dim> &discrete_space,
                     TimerOutput              &timer)
     : parameters(run_parameters)
-    , exact(parameters.verification.manufactured() ?
-              std::make_unique<ManufacturedSolution<dim>>(parameters) :
-              nullptr)
+    , exact(create_exact_solution<dim>(parameters))
     , space(discrete_space)
     , computing_timer(timer)
     , body_force_is_constant(
@@ -46,10 +59,9 @@ namespace Contact
                                    true);
     if (exact)
       {
-        u0 = std::make_unique<typename ManufacturedSolution<dim>::Field>(*exact,
-                                                                         false);
-        u1 = std::make_unique<typename ManufacturedSolution<dim>::Field>(*exact,
-                                                                         true);
+        u0 =
+          std::make_unique<typename ExactSolution<dim>::Field>(*exact, false);
+        u1 = std::make_unique<typename ExactSolution<dim>::Field>(*exact, true);
       }
   }
 
@@ -89,7 +101,7 @@ namespace Contact
 
 
   template <int dim>
-  const ManufacturedSolution<dim> *Loads<dim>::exact_solution() const
+  const ExactSolution<dim> *Loads<dim>::exact_solution() const
   {
     return exact.get();
   }
@@ -98,7 +110,7 @@ namespace Contact
   // @sect4{Loads::visit_loads}
 
   // F_n = f(t_n) of (5.2): the body force f_0 in Omega and the tractions
-  // f_2 on Gamma_2. With a manufactured solution they come from it (f_2 =
+  // f_2 on Gamma_2. With an exact solution they come from it (f_2 =
   // sigma n on every side that is neither clamped nor in contact), and its
   // tangential load f_3 on Gamma_3 acts with the nodal weights m_p of the
   // friction term. Every cell that carries a load is handed to `visit_cell`
@@ -233,8 +245,8 @@ namespace Contact
   }
 
 
-  // A side that is neither clamped nor in contact: the manufactured
-  // solution's traction acts on it.
+  // A side that is neither clamped nor in contact: an exact solution's
+  // traction acts on it.
   template <int dim>
   bool Loads<dim>::is_free_side(const types::boundary_id id) const
   {
@@ -331,7 +343,7 @@ namespace Contact
   // F(t) . w for fields w in V_h (ghosted), from the loads' expressions at
   // time t and the fields' values on each cell, without the assembled load
   // vector: int f_0 . w_h dx + int_Gamma2 f_2 . w_h ds (+ the nodal f_3 of
-  // a manufactured solution), with the quadrature of the assembly. The
+  // an exact solution), with the quadrature of the assembly. The
   // loads are evaluated once for all fields (the velocity's power and the
   // rotation's moment), and with each the sum of the magnitudes of the
   // products it adds up (of every cell's and node's entry, and of every

@@ -3,8 +3,8 @@
    muparser expressions. Each subsection's own entries are in
    scene_parameters.cc (the scene), solver_parameters.cc (the solvers and
    the verification) and output_parameters.cc (the output); the parts
-   (base/parts.h) declare, parse and check theirs, the studies' subsections
-   among them (parts/studies/study_parameters.cc). */
+   (base/parts.h) declare, parse and check theirs, whole subsections among
+   them. */
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>

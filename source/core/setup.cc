@@ -108,7 +108,7 @@ namespace Contact
 
   // @sect4{ContactProblem::create_loads}
 
-  // The loads of the .prm, or of the manufactured solution (a virtual
+  // The loads of the .prm, or of an exact solution (a virtual
   // function: a problem derived from this one may make loads derived from
   // Loads).
   template <int dim>

@@ -16,7 +16,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <app/run.h>
-#include <base/quantity.h>
+#include <core/quantity.h>
 #include <parts/studies/scene_variant.h>
 #include <parts/studies/study.h>
 

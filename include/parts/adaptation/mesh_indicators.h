@@ -24,7 +24,7 @@
 
 #include <core/parameters.h>
 #include <core/postprocessor.h>
-#include <parts/studies/study_parameters.h>
+#include <parts/adaptation/mesh_adaptation_parameters.h>
 
 #include <array>
 #include <map>

@@ -30,6 +30,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <core/friction.h>
+#include <core/loads.h>
 #include <core/parameters.h>
 
 namespace Contact
@@ -37,39 +38,34 @@ namespace Contact
   using namespace dealii;
 
   template <int dim>
-  class ManufacturedSolution
+  class ManufacturedSolution : public ExactSolution<dim>
   {
   public:
     explicit ManufacturedSolution(const Parameters &parameters);
 
-    Tensor<1, dim> displacement(const Point<dim> &p, const double t) const;
-    Tensor<1, dim> velocity(const Point<dim> &p, const double t) const;
+    Tensor<1, dim> displacement(const Point<dim> &p,
+                                const double      t) const override;
+    Tensor<1, dim> velocity(const Point<dim> &p, const double t) const override;
     SymmetricTensor<2, dim> displacement_strain(const Point<dim> &p,
-                                                const double      t) const;
-    SymmetricTensor<2, dim> stress(const Point<dim> &p, const double t) const;
-    Tensor<1, dim> body_force(const Point<dim> &p, const double t) const;
-    /** The tangential load f_3 at a point of Gamma_3 with outward
-     *  normal n. */
-    Tensor<1, dim> contact_load(const Point<dim>     &p,
-                                const Tensor<1, dim> &normal,
-                                const double          t) const;
+                                                const double t) const override;
+    SymmetricTensor<2, dim> stress(const Point<dim> &p,
+                                   const double      t) const override;
+    Tensor<1, dim>          body_force(const Point<dim> &p,
+                                       const double      t) const override;
+    Tensor<1, dim>          contact_load(const Point<dim>     &p,
+                                         const Tensor<1, dim> &normal,
+                                         const double          t) const override;
+
+    /** The box, with its stick/slip front on a mesh line
+     *  (GeometryBase::check_manufactured_scene()). */
+    void check_scene(const GeometryBase &geometry) const override
+    {
+      geometry.check_manufactured_scene();
+    }
 
     /** xi(p) in (0, 1): the friction force in the stick zone x < 1/2 as a
      *  fraction of the bound S mu(0). */
     static double stick_fraction(const Point<dim> &p);
-
-    /** u or w as a deal.II Function, for interpolating u_0 and u_1. */
-    class Field : public Function<dim>
-    {
-    public:
-      Field(const ManufacturedSolution &exact, const bool velocity);
-      double value(const Point<dim>  &p,
-                   const unsigned int component) const override;
-
-    private:
-      const ManufacturedSolution &solution;
-      const bool                  is_velocity;
-    };
 
   private:
     double                  theta(const double t) const;

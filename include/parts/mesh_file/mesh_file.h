@@ -1,9 +1,11 @@
 /**
  * A gmsh mesh read from the 'Mesh file' (whose physical ids become the
  * boundary ids), refined 'Mesh refinements' times. Its entries are shared
- * with the other geometries: the file is what chooses it. Its cells are
- * its body, and nothing is known of its shape beyond them: its boundary
- * is taken as straight, its Gamma_3 as open, the body as not symmetric.
+ * with the other geometries: the file is what chooses it, in place of
+ * 'Geometry/Domain' (a ReplacingGeometry, registered in mesh_file.cc). Its
+ * cells are its body, and nothing is known of its shape beyond them: its
+ * boundary is taken as straight, its Gamma_3 as open, the body as not
+ * symmetric.
  */
 #ifndef contact_mesh_file_h
 #define contact_mesh_file_h
@@ -13,10 +15,10 @@
 namespace Contact
 {
   template <int dim>
-  class MeshFile : public Geometry<dim>
+  class MeshFile : public ReplacingGeometry<dim>
   {
   public:
-    using Geometry<dim>::Geometry;
+    using ReplacingGeometry<dim>::ReplacingGeometry;
 
     unsigned int create_coarse_mesh(Triangulation<dim> &mesh) const override;
 

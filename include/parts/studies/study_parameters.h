@@ -1,7 +1,8 @@
 /**
- * The entries of the studies and of the mesh adaptation: the subsections
- * Convergence study, Accuracy and Mesh adaptation of the .prm file
- * (study_parameters.cc). Each subsection is a part (base/parts.h) that
+ * The entries of the studies: the subsections Convergence study and
+ * Accuracy of the .prm file (study_parameters.cc), and the registration of
+ * the mesh adaptation's (parts/adaptation/mesh_adaptation_parameters.h)
+ * after them. Each subsection is a part (base/parts.h) that
  * declares, parses and checks its own entries, printed where they always
  * were (after Verification, in this order); its value is read with of().
  * They are parts of a kind of their own, StudySubsections: their entries
@@ -16,7 +17,8 @@
 #include <base/choice_table.h>
 #include <core/parameters.h>
 #include <base/parts.h>
-#include <base/quantity.h>
+#include <core/quantity.h>
+#include <parts/adaptation/mesh_adaptation_parameters.h>
 
 #include <array>
 #include <string>
@@ -26,8 +28,8 @@ namespace Contact
   using namespace dealii;
 
   /**
-   * The entries of the studies and of the mesh adaptation that code
-   * outside study_parameters.cc names, as "Subsection/Entry": in error
+   * The entries of the studies that code outside study_parameters.cc
+   * names, as "Subsection/Entry": in error
    * messages and in the scene variants of the drivers. unit/entry_paths
    * checks that every one of them is declared.
    */
@@ -45,16 +47,6 @@ namespace Contact
     inline const std::string cost_model        = "Accuracy/Cost model";
     inline const std::string max_predicted_time =
       "Accuracy/Maximum predicted time";
-    inline const std::string adaptation_cycles   = "Mesh adaptation/Cycles";
-    inline const std::string adaptation_interval = "Mesh adaptation/Interval";
-    inline const std::string refine_fraction =
-      "Mesh adaptation/Refine fraction";
-    inline const std::string coarsen_fraction =
-      "Mesh adaptation/Coarsen fraction";
-    inline const std::string target_unknowns =
-      "Mesh adaptation/Target unknowns";
-    inline const std::string max_levels = "Mesh adaptation/Max levels";
-    inline const std::string indicators = "Mesh adaptation/Indicators";
   } // namespace Entry
 
   /** The kind of the studies' subsections (base/parts.h): a part of it is
@@ -143,43 +135,6 @@ namespace Contact
 
   private:
     void check_target_quantity(const Parameters &parameters) const;
-  };
-
-
-  /** The subsection Mesh adaptation: pilot runs that adapt the mesh to
-   *  the whole run (parts/studies/mesh_adaptation.h), or the adaptation during
-   *  the run (parts/adaptation/adapt_during_run.h). */
-  struct MeshAdaptationParameters
-  {
-    /** 0: off; else the number of pilot runs, each on the mesh its
-     *  predecessor adapted. */
-    unsigned int cycles;
-    /** 0: not during the run; else the mesh is adapted after every
-     *  this many steps (ContactProblem::adapt_mesh_during_run()). */
-    unsigned int interval;
-    /** The shares of the cells refined and coarsened per cycle. */
-    double refine_fraction;
-    double coarsen_fraction;
-    /** 0: refine by the fraction; else refine towards this many unknowns
-     *  at the last cycle. */
-    unsigned int target_unknowns;
-    /** The finest cells: this many levels below the scene's coarsest. */
-    unsigned int max_levels;
-    /** Which indicators choose the cells: Kelly's of the displacement, of
-     *  the velocity, the variation of the slip rate on Gamma_3. */
-    std::array<bool, 3>                      indicators;
-    static const std::array<std::string, 3> &indicator_names();
-
-    /** The values of the scene's entries; the non-const one for a driver
-     *  that changes them in its own copy of the scene (a target's adapted
-     *  pilots). */
-    static const MeshAdaptationParameters &of(const Parameters &parameters);
-    static MeshAdaptationParameters       &of(Parameters &parameters);
-
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
-    /** The checks against the entries of other subsections. */
-    void check(const Parameters &parameters) const;
   };
 } // namespace Contact
 

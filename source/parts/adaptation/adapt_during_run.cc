@@ -15,7 +15,7 @@
 #include <core/output_directory.h>
 #include <parts/adaptation/adapt_during_run.h>
 #include <parts/adaptation/mesh_indicators.h>
-#include <parts/studies/study_parameters.h>
+#include <parts/adaptation/mesh_adaptation_parameters.h>
 
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>

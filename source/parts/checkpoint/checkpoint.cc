@@ -1,4 +1,5 @@
-/* Checkpoint and restart: everything a time step reads from the past, in
+/* Checkpoint and restart, the storage of a run (core/run_storage.h) that
+   this part registers: everything a time step reads from the past, in
    one binary file per process (Boost serialization), written to a temporary
    name and renamed, so a run killed at any moment leaves either the
    previous checkpoint or the new one, never half of one.
@@ -30,9 +31,9 @@
 #include <base/dimensions.h>
 #include <base/printed_entries.h>
 #include <base/parts.h>
-#include <parts/checkpoint/checkpoint.h>
 #include <core/output_directory.h>
 #include <core/postprocessor.h>
+#include <core/run_storage.h>
 
 #include <cerrno>
 #include <cmath>
@@ -342,26 +343,65 @@ namespace Contact
   } // namespace
 
 
+  // @sect3{The class Checkpoint}
+
+  // The storage of the run (core/run_storage.h) that this part registers:
+  // it holds references to the parts of the problem that a checkpoint
+  // stores and restores.
+  template <int dim>
+  class Checkpoint : public RunStorage<dim>
+  {
+  public:
+    explicit Checkpoint(const RunStorageView<dim> &run);
+
+    /** On --resume, before anything is computed or written: the
+     *  checkpoint of this number of processes exists, and the mesh plan
+     *  stored with it becomes the run's. */
+    void restore_mesh_plan() override;
+
+    /** Whether a checkpoint is due after the current step. */
+    bool due() const override;
+
+    void save() override;
+
+    /** On --resume, once the problem is set up on the checkpoint's mesh:
+     *  the state of the run at the checkpoint's step. */
+    void load() override;
+
+  private:
+    /** Refuses a checkpoint of another discrete problem than this run's
+     *  (its shape, or an entry of the .prm that defines it). */
+    void require_same_problem(
+      const std::string                        &stored_shape,
+      const std::map<std::string, std::string> &stored_entries) const;
+
+    const Parameters                                       &parameters;
+    const DiscreteSpace<dim>                               &space;
+    MeshAdaptation                                         &adaptation;
+    StepState                                              &state;
+    const std::unique_ptr<FrictionSolver<dim>>             &friction_solver;
+    const std::vector<std::unique_ptr<Postprocessor<dim>>> &postprocessors;
+    const ConditionalOStream                               &pcout;
+    TimerOutput                                            &computing_timer;
+    // This process's file.
+    const std::string name;
+    // The wall time since the last checkpoint ('Checkpoint minutes').
+    Timer wall_timer;
+  };
+
+
   // @sect4{Checkpoint::Checkpoint}
 
   template <int dim>
-  Checkpoint<dim>::Checkpoint(
-    const Parameters                                       &run_parameters,
-    const DiscreteSpace<dim>                               &discrete_space,
-    MeshAdaptation                                         &mesh_adaptation,
-    StepState                                              &step_state,
-    const std::unique_ptr<FrictionSolver<dim>>             &solver,
-    const std::vector<std::unique_ptr<Postprocessor<dim>>> &observers,
-    const ConditionalOStream                               &console,
-    TimerOutput                                            &timer)
-    : parameters(run_parameters)
-    , space(discrete_space)
-    , adaptation(mesh_adaptation)
-    , state(step_state)
-    , friction_solver(solver)
-    , postprocessors(observers)
-    , pcout(console)
-    , computing_timer(timer)
+  Checkpoint<dim>::Checkpoint(const RunStorageView<dim> &run)
+    : parameters(run.parameters)
+    , space(run.space)
+    , adaptation(run.adaptation)
+    , state(run.state)
+    , friction_solver(run.friction_solver)
+    , postprocessors(run.postprocessors)
+    , pcout(run.pcout)
+    , computing_timer(run.computing_timer)
     , name(checkpoint_name(parameters.output.directory, space.mpi_communicator))
   {}
 
@@ -540,7 +580,26 @@ namespace Contact
   }
 
 
-#define INSTANTIATE(dim) template class Checkpoint<dim>;
-  CONTACT_INSTANTIATE(INSTANTIATE)
+  // The one storage of runs: a run has it whether or not it writes
+  // checkpoints, so that every run can be resumed from those it wrote.
+  namespace
+  {
+    bool register_checkpoint()
+    {
+#define INSTANTIATE(dim)                                                      \
+  RunStorageParts<dim>::add(                                                  \
+    {"checkpoint",                                                            \
+     "",                                                                      \
+     0,                                                                       \
+     {},                                                                      \
+     [](const RunStorageView<dim> &run) -> std::unique_ptr<RunStorage<dim>> { \
+       return std::make_unique<Checkpoint<dim>>(run);                         \
+     }});
+      CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
+      return true;
+    }
+
+    const bool registered = register_checkpoint();
+  } // namespace
 } // namespace Contact

@@ -81,10 +81,10 @@ namespace Contact
   template <int dim>
   ErrorNorms ManufacturedErrors<dim>::compute_errors() const
   {
-    const DiscreteSpace<dim>        &space = this->space();
-    const ManufacturedSolution<dim> &exact = *this->exact_solution();
-    const double                     time  = this->state().time;
-    const Quadrature<dim>            error_quadrature =
+    const DiscreteSpace<dim> &space = this->space();
+    const ExactSolution<dim> &exact = *this->exact_solution();
+    const double              time  = this->state().time;
+    const Quadrature<dim>     error_quadrature =
       space.gauss_rule(space.fe.degree + 3);
     FEValues<dim>                        fe_values(*space.mapping,
                             space.fe,

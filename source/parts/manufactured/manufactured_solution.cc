@@ -135,26 +135,34 @@ namespace Contact
                          tangential(Point<dim>::unit_vector(0));
   }
 
-  template <int dim>
-  ManufacturedSolution<dim>::Field::Field(const ManufacturedSolution &exact,
-                                          const bool                  velocity)
-    : Function<dim>(dim)
-    , solution(exact)
-    , is_velocity(velocity)
-  {}
-
-  template <int dim>
-  double
-  ManufacturedSolution<dim>::Field::value(const Point<dim>  &p,
-                                          const unsigned int component) const
-  {
-    const double t = this->get_time();
-    return (is_velocity ? solution.velocity(p, t) :
-                          solution.displacement(p, t))[component];
-  }
-
 
 #define INSTANTIATE(dim) template class ManufacturedSolution<dim>;
   CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
+
+
+  // The exact solution of a run with 'Verification/Manufactured solution'.
+  namespace
+  {
+    bool register_manufactured_solution()
+    {
+#define INSTANTIATE(dim)                                                     \
+  ExactSolutionParts<dim>::add(                                              \
+    {"manufactured solution",                                                \
+     "",                                                                     \
+     0,                                                                      \
+     {},                                                                     \
+     [](const Parameters &parameters)                                        \
+       -> std::unique_ptr<const ExactSolution<dim>> {                        \
+       if (!parameters.verification.manufactured())                          \
+         return nullptr;                                                     \
+       return std::make_unique<const ManufacturedSolution<dim>>(parameters); \
+     }});
+      CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+      return true;
+    }
+
+    const bool registered = register_manufactured_solution();
+  } // namespace
 } // namespace Contact

@@ -83,4 +83,31 @@ namespace Contact
 #define INSTANTIATE(dim) template class MeshFile<dim>;
   CONTACT_INSTANTIATE(INSTANTIATE)
 #undef INSTANTIATE
+
+
+  // A 'Mesh file' replaces the Domain (the shell's parsing refuses a shell
+  // with a mesh file).
+  namespace
+  {
+    bool register_mesh_file()
+    {
+#define INSTANTIATE(dim)                                                       \
+  ReplacingGeometryRegistry<dim>::add(                                         \
+    {"mesh file",                                                              \
+     "a gmsh mesh",                                                            \
+     0,                                                                        \
+     {},                                                                       \
+     [](const Parameters &parameters, const MPI_Comm communicator)             \
+       -> std::unique_ptr<const ReplacingGeometry<dim>> {                      \
+       if (parameters.geometry.mesh_file.empty())                              \
+         return nullptr;                                                       \
+       return std::make_unique<const MeshFile<dim>>(parameters, communicator); \
+     }});
+      CONTACT_INSTANTIATE(INSTANTIATE)
+#undef INSTANTIATE
+      return true;
+    }
+
+    const bool registered = register_mesh_file();
+  } // namespace
 } // namespace Contact

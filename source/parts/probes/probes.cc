@@ -8,6 +8,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <core/postprocessor.h>
+#include <core/quantity.h>
 #include <core/geometry.h>
 
 #include <limits>

@@ -9,6 +9,7 @@
 #include <boost/archive/binary_oarchive.hpp>
 
 #include <core/postprocessor.h>
+#include <core/quantity.h>
 #include <core/geometry.h>
 #include <core/slip_zone.h>
 

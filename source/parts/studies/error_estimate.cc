@@ -20,7 +20,7 @@
 
 #include <base/dimensions.h>
 #include <core/geometry_base.h>
-#include <base/quantity.h>
+#include <core/quantity.h>
 #include <core/contact_problem.h>
 #include <core/output_directory.h>
 #include <parts/studies/error_estimate.h>

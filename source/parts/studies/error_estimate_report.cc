@@ -6,7 +6,7 @@
 
 #include <deal.II/base/table_handler.h>
 
-#include <base/quantity.h>
+#include <core/quantity.h>
 #include <parts/studies/error_estimate.h>
 #include <parts/studies/study_parameters.h>
 #include <core/geometry.h>

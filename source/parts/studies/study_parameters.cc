@@ -1,8 +1,8 @@
-/* The entries of the studies and of the mesh adaptation (.prm
-   subsections Convergence study, Accuracy and Mesh adaptation;
-   include/parts/studies/study_parameters.h): each subsection a part that
-   declares, parses and checks its entries, those against the other
-   subsections once all are parsed. */
+/* The entries of the studies (.prm subsections Convergence study and
+   Accuracy; include/parts/studies/study_parameters.h), and the
+   registration of those of the mesh adaptation among them: each subsection
+   a part that declares, parses and checks its entries, those against the
+   other subsections once all are parsed. */
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -89,123 +89,25 @@ namespace Contact
 
   // @sect3{Mesh adaptation}
 
-  const std::array<std::string, 3> &MeshAdaptationParameters::indicator_names()
-  {
-    static const std::array<std::string, 3> names = {
-      {"displacement", "velocity", "slip rate"}};
-    return names;
-  }
-
-  void MeshAdaptationParameters::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Mesh adaptation");
-    {
-      prm.declare_entry(
-        "Cycles",
-        "0",
-        Patterns::Integer(0, 20),
-        "0: the mesh of the Geometry. n > 0: n pilot runs of the whole scene "
-        "(each in its own directory adaptation-cycle-c), each on the mesh its "
-        "predecessor refined and coarsened from the 'Indicators', taken at "
-        "at most 20 steps spread over the run and kept as their largest; "
-        "then the scene runs on the adapted mesh. The pilots write "
-        "indicators_0.pvtu; adapted_mesh.txt holds the mesh's cycles (every "
-        "checkpoint stores them too: --resume runs on them without the "
-        "pilots).");
-      prm.declare_entry(
-        "Interval",
-        "0",
-        Patterns::Integer(0),
-        "0: the mesh does not change during the run. n > 0: after every n-th "
-        "step the mesh is refined and coarsened from the 'Indicators' of that "
-        "step, u and w are carried over to the new mesh, K is assembled and "
-        "factorised again, and the change of the kinetic and elastic energy "
-        "that the transfer makes enters the energy balance. adaptation.csv "
-        "lists the adaptations (with the energy before and after each), "
-        "adapted_mesh.txt the mesh's cycles, and with 'Output/VTU interval' "
-        "> 0 indicators_<step>.pvtu the indicators and the cells chosen; a "
-        "checkpoint stores the mesh.");
-      prm.declare_entry("Refine fraction",
-                        "0.3",
-                        Patterns::Double(0, 1),
-                        "The share of the cells, those with the largest "
-                        "indicators, refined per cycle (or per adaptation "
-                        "during the run).");
-      prm.declare_entry("Coarsen fraction",
-                        "0",
-                        Patterns::Double(0, 1),
-                        "The share of the cells, those with the smallest "
-                        "indicators, coarsened per cycle (never coarser than "
-                        "the Geometry's coarsest cells).");
-      prm.declare_entry(
-        "Target unknowns",
-        "0",
-        Patterns::Integer(0),
-        "0: refine by 'Refine fraction'. n > 0: refine as many cells per "
-        "cycle as multiply the unknowns by equal factors to about n at the "
-        "last cycle. During the run ('Interval' > 0, which then needs "
-        "'Coarsen fraction' > 0): refine by 'Refine fraction' up to about n "
-        "unknowns, and from there only as many cells as the coarsening frees, "
-        "so that the mesh keeps about n unknowns and still follows the "
-        "solution. Without a target, each adaptation during the run refines "
-        "'Refine fraction' of the cells, up to 'Max levels'.");
-      prm.declare_entry(
-        "Indicators",
-        "displacement",
-        Patterns::MultipleSelection("displacement|velocity|slip rate"),
-        "What chooses the cells: Kelly's indicator of the displacement, of "
-        "the velocity, and the variation of the slip rate over the faces of "
-        "Gamma_3 (each as a share of its worst cell; a cell's indicator is "
-        "the largest of its shares). The default gave the smallest V-error "
-        "at T per unknown on the paper's scene (bench/adapted_mesh.md).");
-      prm.declare_entry("Max levels",
-                        "4",
-                        Patterns::Integer(0, 12),
-                        "Cells are refined at most this many times beyond "
-                        "the Geometry's coarsest cells.");
-    }
-    prm.leave_subsection();
-  }
-
-  void MeshAdaptationParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Mesh adaptation");
-    {
-      cycles           = prm.get_integer("Cycles");
-      interval         = prm.get_integer("Interval");
-      refine_fraction  = prm.get_double("Refine fraction");
-      coarsen_fraction = prm.get_double("Coarsen fraction");
-      target_unknowns  = prm.get_integer("Target unknowns");
-      max_levels       = prm.get_integer("Max levels");
-      const std::vector<std::string> chosen =
-        Utilities::split_string_list(prm.get("Indicators"));
-      for (unsigned int i = 0; i < indicators.size(); ++i)
-        indicators[i] =
-          std::find(chosen.begin(), chosen.end(), indicator_names()[i]) !=
-          chosen.end();
-    }
-    prm.leave_subsection();
-    AssertThrow((cycles == 0 && interval == 0) || indicators[0] ||
-                  indicators[1] || indicators[2],
-                ExcMessage("Entry '" + Entry::indicators +
-                           "' is empty: allowed is one or more of "
-                           "displacement, velocity, slip rate."));
-    AssertThrow(refine_fraction + coarsen_fraction <= 1,
-                ExcMessage("Entries '" + Entry::refine_fraction +
-                           "' = " + number_text(refine_fraction) + " and '" +
-                           Entry::coarsen_fraction +
-                           "' = " + number_text(coarsen_fraction) +
-                           ": allowed is a sum of at most 1."));
-  }
-
+  // The subsection is the adaptation's
+  // (parts/adaptation/mesh_adaptation_parameters.h); the studies register
+  // it among theirs, and check it against their entries here.
 
   namespace
   {
     // Where the mesh adapts (`adapting` names the entry that makes it do
-    // so): what the other entries, the drivers' among them, must allow.
-    void check_adaptation_combinations(const Parameters  &parameters,
-                                       const std::string &adapting)
+    // so): what the other entries, the drivers' among them, must allow. A
+    // mesh adaptation refines the cells of p4est's forest by their ids, and
+    // runs the scene as it is several times: not as a level of a study
+    // (yet), nor as a target's pilot (those adapt during the run). An error
+    // estimate runs a mesh adapted by pilots coarsened, and a run adapted
+    // during itself again from coarser meshes (scene_variant.cc).
+    void check_adaptation_combinations(const Parameters &parameters)
     {
+      const std::string adapting =
+        MeshAdaptationParameters::of(parameters).what_adapts();
+      if (adapting.empty())
+        return;
       const MeshAdaptationParameters &adaptation =
         MeshAdaptationParameters::of(parameters);
       const AccuracyParameters &accuracy = AccuracyParameters::of(parameters);
@@ -266,59 +168,6 @@ namespace Contact
     }
   } // namespace
 
-
-  // A mesh adaptation refines the cells of p4est's forest by their ids,
-  // and runs the scene as it is several times: not as a level of a study
-  // (yet), nor as a target's pilot (those adapt during the run). An error
-  // estimate runs a mesh adapted by pilots coarsened, and a run adapted during
-  // itself again from coarser meshes (scene_variant.cc).
-  void MeshAdaptationParameters::check(const Parameters &parameters) const
-  {
-    if (cycles == 0 && interval == 0)
-      {
-        AssertThrow(target_unknowns == 0,
-                    ExcMessage("Entry '" + Entry::target_unknowns +
-                               "' = " + std::to_string(target_unknowns) +
-                               " is the size of an adapted mesh, but nothing "
-                               "adapts the mesh: allowed with it is '" +
-                               Entry::adaptation_cycles + "' > 0 or '" +
-                               Entry::adaptation_interval + "' > 0 (or " +
-                               Entry::target_unknowns + " = 0)."));
-        return;
-      }
-    const std::string adapting =
-      cycles > 0 ? "Entry '" + Entry::adaptation_cycles +
-                     "' = " + std::to_string(cycles) + " adapts the mesh: " :
-                   "Entry '" + Entry::adaptation_interval +
-                     "' = " + std::to_string(interval) +
-                     " adapts the mesh during the run: ";
-    AssertThrow(cycles == 0 || interval == 0,
-                ExcMessage(adapting + "it cannot be combined with '" +
-                           Entry::adaptation_interval +
-                           "' = " + std::to_string(interval) +
-                           " yet; allowed is one of the two, the other 0."));
-    // Settings under which the mesh cannot change at all.
-    check_entry(max_levels > 0,
-                Entry::max_levels,
-                max_levels,
-                "at least 1 where the mesh adapts (with 0 no cell may be "
-                "refined, and none coarser than the Geometry's)");
-    if (interval > 0)
-      check_entry(interval < parameters.time.n_steps(),
-                  Entry::adaptation_interval,
-                  interval,
-                  "0 or below the run's " +
-                    std::to_string(parameters.time.n_steps()) +
-                    " steps (the mesh adapts after every n-th step but "
-                    "the last)");
-    AssertThrow(parameters.geometry.cell_shape !=
-                  GeometryParameters::CellShape::simplex,
-                ExcMessage(adapting +
-                           "it refines quadrilaterals and "
-                           "hexahedra only; allowed with it is '" +
-                           Entry::cell_shape + "' = hypercube."));
-    check_adaptation_combinations(parameters, adapting);
-  }
 
 
   // @sect3{Accuracy}
@@ -588,15 +437,17 @@ namespace Contact
   {
     const std::string convergence_study_part = "convergence study";
     const std::string accuracy_part          = "accuracy";
-    const std::string mesh_adaptation_part   = "mesh adaptation";
 
     // The entries of the subsection of `Subsection`, a part of the studies'
-    // kind placed after the subsection `after`.
+    // kind placed after the subsection `after`, checked by its own check()
+    // and then by `check_with_studies`, if given.
     template <class Subsection>
-    bool register_subsection(const std::string              &name,
-                             const std::string              &subsection,
-                             const std::string              &after,
-                             const std::vector<std::string> &free_on_resume)
+    bool register_subsection(
+      const std::string              &name,
+      const std::string              &subsection,
+      const std::string              &after,
+      const std::vector<std::string> &free_on_resume,
+      void (*check_with_studies)(const Parameters &) = nullptr)
     {
       return StudySubsections::add(
         {name,
@@ -611,8 +462,10 @@ namespace Contact
             values.parse_parameters(prm);
             return values;
           },
-          [](const Parameters &parameters) {
+          [check_with_studies](const Parameters &parameters) {
             Subsection::of(parameters).check(parameters);
+            if (check_with_studies)
+              check_with_studies(parameters);
           },
           free_on_resume},
          nullptr});
@@ -631,10 +484,12 @@ namespace Contact
         "Accuracy",
         "Convergence study",
         {Entry::estimate_error, Entry::separate_space_and_time}) &&
-      register_subsection<MeshAdaptationParameters>(mesh_adaptation_part,
-                                                    "Mesh adaptation",
-                                                    "Accuracy",
-                                                    {});
+      register_subsection<MeshAdaptationParameters>(
+        MeshAdaptationParameters::part_name,
+        "Mesh adaptation",
+        "Accuracy",
+        {},
+        &check_adaptation_combinations);
   } // namespace
 
 
@@ -647,17 +502,5 @@ namespace Contact
   const AccuracyParameters &AccuracyParameters::of(const Parameters &parameters)
   {
     return parameters.part<AccuracyParameters>(accuracy_part);
-  }
-
-  const MeshAdaptationParameters &
-  MeshAdaptationParameters::of(const Parameters &parameters)
-  {
-    return parameters.part<MeshAdaptationParameters>(mesh_adaptation_part);
-  }
-
-  MeshAdaptationParameters &MeshAdaptationParameters::of(Parameters &parameters)
-  {
-    return std::any_cast<MeshAdaptationParameters &>(
-      parameters.part_values.at(mesh_adaptation_part));
   }
 } // namespace Contact

@@ -4,7 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <base/dimensions.h>
-#include <base/quantity.h>
+#include <core/quantity.h>
 #include <core/postprocessor.h>
 #include <parts/studies/reference_interpolation.h>
 #include <parts/studies/sub_run.h>

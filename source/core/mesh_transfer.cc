@@ -1,7 +1,7 @@
 /* ---------------------------------------------------------------------
  * The move of a run to a mesh adapted during it (ContactProblem::
- * adapt_mesh_during_run()): the cells are chosen by what equips the run
- * (parts/adaptation/adapt_during_run.h), recorded in the plan, and the state at
+ * adapt_mesh_during_run()): the cells are chosen by the function that
+ * equipped the run, recorded in the plan, and the state at
  * t_n is carried over to the new mesh, where the run goes on.
  * --------------------------------------------------------------------- */
 

@@ -1,9 +1,9 @@
 /**
  * The scalars of a run that an error estimate compares between runs of
  * different h and k (the rows of its table) and that a target error
- * chooses from (parts/studies/study_parameters.h). The code that computes a
- * quantity names it by name() and the entry is read by parse(): both
- * spell the names of this one table.
+ * chooses from (a study's entry). The code that computes a quantity (the
+ * postprocessors) names it by name() and the entry is read by parse():
+ * both spell the names of this one table.
  */
 #ifndef contact_quantity_h
 #define contact_quantity_h

@@ -3,7 +3,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <core/parameters.h>
-#include <base/quantity.h>
+#include <core/quantity.h>
 
 #include <regex>
 #include <utility>
