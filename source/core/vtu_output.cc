@@ -110,6 +110,15 @@ namespace Contact
       {
         return this->patches;
       }
+
+      // Where the values of the patches come from, found on the first
+      // refill and read by the later ones (a gather, without the DoF
+      // handlers): for each point of each patch, the local indices of the
+      // dim components of the vector fields at its vertex in their ghosted
+      // vectors and the index of the scalar fields' DoF there; for each
+      // patch, the index of its cell in the cell fields.
+      std::vector<types::global_dof_index> point_dofs;
+      std::vector<unsigned int>            patch_cells;
     };
   } // namespace
 
@@ -117,16 +126,19 @@ namespace Contact
   // @sect4{VtuOutput}
 
   // One VTU output: copies of the fields at t_n, and the thread that turns
-  // them into a file. The patches and the compression take most of an
-  // output's time (bench/output.md measures what the output adds to a run
-  // and where its time goes); they run in a background thread while the
-  // time loop goes on, and finish_vtu() waits for them before the next
-  // output, a checkpoint, a change of the mesh or the end of the run. DataOut
-  // builds the patches of the first output on a mesh; the later ones refill
-  // them (refresh_patches()), which costs a fraction of building them. The
-  // thread reads the mesh, the DoFHandlers and the mapping, which the steps
-  // do not change, and makes no MPI calls: DataOut's ghosted copies of the
-  // fields (MPI calls) are made before it starts.
+  // them into a file. The patches and deal.II's compression and encoding
+  // of the file take most of an output's time (bench/output.md measures
+  // what the output adds to a run and where its time goes); they run in a
+  // background thread while the time loop goes on, and finish_vtu() waits
+  // for them before the next output, a checkpoint, a change of the mesh or
+  // the end of the run. What does not change with the step is found once
+  // per mesh: DataOut builds the patches of the first output on a mesh and
+  // the later ones refill them (refresh_patches()), and the cell averages
+  // of the stress use the averages of the shape functions' gradients
+  // (cell_average_stress()). The thread reads the mesh, the DoFHandlers
+  // and the mapping, which the steps do not change, and makes no MPI
+  // calls: DataOut's ghosted copies of the fields (MPI calls) are made
+  // before it starts.
   template <int dim>
   class VtuOutput : public Postprocessor<dim>
   {
@@ -145,6 +157,7 @@ namespace Contact
         {
           finish_vtu();
           mesh_patches.reset();
+          mean_gradients.clear();
         }
     }
 
@@ -189,10 +202,12 @@ namespace Contact
     std::string vtu_piece_name(const unsigned int step,
                                const unsigned int process) const;
     void        write_vtu();
-    void        cell_average_stress(Pending &output) const;
+    void        cell_average_stress(Pending &output);
+    void        find_mean_gradients();
     void        add_hanging_values(Pending &output) const;
     void        add_vtu_fields(Pending &output) const;
     void        refresh_patches(Pending &output) const;
+    void        find_patch_sources(Pending &output) const;
     void        write_vtu_piece(Pending &output, const std::string &file) const;
     void        finish_vtu();
     void        write_pvd() const;
@@ -204,6 +219,11 @@ namespace Contact
     // first one, after a change of the mesh and for elements of degree
     // above 1, whose patches are not filled from their vertices).
     std::shared_ptr<ReusablePatches<dim>> mesh_patches;
+    // For each locally owned cell of the current mesh, in order, the
+    // averages over it of the gradients of the shape functions of the
+    // scalar element (empty before the first output on a mesh; see
+    // cell_average_stress()).
+    std::vector<Tensor<1, dim>> mean_gradients;
     // The output being written in the background, last so that it is
     // destroyed first.
     std::shared_ptr<Pending> pending_vtu;
@@ -349,7 +369,7 @@ namespace Contact
   }
 
 
-  // @sect4{VtuOutput::cell_average_stress}
+  // @sect4{VtuOutput::add_hanging_values}
 
   // Hanging nodes of Gamma_3 (a refined part of it) carry no friction
   // unknown: their fields follow from the nodes they hang on.
@@ -392,11 +412,20 @@ namespace Contact
   }
 
 
+  // @sect4{VtuOutput::cell_average_stress}
+
   // The stress sigma = A eps(w) + B eps(u) of (3.1) averaged over each
   // cell, and the von Mises value of that average (in 2D plane strain
-  // sigma_zz = lambda tr eps(u) + mu_1 tr eps(w) enters it).
+  // sigma_zz = lambda tr eps(u) + mu_1 tr eps(w) enters it). sigma is
+  // linear in the gradients of u and w, so its average is A and B applied
+  // to the symmetric parts of their averages: the average of grad u is the
+  // sum over the cell's DoFs of u_i e_c (x) the average of grad psi_j, for
+  // the component c of the DoF and the shape function psi_j of the scalar
+  // element it is a copy of. find_mean_gradients() computes those averages
+  // once per mesh: an output reads each cell's DoF values and no shape
+  // function.
   template <int dim>
-  void VtuOutput<dim>::cell_average_stress(Pending &output) const
+  void VtuOutput<dim>::cell_average_stress(Pending &output)
   {
     const DiscreteSpace<dim> &space    = this->space();
     const auto               &material = this->parameters().material;
@@ -405,55 +434,42 @@ namespace Contact
     const bool                plane_strain =
       (dim == 2 &&
        material.plane_model == MaterialParameters::PlaneModel::plane_strain);
+    if (mean_gradients.empty())
+      find_mean_gradients();
 
     const unsigned int n_cells = space.triangulation->n_active_cells();
     output.stress.assign(dim * (dim + 1) / 2, Vector<double>(n_cells));
     output.von_mises.reinit(n_cells);
-    FEValues<dim>                        fe_values(*space.mapping,
-                            space.fe,
-                            space.quadrature,
-                            update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector     displacements(0);
-    std::vector<SymmetricTensor<2, dim>> eps_u(space.quadrature.size()),
-      eps_w(space.quadrature.size());
-    // The cell's values of u and w, read once for both (FEValues' own
-    // reading allocates them per call).
     std::vector<double> u_cell(space.fe.n_dofs_per_cell()),
       w_cell(space.fe.n_dofs_per_cell());
+    auto mean_gradient = mean_gradients.cbegin();
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
           cell->get_dof_values(output.displacement,
                                u_cell.begin(),
                                u_cell.end());
           cell->get_dof_values(output.velocity, w_cell.begin(), w_cell.end());
-          fe_values[displacements]
-            .get_function_symmetric_gradients_from_local_dof_values(u_cell,
-                                                                    eps_u);
-          fe_values[displacements]
-            .get_function_symmetric_gradients_from_local_dof_values(w_cell,
-                                                                    eps_w);
-          SymmetricTensor<2, dim> sigma;
-          double                  sigma_zz = 0, volume = 0;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
+          Tensor<2, dim> grad_u, grad_w;
+          for (unsigned int i = 0; i < u_cell.size(); ++i)
             {
-              const double JxW = fe_values.JxW(q);
-              sigma +=
-                (material.viscosity_mu1 * trace(eps_w[q]) *
-                   unit_symmetric_tensor<dim>() +
-                 material.viscosity_mu2 * eps_w[q] +
-                 lambda * trace(eps_u[q]) * unit_symmetric_tensor<dim>() +
-                 two_G * eps_u[q]) *
-                JxW;
-              if (plane_strain)
-                sigma_zz += (lambda * trace(eps_u[q]) +
-                             material.viscosity_mu1 * trace(eps_w[q])) *
-                            JxW;
-              volume += JxW;
+              const auto [c, j] = space.fe.system_to_component_index(i);
+              grad_u[c] += u_cell[i] * mean_gradient[j];
+              grad_w[c] += w_cell[i] * mean_gradient[j];
             }
-          sigma /= volume;
-          sigma_zz /= volume;
+          mean_gradient += space.scalar_fe->n_dofs_per_cell();
+          const SymmetricTensor<2, dim> eps_u = symmetrize(grad_u),
+                                        eps_w = symmetrize(grad_w);
+          const SymmetricTensor<2, dim> sigma =
+            material.viscosity_mu1 * trace(eps_w) *
+              unit_symmetric_tensor<dim>() +
+            material.viscosity_mu2 * eps_w +
+            lambda * trace(eps_u) * unit_symmetric_tensor<dim>() +
+            two_G * eps_u;
+          const double sigma_zz =
+            (plane_strain ?
+               lambda * trace(eps_u) + material.viscosity_mu1 * trace(eps_w) :
+               0.);
           const unsigned int c         = cell->active_cell_index();
           unsigned int       component = 0;
           for (unsigned int i = 0; i < dim; ++i)
@@ -465,6 +481,34 @@ namespace Contact
           const double out_of_plane = (dim == 2 ? sigma_zz - mean : 0.);
           output.von_mises[c]       = std::sqrt(
             1.5 * (deviator * deviator + out_of_plane * out_of_plane));
+        }
+  }
+
+
+  // The averages over each locally owned cell of the gradients of the
+  // scalar element's shape functions, by the quadrature of the assembly.
+  template <int dim>
+  void VtuOutput<dim>::find_mean_gradients()
+  {
+    const DiscreteSpace<dim> &space = this->space();
+    FEValues<dim>             fe_values(*space.mapping,
+                            *space.scalar_fe,
+                            space.quadrature,
+                            update_gradients | update_JxW_values);
+    for (const auto &cell : space.triangulation->active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          double volume = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            volume += fe_values.JxW(q);
+          for (const unsigned int j : fe_values.dof_indices())
+            {
+              Tensor<1, dim> mean;
+              for (const unsigned int q : fe_values.quadrature_point_indices())
+                mean += fe_values.shape_grad(j, q) * fe_values.JxW(q);
+              mean_gradients.push_back(mean / volume);
+            }
         }
   }
 
@@ -522,14 +566,14 @@ namespace Contact
   // interpolation, whose other shape functions vanish there: 0 + value,
   // which also turns -0 into 0 as DataOut's sum does). The rows are those
   // of add_vtu_fields(): the nodal fields in its order, then the cell
-  // fields; the cells are DataOut's, the locally owned active ones in
-  // order. The points of curved cells, after the fields, stay.
+  // fields. The points of curved cells, after the fields, stay. Where each
+  // value comes from is found once per mesh (find_patch_sources()).
   template <int dim>
   void VtuOutput<dim>::refresh_patches(Pending &output) const
   {
-    const DiscreteSpace<dim>             &space = this->space();
-    std::vector<DataOutBase::Patch<dim>> &patches =
-      output.data_out->built_patches();
+    ReusablePatches<dim> &data_out = *output.data_out;
+    if (data_out.patch_cells.empty())
+      find_patch_sources(output);
     const std::vector<const FastVector *> vector_fields = {
       &output.displacement, &output.velocity, &output.friction_traction};
     const std::vector<const Vector<double> *> scalar_fields = {
@@ -539,6 +583,38 @@ namespace Contact
       cell_fields.push_back(&component);
     cell_fields.push_back(&output.von_mises);
 
+    auto dofs = data_out.point_dofs.cbegin();
+    auto cell = data_out.patch_cells.cbegin();
+    for (DataOutBase::Patch<dim> &patch : data_out.built_patches())
+      {
+        for (unsigned int v = 0; v < patch.data.n_cols(); ++v, dofs += dim + 1)
+          {
+            unsigned int row = 0;
+            for (const FastVector *field : vector_fields)
+              for (unsigned int d = 0; d < dim; ++d)
+                patch.data(row++, v) = 0. + field->local_element(dofs[d]);
+            for (const Vector<double> *field : scalar_fields)
+              patch.data(row++, v) = 0. + (*field)(dofs[dim]);
+            for (const Vector<double> *field : cell_fields)
+              patch.data(row++, v) = (*field)(*cell);
+          }
+        ++cell;
+      }
+  }
+
+
+  // The patches are DataOut's, one for each locally owned active cell in
+  // order, with a point for each vertex. The three vector fields have the
+  // layout of the displacement's ghosted copy.
+  template <int dim>
+  void VtuOutput<dim>::find_patch_sources(Pending &output) const
+  {
+    const DiscreteSpace<dim>          &space    = this->space();
+    ReusablePatches<dim>              &data_out = *output.data_out;
+    const Utilities::MPI::Partitioner &partitioner =
+      *output.displacement.get_partitioner();
+    const std::vector<DataOutBase::Patch<dim>> &patches =
+      data_out.built_patches();
     std::vector<types::global_dof_index> dofs(space.fe.n_dofs_per_cell()),
       scalar_dofs(space.scalar_dof_handler.get_fe().n_dofs_per_cell());
     auto patch = patches.begin();
@@ -557,17 +633,12 @@ namespace Contact
             ->get_dof_indices(scalar_dofs);
           for (const unsigned int v : cell->vertex_indices())
             {
-              unsigned int row = 0;
-              for (const FastVector *field : vector_fields)
-                for (unsigned int d = 0; d < dim; ++d)
-                  patch->data(row++, v) =
-                    0. +
-                    (*field)(dofs[space.fe.component_to_system_index(d, v)]);
-              for (const Vector<double> *field : scalar_fields)
-                patch->data(row++, v) = 0. + (*field)(scalar_dofs[v]);
-              for (const Vector<double> *field : cell_fields)
-                patch->data(row++, v) = (*field)(cell->active_cell_index());
+              for (unsigned int d = 0; d < dim; ++d)
+                data_out.point_dofs.push_back(partitioner.global_to_local(
+                  dofs[space.fe.component_to_system_index(d, v)]));
+              data_out.point_dofs.push_back(scalar_dofs[v]);
             }
+          data_out.patch_cells.push_back(cell->active_cell_index());
           ++patch;
         }
     AssertThrow(patch == patches.end(), ExcInternalError());
