@@ -70,6 +70,8 @@ namespace Contact
           {
             unsigned int      depth = 0;
             const std::string name  = enter_path(prm, line.entry, depth);
+            // An entry that the core declares too (Geometry/Mesh file)
+            // takes this declaration; its value is refused all the same.
             prm.declare_entry(name,
                               line.text,
                               Patterns::Anything(),

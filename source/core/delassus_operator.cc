@@ -12,6 +12,29 @@
 
 namespace Contact
 {
+  // @sect3{definiteness}
+
+  // Whether a symmetric matrix is positive definite (its Cholesky
+  // factorisation exists): the second-order test of a step's minimum, which
+  // the Delassus operator and the parts' methods ask.
+  Curvature definiteness(LAPACKFullMatrix<double> matrix)
+  {
+    for (unsigned int a = 0; a < matrix.m(); ++a)
+      for (unsigned int b = 0; b < a; ++b)
+        matrix(a, b) = matrix(b, a) = 0.5 * (matrix(a, b) + matrix(b, a));
+    matrix.set_property(LAPACKSupport::symmetric);
+    try
+      {
+        matrix.compute_cholesky_factorization();
+      }
+    catch (const ExceptionBase &)
+      {
+        return Curvature::not_positive;
+      }
+    return Curvature::positive;
+  }
+
+
   using namespace DelassusKernels;
 
   DelassusOperator::DelassusOperator(const FullMatrix<double> &matrix,

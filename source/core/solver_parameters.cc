@@ -65,7 +65,8 @@ namespace Contact
         "slip set does not change.");
       prm.declare_entry("Friction method",
                         FrictionMethods::parts().front().name,
-                        Patterns::Selection(FrictionMethods::selection()),
+                        Patterns::Selection(
+                          FrictionMethods::selection(Entry::friction_method)),
                         "How the nonmonotone friction problem of a step is "
                         "solved. " +
                           descriptions<FrictionMethods>(true));
@@ -106,7 +107,8 @@ namespace Contact
       prm.declare_entry(
         "Linear solver",
         "auto",
-        Patterns::Selection("auto|" + LinearSolvers::selection()),
+        Patterns::Selection("auto|" +
+                            LinearSolvers::selection(Entry::linear_solver)),
         "How systems with K = (rho/k) M + A + k B are solved. " +
           descriptions<LinearSolvers>(false) +
           " auto: CHOLMOD on one process, Amesos_Mumps on more.");
@@ -123,7 +125,8 @@ namespace Contact
       prm.declare_entry(
         "Contact solver",
         "auto",
-        Patterns::Selection("auto|" + ContactPaths::selection()),
+        Patterns::Selection("auto|" +
+                            ContactPaths::selection(Entry::contact_solver)),
         "How the friction problem of a step is solved. " +
           descriptions<ContactPaths>(true) +
           " auto: Delassus while Gamma_3 has at most " +

@@ -17,23 +17,6 @@ namespace Contact
 
   // @sect3{The second-order conditions}
 
-  Curvature definiteness(LAPACKFullMatrix<double> matrix)
-  {
-    for (unsigned int a = 0; a < matrix.m(); ++a)
-      for (unsigned int b = 0; b < a; ++b)
-        matrix(a, b) = matrix(b, a) = 0.5 * (matrix(a, b) + matrix(b, a));
-    matrix.set_property(LAPACKSupport::symmetric);
-    try
-      {
-        matrix.compute_cholesky_factorization();
-      }
-    catch (const ExceptionBase &)
-      {
-        return Curvature::not_positive;
-      }
-    return Curvature::positive;
-  }
-
   namespace
   {
     // The responses of the capped model to more force along zhat_b on the
