@@ -250,10 +250,10 @@ namespace Contact
                                      const std::string &name)
     {
       const std::string missing = Parts::not_built(entry, name);
-      return ExcMessage("Entry '" + entry + "' = '" + name + "' " +
-                        (missing.empty() ? "is not a registered " + noun() :
-                                           missing) +
-                        "; allowed: " + quoted_names() + ".");
+      return ExcMessage(
+        "Entry '" + entry + "' = '" + name + "' " +
+        (missing.empty() ? "is not a registered " + noun() : missing) +
+        "; allowed: " + quoted_names() + ".");
     }
 
     /** "'a', 'b', 'c'": the names as a message lists them. */

@@ -1,9 +1,9 @@
 /**
  * What runs a scene: a study. Every mode of the program is one (a single
  * run, a run with its error estimate, a mesh adapted by pilots, a run to a
- * target error, a convergence study), and parts/studies/compose_study.cc composes
- * them: a study that wraps another (the pilots run the scene on the mesh
- * they adapted, a target runs the run it chose) is given it at
+ * target error, a convergence study), and parts/studies/compose_study.cc
+ * composes them: a study that wraps another (the pilots run the scene on the
+ * mesh they adapted, a target runs the run it chose) is given it at
  * construction, and what every run of a study is equipped with (the mesh
  * adaptation during the run, adapt_during_run.h) is given to it likewise.
  * No study calls another study's code.
